@@ -1,0 +1,511 @@
+// The demo page's logic. It uses only the public API of the npm package "rtl-wasm" (resolved by the import map to
+// /dist/index.js), the same entry a user without a bundler would load. Results are exposed on window.__rtl so the
+// browser tests can check the numbers the page shows.
+import init from 'rtl-wasm';
+
+const DATASETS = {
+  intel: { url: '/tests/data/intel.log', label: 'Intel Research Lab' },
+  csail: { url: '/tests/data/csail.log', label: 'MIT CSAIL' },
+};
+
+const METHOD_TEXT = {
+  ftls: 'FTLS grows each segment over prefix sums to the longest run whose TLS fit stays under σ, then checks that neighbouring lines meet within δ; the corners are the lines\' intersections.',
+  aftls: 'AFTLS runs FTLS, then moves the breakpoints with an integer Nelder–Mead search to reduce the total squared error, before the same continuity check with δ.',
+  itls: 'Incremental TLS adds points one at a time and closes the segment just before the point that would lift its RMS distance to σ. Segments are trimmed fitted lines, so they need not touch.',
+  dp: 'Douglas–Peucker keeps the point farthest from the chord and recurses while that distance exceeds ε. Vertices are measured points, so noise stays in the corners.',
+  rw: 'Reumann–Witkam slides a strip of half-width ε along the polyline and keeps the point where the polyline leaves it. One pass, very fast, but order- and noise-sensitive.',
+};
+
+// Okabe–Ito palette (colour-blind safe) plus a few darker companions; clusters cycle through it.
+const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#B2182B'];
+const SMALL_CLUSTER = '#9aa3af';
+const GAP_COLOUR = '#c9ced6';
+
+const $ = (id) => document.getElementById(id);
+const fmt = (v, d = 3) => (Number.isFinite(v) ? v.toFixed(d) : '–');
+
+const state = {
+  rtl: null,
+  scans: {},          // dataset -> parsed scans (from the package's CARMEN reader)
+  texts: {},          // dataset -> raw log text (kept for the tests' independent check)
+  dataset: 'intel',
+  scanIndex: 0,
+  fitCluster: null,   // index of the clicked cluster, or null for the beam window
+  result: null,       // last computed result (also exposed as window.__rtl)
+  revision: 0,
+  view: null,         // world -> canvas transform of the last draw
+};
+
+window.__rtl = { ready: false, revision: 0, errors: [] };
+window.addEventListener('error', (e) => window.__rtl.errors.push(String(e.message)));
+window.addEventListener('unhandledrejection', (e) => window.__rtl.errors.push(String(e.reason)));
+
+function setStatus(text, isError = false) {
+  const el = $('status');
+  el.textContent = text;
+  el.classList.toggle('error', isError);
+}
+
+// ---- reading the form ---------------------------------------------------------------------------------------------
+
+function numberInput(id, fallback) {
+  const v = Number($(id).value);
+  return Number.isFinite(v) ? v : fallback;
+}
+
+function readSettings() {
+  return {
+    step: Math.max(1, Math.round(numberInput('seg-step', 3))),
+    lowerBound: Math.max(0, numberInput('seg-lower', 0.1)),
+    upperBound: Math.max(0, numberInput('seg-upper', 0.5)),
+    minPoints: Math.max(1, Math.round(numberInput('seg-min', 3))),
+    method: $('method').value,
+    sigma: numberInput('sigma', 0.03),
+    delta: numberInput('delta', 0.3),
+    epsilon: numberInput('epsilon', 0.09),
+    fitFrom: Math.round(numberInput('fit-from', 0)),
+    fitTo: Math.round(numberInput('fit-to', 0)),
+    show: {
+      points: $('show-points').checked,
+      clusters: $('show-clusters').checked,
+      segments: $('show-segments').checked,
+      fit: $('show-fit').checked,
+    },
+  };
+}
+
+function syncOutputs() {
+  $('scan-out').textContent = $('scan').value;
+  $('seg-step-out').textContent = $('seg-step').value;
+  $('sigma-out').textContent = Number($('sigma').value).toFixed(3);
+  $('delta-out').textContent = Number($('delta').value).toFixed(2);
+  $('epsilon-out').textContent = Number($('epsilon').value).toFixed(3);
+  const method = $('method').value;
+  for (const el of document.querySelectorAll('.param')) el.hidden = !el.dataset.for.split(' ').includes(method);
+  $('method-text').textContent = METHOD_TEXT[method];
+}
+
+// ---- computing ----------------------------------------------------------------------------------------------------
+
+async function loadDataset(name) {
+  if (state.scans[name]) return state.scans[name];
+  const res = await fetch(DATASETS[name].url);
+  if (!res.ok) throw new Error(`cannot load ${DATASETS[name].url}: HTTP ${res.status}`);
+  const text = await res.text();
+  state.texts[name] = text;
+  state.scans[name] = state.rtl.readCarmenLog(text);
+  return state.scans[name];
+}
+
+// Interleaved x,y of the non-gap points, and the beam index of each.
+function validPoints(points) {
+  const n = points.length / 2;
+  const xy = [];
+  const beams = [];
+  for (let i = 0; i < n; i++) {
+    const x = points[2 * i], y = points[2 * i + 1];
+    if (Number.isFinite(x) && Number.isFinite(y)) { xy.push(x, y); beams.push(i); }
+  }
+  return { xy: new Float64Array(xy), beams };
+}
+
+function gather(points, indices) {
+  const out = new Float64Array(indices.length * 2);
+  indices.forEach((k, j) => { out[2 * j] = points[2 * k]; out[2 * j + 1] = points[2 * k + 1]; });
+  return out;
+}
+
+function compute() {
+  const rtl = state.rtl;
+  const scans = state.scans[state.dataset];
+  const scan = scans[state.scanIndex];
+  const s = readSettings();
+  const points = scan.points;
+  const beamCount = points.length / 2;
+
+  // Segmentation of the whole scan (gaps are marked by the segmenter).
+  const t0 = performance.now();
+  const seg = rtl.segment(points, { dim: 2, step: s.step, lowerBound: s.lowerBound, upperBound: s.upperBound });
+  const t1 = performance.now();
+  const clusters = seg.clusters.map((c) => Array.from(c.indices));
+
+  // Vectorization of each cluster big enough to be drawn as a cluster.
+  const segments = [];
+  let rmsSum = 0, rmsMax = 0, rmsCount = 0, vecPoints = 0;
+  const t2 = performance.now();
+  clusters.forEach((idx, ci) => {
+    if (idx.length < Math.max(2, s.minPoints)) return;
+    const pts = gather(points, idx);
+    const v = rtl.vectorize(pts, {
+      dim: 2, method: s.method, sigma: s.sigma, delta: s.delta, epsilon: s.epsilon,
+    });
+    vecPoints += idx.length;
+    for (let k = 0; k < v.count; k++) {
+      const seg4 = v.segments.subarray(4 * k, 4 * k + 4);
+      segments.push({ cluster: ci, x1: seg4[0], y1: seg4[1], x2: seg4[2], y2: seg4[3] });
+      if (v.rms) {
+        const r = v.rms[k];
+        if (Number.isFinite(r)) { rmsSum += r; rmsMax = Math.max(rmsMax, r); rmsCount++; }
+      }
+    }
+  });
+  const t3 = performance.now();
+
+  // The TLS line: either the clicked cluster or the beam window [from, to].
+  let fitIdx;
+  let fitSource;
+  if (state.fitCluster !== null && clusters[state.fitCluster]) {
+    fitIdx = clusters[state.fitCluster];
+    fitSource = `cluster ${state.fitCluster + 1}`;
+  } else {
+    state.fitCluster = null;
+    const from = Math.min(Math.max(0, s.fitFrom), beamCount - 1);
+    const to = Math.min(Math.max(from, s.fitTo), beamCount - 1);
+    fitIdx = [];
+    for (let i = from; i <= to; i++) if (Number.isFinite(points[2 * i]) && Number.isFinite(points[2 * i + 1])) fitIdx.push(i);
+    fitSource = `beams ${from}–${to}`;
+  }
+  let fit = null;
+  let fitError = null;
+  if (fitIdx.length >= 2) {
+    try {
+      const f = rtl.fitLine(gather(points, fitIdx));
+      fit = { normal: [f.normal[0], f.normal[1]], offset: f.offset, rms: f.rms, n: fitIdx.length };
+    } catch (e) {
+      fitError = e.message;
+    }
+  } else {
+    fitError = 'fewer than 2 valid points in the window';
+  }
+
+  const valid = validPoints(points);
+  return {
+    dataset: state.dataset,
+    scanIndex: state.scanIndex,
+    beams: beamCount,
+    validCount: valid.beams.length,
+    pose: { x: scan.x, y: scan.y, theta: scan.theta },
+    points,
+    labels: seg.labels,
+    clusters,
+    settings: s,
+    fit,
+    fitIdx,
+    fitSource,
+    fitError,
+    segments,
+    stats: {
+      clusterCount: clusters.length,
+      drawnClusters: clusters.filter((c) => c.length >= s.minPoints).length,
+      largest: clusters.reduce((m, c) => Math.max(m, c.length), 0),
+      gaps: beamCount - valid.beams.length,
+      segTimeMs: t1 - t0,
+      vecTimeMs: t3 - t2,
+      segmentCount: segments.length,
+      vecPoints,
+      rmsMean: rmsCount ? rmsSum / rmsCount : NaN,
+      rmsMax: rmsCount ? rmsMax : NaN,
+    },
+  };
+}
+
+// ---- drawing ------------------------------------------------------------------------------------------------------
+
+function clusterColour(ci, size, s) {
+  if (!s.show.clusters) return '#334155';
+  if (size < s.minPoints) return SMALL_CLUSTER;
+  return PALETTE[ci % PALETTE.length];
+}
+
+function fitCanvas(canvas) {
+  const dpr = window.devicePixelRatio || 1;
+  const w = Math.max(320, Math.round(canvas.clientWidth * dpr));
+  const h = Math.round(w * 3 / 4);
+  if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+  return dpr;
+}
+
+function draw(r) {
+  const canvas = $('canvas');
+  const dpr = fitCanvas(canvas);
+  const ctx = canvas.getContext('2d');
+  const W = canvas.width, H = canvas.height;
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.fillStyle = '#fbfcfd';
+  ctx.fillRect(0, 0, W, H);
+
+  // View: the valid points plus the sensor at the origin, with a margin; equal scale on both axes.
+  let minX = 0, maxX = 0, minY = 0, maxY = 0;
+  const n = r.points.length / 2;
+  for (let i = 0; i < n; i++) {
+    const x = r.points[2 * i], y = r.points[2 * i + 1];
+    if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+    minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
+  }
+  const pad = 0.06 * Math.max(maxX - minX, maxY - minY, 1);
+  minX -= pad; maxX += pad; minY -= pad; maxY += pad;
+  const scale = Math.min(W / (maxX - minX), H / (maxY - minY));
+  const ox = (W - scale * (maxX - minX)) / 2, oy = (H - scale * (maxY - minY)) / 2;
+  const X = (x) => ox + (x - minX) * scale;
+  const Y = (y) => H - (oy + (y - minY) * scale);
+  state.view = { X, Y, scale, dpr, minX, maxX, minY, maxY, W, H };
+
+  // Metre grid with labels every metre (every 5 m when zoomed out).
+  const stepM = scale / dpr < 12 ? 5 : 1;
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = '#e6e9ee';
+  ctx.fillStyle = '#8a94a3';
+  ctx.font = `${11 * dpr}px system-ui, sans-serif`;
+  for (let gx = Math.ceil(minX / stepM) * stepM; gx <= maxX; gx += stepM) {
+    ctx.beginPath(); ctx.moveTo(X(gx), 0); ctx.lineTo(X(gx), H); ctx.stroke();
+    ctx.fillText(`${gx} m`, X(gx) + 3 * dpr, H - 4 * dpr);
+  }
+  for (let gy = Math.ceil(minY / stepM) * stepM; gy <= maxY; gy += stepM) {
+    ctx.beginPath(); ctx.moveTo(0, Y(gy)); ctx.lineTo(W, Y(gy)); ctx.stroke();
+    ctx.fillText(`${gy} m`, 3 * dpr, Y(gy) - 3 * dpr);
+  }
+
+  const s = r.settings;
+
+  // Beams of the fitted points, faint, to show which measurements the fit uses.
+  if (s.show.fit && r.fit) {
+    ctx.strokeStyle = 'rgba(31, 95, 191, 0.10)';
+    ctx.lineWidth = 1 * dpr;
+    ctx.beginPath();
+    for (const k of r.fitIdx) { ctx.moveTo(X(0), Y(0)); ctx.lineTo(X(r.points[2 * k]), Y(r.points[2 * k + 1])); }
+    ctx.stroke();
+  }
+
+  // Points, coloured by cluster.
+  if (s.show.points) {
+    const sizeOf = new Map(r.clusters.map((c, ci) => [ci, c.length]));
+    const rad = Math.max(1.6, Math.min(3.2, scale / 60)) * dpr / Math.max(1, dpr / 1.5);
+    for (let i = 0; i < n; i++) {
+      const x = r.points[2 * i], y = r.points[2 * i + 1];
+      if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+      const ci = r.labels[i];
+      ctx.fillStyle = ci >= 0 ? clusterColour(ci, sizeOf.get(ci), s) : GAP_COLOUR;
+      ctx.beginPath(); ctx.arc(X(x), Y(y), rad, 0, 2 * Math.PI); ctx.fill();
+    }
+  }
+
+  // Vectorized segments: dark outline under a coloured core so they stay visible over the points.
+  if (s.show.segments) {
+    ctx.lineCap = 'round';
+    for (const sg of r.segments) {
+      ctx.strokeStyle = '#1c2330'; ctx.lineWidth = 4.2 * dpr;
+      ctx.beginPath(); ctx.moveTo(X(sg.x1), Y(sg.y1)); ctx.lineTo(X(sg.x2), Y(sg.y2)); ctx.stroke();
+    }
+    for (const sg of r.segments) {
+      ctx.strokeStyle = s.show.clusters ? PALETTE[sg.cluster % PALETTE.length] : '#f8fafc';
+      ctx.lineWidth = 2.2 * dpr;
+      ctx.beginPath(); ctx.moveTo(X(sg.x1), Y(sg.y1)); ctx.lineTo(X(sg.x2), Y(sg.y2)); ctx.stroke();
+    }
+    for (const sg of r.segments) {
+      ctx.fillStyle = '#1c2330';
+      for (const [x, y] of [[sg.x1, sg.y1], [sg.x2, sg.y2]]) { ctx.beginPath(); ctx.arc(X(x), Y(y), 2.6 * dpr, 0, 2 * Math.PI); ctx.fill(); }
+    }
+  }
+
+  // The TLS line: dashed across the view, solid between the projections of the fitted points.
+  if (s.show.fit && r.fit) {
+    const [nx, ny] = r.fit.normal; const c = r.fit.offset;
+    const dx = -ny, dy = nx;                                   // direction
+    const px = -c * nx, py = -c * ny;                          // foot of the origin on the line
+    let tMin = Infinity, tMax = -Infinity;
+    for (const k of r.fitIdx) {
+      const t = (r.points[2 * k] - px) * dx + (r.points[2 * k + 1] - py) * dy;
+      tMin = Math.min(tMin, t); tMax = Math.max(tMax, t);
+    }
+    const far = 2 * Math.hypot(maxX - minX, maxY - minY) + Math.hypot(px, py);
+    ctx.strokeStyle = 'rgba(200, 30, 60, 0.55)'; ctx.lineWidth = 1.3 * dpr; ctx.setLineDash([6 * dpr, 5 * dpr]);
+    ctx.beginPath(); ctx.moveTo(X(px - far * dx), Y(py - far * dy)); ctx.lineTo(X(px + far * dx), Y(py + far * dy)); ctx.stroke();
+    ctx.setLineDash([]);
+    ctx.strokeStyle = '#c81e3c'; ctx.lineWidth = 2.6 * dpr;
+    ctx.beginPath(); ctx.moveTo(X(px + tMin * dx), Y(py + tMin * dy)); ctx.lineTo(X(px + tMax * dx), Y(py + tMax * dy)); ctx.stroke();
+  }
+
+  // The sensor: a triangle at the origin pointing along +x (the robot's heading).
+  const sz = 9 * dpr;
+  ctx.fillStyle = '#1c2330';
+  ctx.beginPath(); ctx.moveTo(X(0) + sz, Y(0)); ctx.lineTo(X(0) - sz * 0.6, Y(0) - sz * 0.6); ctx.lineTo(X(0) - sz * 0.6, Y(0) + sz * 0.6); ctx.closePath(); ctx.fill();
+
+  canvas.setAttribute('aria-label',
+    `${DATASETS[r.dataset].label} scan ${r.scanIndex}: ${r.validCount} points in ${r.stats.clusterCount} clusters, ` +
+    `${r.stats.segmentCount} line segments (${s.method.toUpperCase()})` +
+    (r.fit ? `, fitted line RMS ${fmt(r.fit.rms * 1000, 1)} mm` : ''));
+}
+
+// ---- numbers and exposure -----------------------------------------------------------------------------------------
+
+function showNumbers(r) {
+  const scan = state.scans[r.dataset][r.scanIndex];
+  $('scan-info').textContent = `${r.beams} beams, ${r.validCount} returns, pose (${fmt(scan.x, 2)}, ${fmt(scan.y, 2)}) m, ` +
+    `${fmt(scan.theta * 180 / Math.PI, 1)}° · log line ${scan.line ?? '–'}`;
+  if (r.fit) {
+    $('fit-n').textContent = `${r.fit.n} (${r.fitSource})`;
+    $('fit-normal').textContent = `(${fmt(r.fit.normal[0], 4)}, ${fmt(r.fit.normal[1], 4)})`;
+    $('fit-offset').textContent = `${fmt(r.fit.offset, 4)} m`;
+    $('fit-rms').textContent = `${fmt(r.fit.rms * 1000, 1)} mm`;
+  } else {
+    $('fit-n').textContent = r.fitError ?? '–';
+    $('fit-normal').textContent = $('fit-offset').textContent = $('fit-rms').textContent = '–';
+  }
+  $('seg-count').textContent = `${r.stats.clusterCount} (${r.stats.drawnClusters} with ≥ ${r.settings.minPoints} pts)`;
+  $('seg-largest').textContent = `${r.stats.largest} points`;
+  $('seg-gaps').textContent = `${r.stats.gaps} beams`;
+  $('seg-time').textContent = `${fmt(r.stats.segTimeMs, 2)} ms`;
+  $('vec-count').textContent = String(r.stats.segmentCount);
+  $('vec-ratio').textContent = r.stats.segmentCount ? fmt(r.stats.vecPoints / r.stats.segmentCount, 1) : '–';
+  $('vec-rms').textContent = Number.isFinite(r.stats.rmsMean) ? `${fmt(r.stats.rmsMean * 1000, 1)} / ${fmt(r.stats.rmsMax * 1000, 1)} mm` : '–';
+  $('vec-time').textContent = `${fmt(r.stats.vecTimeMs, 2)} ms`;
+}
+
+function expose(r) {
+  state.revision += 1;
+  window.__rtl = {
+    ready: true,
+    revision: state.revision,
+    errors: window.__rtl.errors,
+    dataset: r.dataset,
+    scanIndex: r.scanIndex,
+    beams: r.beams,
+    validCount: r.validCount,
+    settings: { ...r.settings, show: { ...r.settings.show } },
+    fit: r.fit && { ...r.fit, source: r.fitSource, indices: r.fitIdx.slice() },
+    fitError: r.fitError,
+    segmentation: {
+      clusterCount: r.stats.clusterCount,
+      drawnClusters: r.stats.drawnClusters,
+      largest: r.stats.largest,
+      clusterSizes: r.clusters.map((c) => c.length),
+      labels: Array.from(r.labels),
+      timeMs: r.stats.segTimeMs,
+    },
+    // Client (CSS pixel) coordinates of point i in the figure, for tests that click on the drawing.
+    clientPoint(i) {
+      const v = state.view, rect = $('canvas').getBoundingClientRect();
+      return { x: rect.left + v.X(r.points[2 * i]) * rect.width / v.W, y: rect.top + v.Y(r.points[2 * i + 1]) * rect.height / v.H };
+    },
+    vectorization: {
+      method: r.settings.method,
+      segmentCount: r.stats.segmentCount,
+      segments: r.segments.map((s) => [s.x1, s.y1, s.x2, s.y2, s.cluster]),
+      rmsMean: r.stats.rmsMean,
+      rmsMax: r.stats.rmsMax,
+      timeMs: r.stats.vecTimeMs,
+    },
+  };
+}
+
+let scheduled = false;
+function update() {
+  if (scheduled) return;
+  scheduled = true;
+  requestAnimationFrame(async () => {
+    scheduled = false;
+    try {
+      syncOutputs();
+      state.dataset = $('dataset').value;
+      await loadDataset(state.dataset);
+      const scans = state.scans[state.dataset];
+      $('scan').max = String(scans.length - 1);
+      state.scanIndex = Math.min(Number($('scan').value), scans.length - 1);
+      const r = compute();
+      state.result = r;
+      draw(r);
+      showNumbers(r);
+      expose(r);
+      setStatus(`${DATASETS[r.dataset].label}, scan ${r.scanIndex}: ${r.stats.clusterCount} clusters, ` +
+        `${r.stats.segmentCount} segments by ${r.settings.method.toUpperCase()} in ${fmt(r.stats.segTimeMs + r.stats.vecTimeMs, 1)} ms.`);
+    } catch (e) {
+      setStatus(`Error: ${e.message}`, true);
+      window.__rtl.errors.push(String(e.message));
+      console.error(e);
+    }
+  });
+}
+
+// ---- export -------------------------------------------------------------------------------------------------------
+
+function drawing(r) {
+  const s = r.settings;
+  const drawn = r.clusters.filter((c) => c.length >= s.minPoints);
+  return {
+    points: r.points,
+    labels: r.labels,
+    segments: new Float64Array(r.segments.flatMap((g) => [g.x1, g.y1, g.x2, g.y2])),
+    title: `${DATASETS[r.dataset].label} scan ${r.scanIndex}, ${drawn.length} clusters, ${r.segments.length} segments (${s.method.toUpperCase()})`,
+  };
+}
+
+function download(name, type, text) {
+  const url = URL.createObjectURL(new Blob([text], { type }));
+  const a = document.createElement('a');
+  a.href = url; a.download = name;
+  document.body.append(a); a.click(); a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+// ---- wiring -------------------------------------------------------------------------------------------------------
+
+function onCanvasClick(ev) {
+  const r = state.result, v = state.view;
+  if (!r || !v) return;
+  const rect = ev.currentTarget.getBoundingClientRect();
+  const cx = (ev.clientX - rect.left) * (v.W / rect.width), cy = (ev.clientY - rect.top) * (v.H / rect.height);
+  let best = -1, bestD = (12 * v.dpr) ** 2;
+  const n = r.points.length / 2;
+  for (let i = 0; i < n; i++) {
+    const x = r.points[2 * i], y = r.points[2 * i + 1];
+    if (!Number.isFinite(x)) continue;
+    const d = (v.X(x) - cx) ** 2 + (v.Y(y) - cy) ** 2;
+    if (d < bestD && r.labels[i] >= 0) { bestD = d; best = i; }
+  }
+  if (best < 0) return;
+  const ci = r.labels[best];
+  state.fitCluster = ci;
+  const idx = r.clusters[ci];
+  $('fit-from').value = String(idx[0]);
+  $('fit-to').value = String(idx[idx.length - 1]);
+  update();
+}
+
+function resetFitWindow() {
+  const r = state.result;
+  state.fitCluster = null;
+  $('fit-from').value = '0';
+  $('fit-to').value = String(r ? r.beams - 1 : 179);
+}
+
+async function main() {
+  syncOutputs();
+  try {
+    state.rtl = await init();
+  } catch (e) {
+    setStatus(`Could not load the WebAssembly module: ${e.message}. Run "npm run build" first.`, true);
+    window.__rtl.errors.push(String(e.message));
+    return;
+  }
+  for (const el of $('controls').querySelectorAll('input, select')) {
+    el.addEventListener('input', () => {
+      if (el.id === 'fit-from' || el.id === 'fit-to') state.fitCluster = null;
+      update();
+    });
+  }
+  $('dataset').addEventListener('change', () => { $('scan').value = '0'; resetFitWindow(); update(); });
+  $('fit-all').addEventListener('click', () => { resetFitWindow(); update(); });
+  $('canvas').addEventListener('click', onCanvasClick);
+  $('dl-svg').addEventListener('click', () => {
+    const r = state.result; if (!r) return;
+    download(`rtl-${r.dataset}-${r.scanIndex}.svg`, 'image/svg+xml', state.rtl.toSvg(drawing(r)));
+  });
+  $('dl-tikz').addEventListener('click', () => {
+    const r = state.result; if (!r) return;
+    download(`rtl-${r.dataset}-${r.scanIndex}.tex`, 'text/x-tex', state.rtl.toTikz(drawing(r)));
+  });
+  window.addEventListener('resize', () => { if (state.result) draw(state.result); });
+  update();
+}
+
+main();
