@@ -34,6 +34,7 @@ const state = {
   result: null,       // last computed result (also exposed as window.__rtl)
   revision: 0,
   view: null,         // world -> canvas transform of the last draw
+  zoom: null,         // user's view extents (wheel/drag), or null for the automatic extent
 };
 
 window.__rtl = { ready: false, revision: 0, errors: [] };
@@ -225,6 +226,25 @@ function fitCanvas(canvas) {
   return dpr;
 }
 
+function autoExtent(points) {
+  const n = points.length / 2;
+  const ranges = [];
+  for (let i = 0; i < n; i++) {
+    const x = points[2 * i], y = points[2 * i + 1];
+    if (Number.isFinite(x) && Number.isFinite(y)) ranges.push(Math.hypot(x, y));
+  }
+  ranges.sort((a, b) => a - b);
+  const limit = ranges.length ? 1.5 * ranges[Math.floor(0.9 * (ranges.length - 1))] : 1;
+  let minX = 0, maxX = 0, minY = 0, maxY = 0;
+  for (let i = 0; i < n; i++) {
+    const x = points[2 * i], y = points[2 * i + 1];
+    if (!Number.isFinite(x) || !Number.isFinite(y) || Math.hypot(x, y) > limit) continue;
+    minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
+  }
+  const pad = 0.06 * Math.max(maxX - minX, maxY - minY, 1);
+  return { minX: minX - pad, maxX: maxX + pad, minY: minY - pad, maxY: maxY + pad };
+}
+
 function draw(r) {
   const canvas = $('canvas');
   const dpr = fitCanvas(canvas);
@@ -234,20 +254,16 @@ function draw(r) {
   ctx.fillStyle = '#fbfcfd';
   ctx.fillRect(0, 0, W, H);
 
-  // View: the valid points plus the sensor at the origin, with a margin; equal scale on both axes.
-  let minX = 0, maxX = 0, minY = 0, maxY = 0;
+  // View: by default the bulk of the scan (points up to 1.5x the 90th-percentile range, so a few far returns
+  // through a door do not shrink the room to a corner) plus the sensor; the user can zoom (wheel) and pan (drag).
   const n = r.points.length / 2;
-  for (let i = 0; i < n; i++) {
-    const x = r.points[2 * i], y = r.points[2 * i + 1];
-    if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
-    minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
-  }
-  const pad = 0.06 * Math.max(maxX - minX, maxY - minY, 1);
-  minX -= pad; maxX += pad; minY -= pad; maxY += pad;
+  const view = state.zoom ?? autoExtent(r.points);
+  let { minX, maxX, minY, maxY } = view;
   const scale = Math.min(W / (maxX - minX), H / (maxY - minY));
   const ox = (W - scale * (maxX - minX)) / 2, oy = (H - scale * (maxY - minY)) / 2;
-  const X = (x) => ox + (x - minX) * scale;
-  const Y = (y) => H - (oy + (y - minY) * scale);
+  minX -= ox / scale; maxX += ox / scale; minY -= oy / scale; maxY += oy / scale;
+  const X = (x) => (x - minX) * scale;
+  const Y = (y) => H - (y - minY) * scale;
   state.view = { X, Y, scale, dpr, minX, maxX, minY, maxY, W, H };
 
   // Metre grid with labels every metre (every 5 m when zoomed out).
@@ -276,34 +292,38 @@ function draw(r) {
     ctx.stroke();
   }
 
+  // Vectorized segments under the points: a wide translucent band in the cluster colour, then a dark core line.
+  if (s.show.segments) {
+    ctx.lineCap = 'round';
+    for (const sg of r.segments) {
+      ctx.strokeStyle = s.show.clusters ? PALETTE[sg.cluster % PALETTE.length] + '55' : 'rgba(28, 35, 48, 0.2)';
+      ctx.lineWidth = 7 * dpr;
+      ctx.beginPath(); ctx.moveTo(X(sg.x1), Y(sg.y1)); ctx.lineTo(X(sg.x2), Y(sg.y2)); ctx.stroke();
+    }
+  }
+
   // Points, coloured by cluster.
   if (s.show.points) {
-    const sizeOf = new Map(r.clusters.map((c, ci) => [ci, c.length]));
-    const rad = Math.max(1.6, Math.min(3.2, scale / 60)) * dpr / Math.max(1, dpr / 1.5);
+    const sizeOf = r.clusters.map((c) => c.length);
+    const rad = Math.max(1.8, Math.min(3.2, scale / (70 * dpr))) * dpr;
     for (let i = 0; i < n; i++) {
       const x = r.points[2 * i], y = r.points[2 * i + 1];
       if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
       const ci = r.labels[i];
-      ctx.fillStyle = ci >= 0 ? clusterColour(ci, sizeOf.get(ci), s) : GAP_COLOUR;
+      ctx.fillStyle = ci >= 0 ? clusterColour(ci, sizeOf[ci], s) : GAP_COLOUR;
       ctx.beginPath(); ctx.arc(X(x), Y(y), rad, 0, 2 * Math.PI); ctx.fill();
     }
   }
 
-  // Vectorized segments: dark outline under a coloured core so they stay visible over the points.
   if (s.show.segments) {
-    ctx.lineCap = 'round';
+    ctx.strokeStyle = '#1c2330';
+    ctx.lineWidth = 1.6 * dpr;
+    ctx.beginPath();
+    for (const sg of r.segments) { ctx.moveTo(X(sg.x1), Y(sg.y1)); ctx.lineTo(X(sg.x2), Y(sg.y2)); }
+    ctx.stroke();
+    ctx.fillStyle = '#1c2330';
     for (const sg of r.segments) {
-      ctx.strokeStyle = '#1c2330'; ctx.lineWidth = 4.2 * dpr;
-      ctx.beginPath(); ctx.moveTo(X(sg.x1), Y(sg.y1)); ctx.lineTo(X(sg.x2), Y(sg.y2)); ctx.stroke();
-    }
-    for (const sg of r.segments) {
-      ctx.strokeStyle = s.show.clusters ? PALETTE[sg.cluster % PALETTE.length] : '#f8fafc';
-      ctx.lineWidth = 2.2 * dpr;
-      ctx.beginPath(); ctx.moveTo(X(sg.x1), Y(sg.y1)); ctx.lineTo(X(sg.x2), Y(sg.y2)); ctx.stroke();
-    }
-    for (const sg of r.segments) {
-      ctx.fillStyle = '#1c2330';
-      for (const [x, y] of [[sg.x1, sg.y1], [sg.x2, sg.y2]]) { ctx.beginPath(); ctx.arc(X(x), Y(y), 2.6 * dpr, 0, 2 * Math.PI); ctx.fill(); }
+      for (const [x, y] of [[sg.x1, sg.y1], [sg.x2, sg.y2]]) { ctx.beginPath(); ctx.arc(X(x), Y(y), 2.4 * dpr, 0, 2 * Math.PI); ctx.fill(); }
     }
   }
 
@@ -449,6 +469,74 @@ function download(name, type, text) {
 
 // ---- wiring -------------------------------------------------------------------------------------------------------
 
+// Current view extents in world metres (what autoExtent or the user's zoom chose, after aspect padding).
+function currentExtent() {
+  const v = state.view;
+  return { minX: v.minX, maxX: v.maxX, minY: v.minY, maxY: v.maxY };
+}
+
+function zoomAt(fx, fy, factor) {          // fx, fy: fraction of the canvas (0..1) that stays put
+  if (!state.view) return;
+  const e = currentExtent();
+  const wx = e.minX + fx * (e.maxX - e.minX), wy = e.maxY - fy * (e.maxY - e.minY);
+  state.zoom = {
+    minX: wx - (wx - e.minX) * factor, maxX: wx + (e.maxX - wx) * factor,
+    minY: wy - (wy - e.minY) * factor, maxY: wy + (e.maxY - wy) * factor,
+  };
+  draw(state.result);
+}
+
+function panBy(dxPx, dyPx) {               // canvas pixels
+  const v = state.view;
+  if (!v) return;
+  const dx = dxPx / v.scale, dy = dyPx / v.scale, e = currentExtent();
+  state.zoom = { minX: e.minX - dx, maxX: e.maxX - dx, minY: e.minY + dy, maxY: e.maxY + dy };
+  draw(state.result);
+}
+
+function resetView() {
+  state.zoom = null;
+  if (state.result) draw(state.result);
+}
+
+function wireCanvas(canvas) {
+  canvas.addEventListener('wheel', (ev) => {
+    ev.preventDefault();
+    const rect = canvas.getBoundingClientRect();
+    zoomAt((ev.clientX - rect.left) / rect.width, (ev.clientY - rect.top) / rect.height, Math.exp(ev.deltaY * 0.0015));
+  }, { passive: false });
+  let drag = null;
+  canvas.addEventListener('pointerdown', (ev) => {
+    drag = { x: ev.clientX, y: ev.clientY, moved: false };
+    canvas.setPointerCapture(ev.pointerId);
+  });
+  canvas.addEventListener('pointermove', (ev) => {
+    if (!drag) return;
+    const rect = canvas.getBoundingClientRect(), k = state.view.W / rect.width;
+    const dx = ev.clientX - drag.x, dy = ev.clientY - drag.y;
+    if (!drag.moved && Math.hypot(dx, dy) < 4) return;
+    drag.moved = true;
+    panBy(dx * k, dy * k);
+    drag.x = ev.clientX; drag.y = ev.clientY;
+  });
+  canvas.addEventListener('pointerup', (ev) => {
+    const wasClick = drag && !drag.moved;
+    drag = null;
+    if (wasClick) onCanvasClick(ev);
+  });
+  canvas.addEventListener('dblclick', resetView);
+  // Keyboard: + and - zoom, arrows pan, 0 resets the view.
+  canvas.addEventListener('keydown', (ev) => {
+    const step = 40 * (state.view?.dpr ?? 1);
+    const actions = {
+      '+': () => zoomAt(0.5, 0.5, 0.8), '=': () => zoomAt(0.5, 0.5, 0.8), '-': () => zoomAt(0.5, 0.5, 1.25),
+      '0': resetView, ArrowLeft: () => panBy(step, 0), ArrowRight: () => panBy(-step, 0),
+      ArrowUp: () => panBy(0, step), ArrowDown: () => panBy(0, -step),
+    };
+    if (actions[ev.key]) { ev.preventDefault(); actions[ev.key](); }
+  });
+}
+
 function onCanvasClick(ev) {
   const r = state.result, v = state.view;
   if (!r || !v) return;
@@ -493,9 +581,10 @@ async function main() {
       update();
     });
   }
-  $('dataset').addEventListener('change', () => { $('scan').value = '0'; resetFitWindow(); update(); });
+  $('dataset').addEventListener('change', () => { $('scan').value = '0'; state.zoom = null; resetFitWindow(); update(); });
   $('fit-all').addEventListener('click', () => { resetFitWindow(); update(); });
-  $('canvas').addEventListener('click', onCanvasClick);
+  wireCanvas($('canvas'));
+  $('reset-view').addEventListener('click', resetView);
   $('dl-svg').addEventListener('click', () => {
     const r = state.result; if (!r) return;
     download(`rtl-${r.dataset}-${r.scanIndex}.svg`, 'image/svg+xml', state.rtl.toSvg(drawing(r)));

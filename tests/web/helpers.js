@@ -1,0 +1,121 @@
+// Shared helpers for the page, Vite and CLI tests: a server on a free port, a headless Debian Chromium, and an
+// independent (pure JavaScript, no wasm) CARMEN parser and total-least-squares fit to check the page's numbers against.
+import { spawn } from 'node:child_process';
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const REPO = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const DATA = join(REPO, 'tests', 'data');
+export const RESULTS = join(REPO, 'test-results');
+export const CHROMIUM = process.env.RTL_CHROMIUM || '/usr/bin/chromium';
+
+// The flags of the toolchain guide (§8): no sandbox (root in CI), no GPU, no network chatter or updates.
+export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+
+export function resultsDir() {
+  mkdirSync(RESULTS, { recursive: true });
+  return RESULTS;
+}
+
+// Starts web/serve.js on a free port (PORT=0) and resolves with its URL once it printed it; close() kills it by PID.
+export function startServer({ root } = {}) {
+  const env = { ...process.env, PORT: '0' };
+  if (root) env.RTL_SERVE_ROOT = root;
+  else delete env.RTL_SERVE_ROOT;
+  const child = spawn(process.execPath, [join(REPO, 'web', 'serve.js')], { env, stdio: ['ignore', 'pipe', 'pipe'] });
+  let stderr = '';
+  child.stderr.on('data', (d) => { stderr += d; });
+  const close = () => new Promise((res) => {
+    if (child.exitCode !== null || child.signalCode !== null) return res();
+    child.once('exit', () => res());
+    child.kill('SIGTERM');
+  });
+  return new Promise((res, rej) => {
+    let out = '';
+    const timer = setTimeout(() => { close(); rej(new Error(`serve.js did not start: ${stderr}`)); }, 10000);
+    child.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/^(http:\/\/127\.0\.0\.1:(\d+))(\/\S*)\n/);
+      if (m) {
+        clearTimeout(timer);
+        res({ origin: m[1], port: Number(m[2]), pageUrl: m[1] + m[3], pid: child.pid, close });
+      }
+    });
+    child.once('exit', (code) => { clearTimeout(timer); rej(new Error(`serve.js exited with ${code}: ${stderr}`)); });
+  });
+}
+
+// A fresh headless Chromium with its own temporary profile; close() removes the profile too.
+export async function launchBrowser() {
+  const { chromium } = await import('playwright-core');
+  const profile = mkdtempSync(join(tmpdir(), 'rtl-chromium-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, viewport: { width: 1400, height: 1000 },
+    acceptDownloads: true,
+  });
+  return {
+    context,
+    async close() {
+      try { await context.close(); } finally { rmSync(profile, { recursive: true, force: true }); }
+    },
+  };
+}
+
+// Records console errors and uncaught page errors; tests assert the list stays empty.
+export function watchConsole(page) {
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console.error: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+  return problems;
+}
+
+// ---- independent reference computations (no wasm) -----------------------------------------------------------------
+
+// FLASER n r_1..r_n x y theta odom_x odom_y odom_theta ipc_timestamp host logger_timestamp; beam i at
+// -pi/2 + i*pi/n (n = 180) or -pi/2 + i*pi/(n-1) (n = 361: 0.5 degree steps, last beam at +pi/2).
+export function parseCarmen(text) {
+  const scans = [];
+  text.split('\n').forEach((line, li) => {
+    const t = line.trim().split(/\s+/);
+    if (t[0] !== 'FLASER') return;
+    const n = Number(t[1]);
+    const ranges = t.slice(2, 2 + n).map(Number);
+    const step = n % 2 === 1 ? Math.PI / (n - 1) : Math.PI / n;
+    const angles = ranges.map((_, i) => -Math.PI / 2 + i * step);
+    scans.push({ line: li + 1, n, ranges, angles, x: Number(t[2 + n]), y: Number(t[3 + n]), theta: Number(t[4 + n]) });
+  });
+  return scans;
+}
+
+// Plain two-pass TLS in double precision: centroid, covariance, smaller eigenvalue and its eigenvector.
+export function tlsFit(xy) {
+  const n = xy.length / 2;
+  let mx = 0, my = 0;
+  for (let i = 0; i < n; i++) { mx += xy[2 * i]; my += xy[2 * i + 1]; }
+  mx /= n; my /= n;
+  let sxx = 0, sxy = 0, syy = 0;
+  for (let i = 0; i < n; i++) {
+    const dx = xy[2 * i] - mx, dy = xy[2 * i + 1] - my;
+    sxx += dx * dx; sxy += dx * dy; syy += dy * dy;
+  }
+  sxx /= n; sxy /= n; syy /= n;
+  // Angle of the major axis; the normal is perpendicular to it (robust for axis-aligned sets too).
+  const phi = 0.5 * Math.atan2(2 * sxy, sxx - syy);
+  const normal = [-Math.sin(phi), Math.cos(phi)];
+  const offset = -(normal[0] * mx + normal[1] * my);
+  let ss = 0;
+  for (let i = 0; i < n; i++) { const d = normal[0] * xy[2 * i] + normal[1] * xy[2 * i + 1] + offset; ss += d * d; }
+  return { normal, offset, rms: Math.sqrt(ss / n), centroid: [mx, my], n };
+}
+
+// The line n.p + c = 0 is the same as (-n).p - c = 0: compare up to that sign.
+export function sameLine(a, b, tol) {
+  const s = Math.sign(a.normal[0] * b.normal[0] + a.normal[1] * b.normal[1]) || 1;
+  return Math.abs(a.normal[0] - s * b.normal[0]) < tol && Math.abs(a.normal[1] - s * b.normal[1]) < tol &&
+    Math.abs(a.offset - s * b.offset) < tol;
+}
