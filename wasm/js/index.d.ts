@@ -1,0 +1,261 @@
+// rtl-wasm: hand-written TypeScript contract of the package (Emscripten 3.1.6 has no embind .d.ts generator).
+// Everything returned is plain JS data (numbers, strings, typed arrays, arrays, objects): nothing needs .delete().
+// Only the two stateful classes (StreamSegmenter, TfTree) own wasm memory; they have dispose() and [Symbol.dispose],
+// and a FinalizationRegistry frees them if you forget.
+//
+// Points are interleaved coordinates: x0,y0,x1,y1,... (dim 2) or x0,y0,z0,... (dim 3), given as a Float64Array,
+// a Float32Array or a plain array of numbers (converted). Point arrays the package returns are Float64Array.
+// A point with a NaN coordinate is a gap (a laser beam without return) where a function says so.
+//
+// Errors: every function checks its arguments and throws TypeError (wrong type) or RangeError (bad value) with a
+// message naming the argument; no C++ exception reaches JS and the module keeps working after any error.
+
+export type PointArray = Float64Array | Float32Array | ArrayLike<number>;
+export type Dim = 2 | 3;
+
+export interface InitOptions {
+  /** The module's .wasm bytes. Loaded automatically in Node and (via fetch) in browsers; pass it to override. */
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  /** Where the .wasm lives when it is hosted somewhere else (a CDN). Do not pass it with a bundler. */
+  locateFile?: (path: string, scriptDirectory: string) => string;
+}
+
+/** Loads and instantiates the WebAssembly module. Each call makes an independent instance. */
+export default function init(options?: InitOptions): Promise<RTL>;
+export { init };
+
+// ---------------------------------------------------------------------------------------------- line fit (TLS)
+export interface LineFitOptions { /** 2 (default) or 3 */ dim?: Dim }
+export interface LineFit2D {
+  dim: 2;
+  /** unit normal (a, b) of the line a*x + b*y + c = 0 */
+  normal: Float64Array;
+  /** c of a*x + b*y + c = 0 (signed distance of the origin is -c) */
+  offset: number;
+  /** unit direction, (-b, a) rotated: normal = (-direction.y, direction.x) */
+  direction: Float64Array;
+  /** centroid of the points (lies on the line) */
+  centroid: Float64Array;
+  /** root mean square orthogonal distance of the points from the line */
+  rms: number;
+  count: number;
+}
+export interface LineFit3D {
+  dim: 3;
+  /** unit direction (largest principal axis) */
+  direction: Float64Array;
+  /** centroid of the points (lies on the line) */
+  centroid: Float64Array;
+  rms: number;
+  count: number;
+}
+
+// ---------------------------------------------------------------------------------------------- segmentation
+export interface SegmentOptions {
+  dim?: Dim;                 // default 2
+  /** neighbours compared (CAR step), integer >= 1; default 3 */
+  step?: number;
+  /** lower bound of the adaptive distance threshold (m), >= 0; default 0.1 */
+  lowerBound?: number;
+  /** upper bound of the threshold (m), >= lowerBound; default 0.5 */
+  upperBound?: number;
+  /** sensor origin (dim numbers); default zeros */
+  origin?: ArrayLike<number>;
+}
+export interface Cluster {
+  /** point indices in the cluster's order (increasing; a cluster wrapping the seam lists its end-of-scan part first) */
+  indices: Uint32Array;
+  /** the same indices as contiguous half-open runs [begin0, end0, begin1, end1, ...] */
+  ranges: Uint32Array;
+}
+export interface SegmentResult {
+  /** cluster number per point, -1 for gaps (points with a NaN coordinate) */
+  labels: Int32Array;
+  /** clusters in the segmenter's output order; labels refer to this array */
+  clusters: Cluster[];
+}
+
+// ---------------------------------------------------------------------------------------------- vectorization
+export type VectorizeMethod = 'ftls' | 'aftls' | 'itls' | 'dp' | 'rw';
+export interface VectorizeOptions {
+  dim?: Dim;                   // default 2
+  method: VectorizeMethod;
+  /** 'line' (default) or 'plane' (dim 3, method 'aftls' only) */
+  primitive?: 'line' | 'plane';
+  /** TLS methods: max RMS orthogonal distance of points from their line/plane (m), > 0; default 0.03 */
+  sigma?: number;
+  /** ftls/aftls 2D: corner (continuity) tolerance (m), > 0; default 0.3 */
+  delta?: number;
+  /** dp/rw: tolerance (m), > 0; default 0.09 */
+  epsilon?: number;
+  /** ftls/aftls/dp/rw: buffer reservation hint, integer >= 0 */
+  maxSize?: number;
+  /** aftls: initial simplex shift of the total-error optimizer, integer >= 1; default 1 */
+  simplexShift?: number;
+  /** aftls: iteration cap of the optimizer, integer >= 1; default 10000 */
+  maxIterations?: number;
+}
+export interface VectorizeResult {
+  method: VectorizeMethod;
+  dim: Dim;
+  primitive: 'line' | 'plane';
+  /** false when the C++ vectorizer reported failure (then count is 0) */
+  ok: boolean;
+  /** number of segments (lines) or polygons (planes) */
+  count: number;
+  /** lines: count*2*dim numbers, segment k = (begin, end) points; planes: empty */
+  segments: Float64Array;
+  /** planes: polygon k's vertices (3 numbers each); lines: empty array */
+  polygons: Float64Array[];
+  /** half-open point-index range of each segment: [first0, end0, first1, end1, ...] (2*count) */
+  indices: Uint32Array;
+  /**
+   * fitted primitive of each range, `stride` numbers each:
+   * 2D line: a, b, c of a*x + b*y + c = 0 (unit normal)   (stride 3)
+   * 3D line: point (3) then unit direction (3)             (stride 6)
+   * plane:   unit normal (3) then d of normal . p = d      (stride 4)
+   */
+  params: Float64Array;
+  stride: number;
+  /** RMS orthogonal distance of each range's points from its fitted primitive (for dp/rw: from the chord's line) */
+  rms: Float64Array;
+}
+
+// ---------------------------------------------------------------------------------------------- drawings
+export interface Drawing {
+  /** 2D points (x,y interleaved) */
+  points?: PointArray;
+  /** cluster label per point (-1 = no cluster): clusters are coloured */
+  labels?: ArrayLike<number>;
+  /** line segments x1,y1,x2,y2,... */
+  segments?: PointArray;
+  title?: string;
+  /** toTikz: a complete LaTeX document (default) or a bare tikzpicture (false); may also be given in the options */
+  standalone?: boolean;
+}
+export interface TikzOptions {
+  /** complete LaTeX document (default true) or only the tikzpicture */
+  standalone?: boolean;
+  /** picture size in cm (default 12 x 12) */
+  width?: number;
+  height?: number;
+}
+export interface SvgOptions {
+  /** pixels (default 800 x 800) */
+  width?: number;
+  height?: number;
+  /** point radius in pixels (default 2) */
+  pointRadius?: number;
+}
+
+// ---------------------------------------------------------------------------------------------- readers
+export interface CarmenScan {
+  /** robot-frame points, one per beam in beam order; no-return beams are NaN points (gaps) */
+  points: Float64Array;
+  ranges: Float64Array;
+  /** corrected pose in the map frame */
+  x: number; y: number; theta: number;
+  timestamp: number;
+  /** 1-based line of the FLASER record in the log */
+  line: number;
+}
+export type OrganizedLayout = 'column-major' | 'row-major';
+export interface OrganizedLidarOptions {
+  /** beams (rings) per column, integer >= 1 */
+  beams: number;
+  /** 'column-major' (Ouster: point k is beam k % beams of column k / beams; default) or 'row-major' */
+  layout?: OrganizedLayout;
+}
+export interface OrganizedCloud {
+  beams: number;
+  columns: number;
+  /** x,y,z per point in file order; no-return points (0,0,0) are NaN */
+  points: Float64Array;
+  intensity: Float32Array;
+  /** the points of one beam over all columns (x,y,z interleaved) */
+  ring(beam: number): Float64Array;
+  /** the points of one column, top to bottom */
+  column(c: number): Float64Array;
+}
+
+// ---------------------------------------------------------------------------------------------- stateful classes
+export interface StreamSegmenterOptions {
+  dim?: Dim;          // default 2
+  /** sliding window length, integer >= 1; default 3 */
+  step?: number;
+  lowerBound?: number;   // default 0.1
+  upperBound?: number;   // default 0.5
+  /** threshold = scaling * |p - origin| clamped to [lowerBound, upperBound]; default 0.05 */
+  scaling?: number;
+}
+/** Streaming (IA) segmenter. Construct it through the module: `new rtl.StreamSegmenter(options)`. */
+export interface StreamSegmenter {
+  readonly dim: Dim;
+  /** feeds points in stream order (origin: dim numbers, default zeros); gaps (NaN points) are skipped */
+  addPoints(points: PointArray, origin?: ArrayLike<number>): void;
+  readonly closedClustersAvailable: number;
+  readonly aliveClustersAvailable: number;
+  /** removes and returns the closed clusters, oldest first, each as interleaved points in stream order */
+  takeClosedClusters(): Float64Array[];
+  /** current alive clusters (not removed) */
+  aliveClusters(): Float64Array[];
+  dispose(): void;
+  [Symbol.dispose](): void;
+  readonly disposed: boolean;
+}
+
+export interface Transform2D { angle: number; translation: ArrayLike<number> }
+export interface Transform3D {
+  /** rotation as a unit quaternion [w, x, y, z]; or give angle + axis; default identity */
+  quaternion?: ArrayLike<number>;
+  angle?: number;
+  axis?: ArrayLike<number>;
+  translation: ArrayLike<number>;
+}
+export interface RigidTransform {
+  dim: Dim;
+  /** rotation matrix, row-major dim x dim */
+  rotation: Float64Array;
+  translation: Float64Array;
+  /** homogeneous (dim+1) x (dim+1) matrix, row-major */
+  matrix: Float64Array;
+}
+/** A tree of named frames holding rigid transformations (parent -> child). Construct it through the module:
+ *  `new rtl.TfTree(rootName, { dim })`. */
+export interface TfTree {
+  readonly dim: Dim;
+  readonly size: number;
+  /** adds frame `name` under `parent`; false if the parent is unknown or the name exists */
+  insert(name: string, parent: string, tf: Transform2D | Transform3D): boolean;
+  erase(name: string): boolean;
+  contains(name: string): boolean;
+  /** the transformation that maps coordinates of frame `from` to frame `to` */
+  tf(from: string, to: string): RigidTransform;
+  /** applies tf(from, to) to every point (NaN points stay NaN) */
+  transformPoints(from: string, to: string, points: PointArray): Float64Array;
+  dispose(): void;
+  [Symbol.dispose](): void;
+  readonly disposed: boolean;
+}
+
+// ---------------------------------------------------------------------------------------------- the module
+export interface RTL {
+  readonly version: string;
+  fitLine(points: PointArray, options?: { dim?: 2 }): LineFit2D;
+  fitLine(points: PointArray, options: { dim: 3 }): LineFit3D;
+  fitLine(points: PointArray, options?: LineFitOptions): LineFit2D | LineFit3D;
+  segment(points: PointArray, options?: SegmentOptions): SegmentResult;
+  vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
+  toTikz(drawing: Drawing, options?: TikzOptions): string;
+  toSvg(drawing: Drawing, options?: SvgOptions): string;
+  readCarmen(text: string): CarmenScan[];
+  /** alias of readCarmen */
+  readCarmenLog(text: string): CarmenScan[];
+  readOrganizedLidar(data: ArrayBuffer | ArrayBufferView, options: OrganizedLidarOptions): OrganizedCloud;
+  StreamSegmenter: new (options?: StreamSegmenterOptions) => StreamSegmenter;
+  TfTree: new (root: string, options?: { dim?: Dim }) => TfTree;
+  /** bytes of wasm heap currently allocated by malloc (diagnostics; used by the leak tests) */
+  heapInUse(): number;
+  /** bytes of wasm linear memory */
+  memoryBytes(): number;
+}
