@@ -35,6 +35,8 @@ const state = {
   revision: 0,
   view: null,         // world -> canvas transform of the last draw
   zoom: null,         // user's view extents (wheel/drag), or null for the automatic extent
+  features: null,     // which package functions this build provides (the page grows with the package)
+  wholeScan: false,   // set the beam window to the whole scan at the next update
 };
 
 window.__rtl = { ready: false, revision: 0, errors: [] };
@@ -94,8 +96,32 @@ async function loadDataset(name) {
   if (!res.ok) throw new Error(`cannot load ${DATASETS[name].url}: HTTP ${res.status}`);
   const text = await res.text();
   state.texts[name] = text;
-  state.scans[name] = state.rtl.readCarmenLog(text);
+  const rtl = state.rtl;
+  const reader = rtl.readCarmenLog ?? rtl.readCarmen;
+  state.scans[name] = typeof reader === 'function' ? reader.call(rtl, text) : parseCarmenFallback(text);
   return state.scans[name];
+}
+
+// Only used when the package build has no CARMEN reader yet (the fitLine-only first slice): the same conversion the
+// reader documents, FLASER beam i at -pi/2 + i*pi/n (n odd: pi/(n-1), so the last beam is at +pi/2); max-range
+// returns (>= 80 m in these logs) are gaps (NaN).
+function parseCarmenFallback(text) {
+  const scans = [];
+  text.split('\n').forEach((line, li) => {
+    const t = line.trim().split(/\s+/);
+    if (t[0] !== 'FLASER') return;
+    const n = Number(t[1]);
+    const step = n % 2 === 1 ? Math.PI / (n - 1) : Math.PI / n;
+    const ranges = new Float64Array(t.slice(2, 2 + n).map(Number));
+    const points = new Float64Array(2 * n);
+    ranges.forEach((r, i) => {
+      const a = -Math.PI / 2 + i * step, ok = r > 0 && r < 80;
+      points[2 * i] = ok ? r * Math.cos(a) : NaN;
+      points[2 * i + 1] = ok ? r * Math.sin(a) : NaN;
+    });
+    scans.push({ points, ranges, x: Number(t[2 + n]), y: Number(t[3 + n]), theta: Number(t[4 + n]), line: li + 1 });
+  });
+  return scans;
 }
 
 // Interleaved x,y of the non-gap points, and the beam index of each.
@@ -124,17 +150,21 @@ function compute() {
   const points = scan.points;
   const beamCount = points.length / 2;
 
+  const f = state.features;
+
   // Segmentation of the whole scan (gaps are marked by the segmenter).
   const t0 = performance.now();
-  const seg = rtl.segment(points, { dim: 2, step: s.step, lowerBound: s.lowerBound, upperBound: s.upperBound });
+  const seg = f.segment
+    ? rtl.segment(points, { dim: 2, step: s.step, lowerBound: s.lowerBound, upperBound: s.upperBound })
+    : null;
   const t1 = performance.now();
-  const clusters = seg.clusters.map((c) => Array.from(c.indices));
+  const clusters = seg ? seg.clusters.map((c) => Array.from(c.indices)) : [];
 
   // Vectorization of each cluster big enough to be drawn as a cluster.
   const segments = [];
   let rmsSum = 0, rmsMax = 0, rmsCount = 0, vecPoints = 0;
   const t2 = performance.now();
-  clusters.forEach((idx, ci) => {
+  if (f.vectorize) clusters.forEach((idx, ci) => {
     if (idx.length < Math.max(2, s.minPoints)) return;
     const pts = gather(points, idx);
     const v = rtl.vectorize(pts, {
@@ -170,8 +200,8 @@ function compute() {
   let fitError = null;
   if (fitIdx.length >= 2) {
     try {
-      const f = rtl.fitLine(gather(points, fitIdx));
-      fit = { normal: [f.normal[0], f.normal[1]], offset: f.offset, rms: f.rms, n: fitIdx.length };
+      const line = rtl.fitLine(gather(points, fitIdx));
+      fit = { normal: [line.normal[0], line.normal[1]], offset: line.offset, rms: line.rms, n: fitIdx.length };
     } catch (e) {
       fitError = e.message;
     }
@@ -187,7 +217,7 @@ function compute() {
     validCount: valid.beams.length,
     pose: { x: scan.x, y: scan.y, theta: scan.theta },
     points,
-    labels: seg.labels,
+    labels: seg ? seg.labels : null,
     clusters,
     settings: s,
     fit,
@@ -309,8 +339,8 @@ function draw(r) {
     for (let i = 0; i < n; i++) {
       const x = r.points[2 * i], y = r.points[2 * i + 1];
       if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
-      const ci = r.labels[i];
-      ctx.fillStyle = ci >= 0 ? clusterColour(ci, sizeOf[ci], s) : GAP_COLOUR;
+      const ci = r.labels ? r.labels[i] : null;
+      ctx.fillStyle = ci === null ? '#334155' : ci >= 0 ? clusterColour(ci, sizeOf[ci], s) : GAP_COLOUR;
       ctx.beginPath(); ctx.arc(X(x), Y(y), rad, 0, 2 * Math.PI); ctx.fill();
     }
   }
@@ -350,9 +380,9 @@ function draw(r) {
   ctx.fillStyle = '#1c2330';
   ctx.beginPath(); ctx.moveTo(X(0) + sz, Y(0)); ctx.lineTo(X(0) - sz * 0.6, Y(0) - sz * 0.6); ctx.lineTo(X(0) - sz * 0.6, Y(0) + sz * 0.6); ctx.closePath(); ctx.fill();
 
-  canvas.setAttribute('aria-label',
-    `${DATASETS[r.dataset].label} scan ${r.scanIndex}: ${r.validCount} points in ${r.stats.clusterCount} clusters, ` +
-    `${r.stats.segmentCount} line segments (${s.method.toUpperCase()})` +
+  canvas.setAttribute('aria-label', `${DATASETS[r.dataset].label} scan ${r.scanIndex}: ${r.validCount} points` +
+    (r.labels ? ` in ${r.stats.clusterCount} clusters` : '') +
+    (state.features.vectorize ? `, ${r.stats.segmentCount} line segments (${s.method.toUpperCase()})` : '') +
     (r.fit ? `, fitted line RMS ${fmt(r.fit.rms * 1000, 1)} mm` : ''));
 }
 
@@ -371,14 +401,18 @@ function showNumbers(r) {
     $('fit-n').textContent = r.fitError ?? '–';
     $('fit-normal').textContent = $('fit-offset').textContent = $('fit-rms').textContent = '–';
   }
-  $('seg-count').textContent = `${r.stats.clusterCount} (${r.stats.drawnClusters} with ≥ ${r.settings.minPoints} pts)`;
-  $('seg-largest').textContent = `${r.stats.largest} points`;
   $('seg-gaps').textContent = `${r.stats.gaps} beams`;
-  $('seg-time').textContent = `${fmt(r.stats.segTimeMs, 2)} ms`;
-  $('vec-count').textContent = String(r.stats.segmentCount);
-  $('vec-ratio').textContent = r.stats.segmentCount ? fmt(r.stats.vecPoints / r.stats.segmentCount, 1) : '–';
-  $('vec-rms').textContent = Number.isFinite(r.stats.rmsMean) ? `${fmt(r.stats.rmsMean * 1000, 1)} / ${fmt(r.stats.rmsMax * 1000, 1)} mm` : '–';
-  $('vec-time').textContent = `${fmt(r.stats.vecTimeMs, 2)} ms`;
+  if (state.features.segment) {
+    $('seg-count').textContent = `${r.stats.clusterCount} (${r.stats.drawnClusters} with ≥ ${r.settings.minPoints} pts)`;
+    $('seg-largest').textContent = `${r.stats.largest} points`;
+    $('seg-time').textContent = `${fmt(r.stats.segTimeMs, 2)} ms`;
+  }
+  if (state.features.vectorize) {
+    $('vec-count').textContent = String(r.stats.segmentCount);
+    $('vec-ratio').textContent = r.stats.segmentCount ? fmt(r.stats.vecPoints / r.stats.segmentCount, 1) : '–';
+    $('vec-rms').textContent = Number.isFinite(r.stats.rmsMean) ? `${fmt(r.stats.rmsMean * 1000, 1)} / ${fmt(r.stats.rmsMax * 1000, 1)} mm` : '–';
+    $('vec-time').textContent = `${fmt(r.stats.vecTimeMs, 2)} ms`;
+  }
 }
 
 function expose(r) {
@@ -394,7 +428,9 @@ function expose(r) {
     settings: { ...r.settings, show: { ...r.settings.show } },
     fit: r.fit && { ...r.fit, source: r.fitSource, indices: r.fitIdx.slice() },
     fitError: r.fitError,
-    segmentation: {
+    features: { ...state.features },
+    version: state.rtl.version,
+    segmentation: r.labels && {
       clusterCount: r.stats.clusterCount,
       drawnClusters: r.stats.drawnClusters,
       largest: r.stats.largest,
@@ -407,14 +443,14 @@ function expose(r) {
       const v = state.view, rect = $('canvas').getBoundingClientRect();
       return { x: rect.left + v.X(r.points[2 * i]) * rect.width / v.W, y: rect.top + v.Y(r.points[2 * i + 1]) * rect.height / v.H };
     },
-    vectorization: {
+    vectorization: state.features.vectorize ? {
       method: r.settings.method,
       segmentCount: r.stats.segmentCount,
       segments: r.segments.map((s) => [s.x1, s.y1, s.x2, s.y2, s.cluster]),
       rmsMean: r.stats.rmsMean,
       rmsMax: r.stats.rmsMax,
       timeMs: r.stats.vecTimeMs,
-    },
+    } : null,
   };
 }
 
@@ -431,13 +467,20 @@ function update() {
       const scans = state.scans[state.dataset];
       $('scan').max = String(scans.length - 1);
       state.scanIndex = Math.min(Number($('scan').value), scans.length - 1);
+      // The beam window spans the whole scan after a data set change (the beam count can differ).
+      const lastBeam = scans[state.scanIndex].points.length / 2 - 1;
+      $('fit-from').max = $('fit-to').max = String(lastBeam);
+      if (state.wholeScan) { $('fit-from').value = '0'; $('fit-to').value = String(lastBeam); state.wholeScan = false; }
       const r = compute();
       state.result = r;
       draw(r);
       showNumbers(r);
       expose(r);
-      setStatus(`${DATASETS[r.dataset].label}, scan ${r.scanIndex}: ${r.stats.clusterCount} clusters, ` +
-        `${r.stats.segmentCount} segments by ${r.settings.method.toUpperCase()} in ${fmt(r.stats.segTimeMs + r.stats.vecTimeMs, 1)} ms.`);
+      const f = state.features;
+      setStatus(`${DATASETS[r.dataset].label}, scan ${r.scanIndex}: ` + (f.segment
+        ? `${r.stats.clusterCount} clusters, ` + (f.vectorize ? `${r.stats.segmentCount} segments by ${r.settings.method.toUpperCase()} ` : '') +
+          `in ${fmt(r.stats.segTimeMs + r.stats.vecTimeMs, 1)} ms.`
+        : `${r.validCount} returns` + (r.fit ? `, TLS line through ${r.fit.n} points, RMS ${fmt(r.fit.rms * 1000, 1)} mm.` : '.')));
     } catch (e) {
       setStatus(`Error: ${e.message}`, true);
       window.__rtl.errors.push(String(e.message));
@@ -539,7 +582,7 @@ function wireCanvas(canvas) {
 
 function onCanvasClick(ev) {
   const r = state.result, v = state.view;
-  if (!r || !v) return;
+  if (!r || !v || !r.labels) return;
   const rect = ev.currentTarget.getBoundingClientRect();
   const cx = (ev.clientX - rect.left) * (v.W / rect.width), cy = (ev.clientY - rect.top) * (v.H / rect.height);
   let best = -1, bestD = (12 * v.dpr) ** 2;
@@ -560,10 +603,36 @@ function onCanvasClick(ev) {
 }
 
 function resetFitWindow() {
-  const r = state.result;
   state.fitCluster = null;
-  $('fit-from').value = '0';
-  $('fit-to').value = String(r ? r.beams - 1 : 179);
+  state.wholeScan = true;   // update() sets the window to the beams of the scan it shows
+}
+
+// The page follows the package: parts whose functions this build lacks are disabled and say so.
+function applyFeatures() {
+  const rtl = state.rtl;
+  const has = (name) => typeof rtl[name] === 'function';
+  state.features = {
+    reader: has('readCarmenLog') || has('readCarmen'),
+    fitLine: has('fitLine'),
+    segment: has('segment'),
+    vectorize: has('vectorize'),
+    svg: has('toSvg'),
+    tikz: has('toTikz'),
+  };
+  const f = state.features;
+  const missing = (fieldset, what) => {
+    fieldset.disabled = true;
+    const note = document.createElement('p');
+    note.className = 'hint missing';
+    note.textContent = `${what} is not in this build of rtl-wasm (${rtl.version ?? 'unknown version'}).`;
+    fieldset.append(note);
+  };
+  if (!f.segment) missing($('seg-step').closest('fieldset'), 'Segmentation');
+  if (!f.vectorize) missing($('method').closest('fieldset'), 'Vectorization');
+  $('dl-svg').disabled = !f.svg;
+  $('dl-tikz').disabled = !f.tikz;
+  $('show-clusters').disabled = !f.segment;
+  $('show-segments').disabled = !f.vectorize;
 }
 
 async function main() {
@@ -575,6 +644,7 @@ async function main() {
     window.__rtl.errors.push(String(e.message));
     return;
   }
+  applyFeatures();
   for (const el of $('controls').querySelectorAll('input, select')) {
     el.addEventListener('input', () => {
       if (el.id === 'fit-from' || el.id === 'fit-to') state.fitCluster = null;

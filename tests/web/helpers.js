@@ -92,6 +92,20 @@ export function parseCarmen(text) {
   return scans;
 }
 
+// In these logs a beam without return reads the sensor's maximum (81.83 m Intel, 81.91 m CSAIL); real returns in the
+// excerpts are all below 20 m, so any cut between the two gives the same gaps.
+export const isReturn = (r) => r > 0 && r < 80;
+
+// Indices of the beams with a return in [from, to] (inclusive), and their robot-frame x,y.
+export function returnsOf(scan, from = 0, to = scan.n - 1) {
+  const beams = [];
+  for (let i = from; i <= to; i++) if (isReturn(scan.ranges[i])) beams.push(i);
+  return beams;
+}
+export function xyOf(scan, beams) {
+  return beams.flatMap((i) => [scan.ranges[i] * Math.cos(scan.angles[i]), scan.ranges[i] * Math.sin(scan.angles[i])]);
+}
+
 // Plain two-pass TLS in double precision: centroid, covariance, smaller eigenvalue and its eigenvector.
 export function tlsFit(xy) {
   const n = xy.length / 2;
