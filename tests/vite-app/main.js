@@ -1,0 +1,44 @@
+// A consumer app as a web developer writes it: a bare import of the installed package, bundled by `vite build`.
+// It fits a line to four points with a known answer and triggers one error, then publishes the outcome on
+// window.__result (and in the page) for the browser test.
+import init from 'rtl-wasm';
+
+// Points at t = -3, -1, 1, 3 along the direction u = (2, 1)/sqrt(5) through (1, 1.5), pushed off the line by
+// +d, -d, -d, +d along the normal: the offsets are uncorrelated with t, so the TLS line is exactly the original
+// line and the RMS orthogonal distance is exactly d.
+const s5 = Math.sqrt(5);
+const u = [2 / s5, 1 / s5];
+const n = [-1 / s5, 2 / s5];
+const d = 0.05;
+const points = new Float64Array([-3, -1, 1, 3].flatMap((t, i) => {
+  const o = i === 0 || i === 3 ? d : -d;
+  return [1 + t * u[0] + o * n[0], 1.5 + t * u[1] + o * n[1]];
+}));
+
+async function main() {
+  const rtl = await init();
+  const fit = rtl.fitLine(points);
+  let error = null;
+  try {
+    rtl.fitLine(new Float64Array([1, 2]));
+  } catch (e) {
+    error = { name: e.name, message: e.message };
+  }
+  const again = rtl.fitLine(points); // the module keeps working after an error
+  return {
+    version: rtl.version,
+    normal: Array.from(fit.normal),
+    offset: fit.offset,
+    rms: fit.rms,
+    count: fit.count,
+    error,
+    againRms: again.rms,
+  };
+}
+
+main().then(
+  (r) => { window.__result = r; },
+  (e) => { window.__result = { failure: `${e.name}: ${e.message}` }; },
+).finally(() => {
+  document.getElementById('out').textContent = JSON.stringify(window.__result, null, 2);
+});

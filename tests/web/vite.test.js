@@ -1,0 +1,79 @@
+// The package in a bundler: `npm pack` the repository, install the tarball into a fresh copy of the consumer app in
+// tests/vite-app/, build it with `vite build` (no plugins), serve the output and run it in headless Chromium.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { REPO, launchBrowser, resultsDir, startServer, watchConsole } from './helpers.js';
+
+const NPM_ENV = { ...process.env, npm_config_audit: 'false', npm_config_fund: 'false', npm_config_update_notifier: 'false' };
+
+function run(cmd, args, cwd) {
+  const r = spawnSync(cmd, args, { cwd, env: NPM_ENV, encoding: 'utf8', timeout: 180000 });
+  assert.equal(r.status, 0, `${cmd} ${args.join(' ')} failed (${r.status ?? r.signal}):\n${r.stdout}\n${r.stderr}`);
+  return r.stdout;
+}
+
+describe('Vite consumer app (tests/vite-app) built with vite build, run in Chromium', { timeout: 300000 }, () => {
+  let tmp, app, server, browser;
+
+  before(() => {
+    tmp = mkdtempSync(join(tmpdir(), 'rtl-vite-'));
+    app = join(tmp, 'app');
+    const packed = JSON.parse(run('npm', ['pack', '--json', '--pack-destination', tmp], REPO));
+    mkdirSync(app);
+    for (const f of ['index.html', 'main.js', 'vite.config.js']) cpSync(join(REPO, 'tests', 'vite-app', f), join(app, f));
+    writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'rtl-vite-consumer', private: true, type: 'module' }));
+    run('npm', ['install', '--offline', '--ignore-scripts', '--no-package-lock', join(tmp, packed[0].filename)], app);
+    // Vite itself comes from the repository's dev dependencies; the app only has the package.
+    run(process.execPath, [join(REPO, 'node_modules', 'vite', 'bin', 'vite.js'), 'build'], app);
+  });
+
+  after(async () => {
+    try { if (browser) await browser.close(); } finally {
+      if (server) await server.close();
+      if (tmp) rmSync(tmp, { recursive: true, force: true });
+    }
+  });
+
+  test('the build emits the package\'s .wasm unchanged as a hashed asset', () => {
+    const assets = readdirSync(join(app, 'dist', 'assets'));
+    const wasm = assets.filter((f) => f.endsWith('.wasm'));
+    assert.equal(wasm.length, 1, `assets: ${assets.join(', ')}`);
+    assert.match(wasm[0], /^rtl-[\w-]+\.wasm$/);
+    assert.ok(readFileSync(join(app, 'dist', 'assets', wasm[0])).equals(readFileSync(join(REPO, 'dist', 'rtl.wasm'))));
+    const js = assets.filter((f) => f.endsWith('.js'));
+    assert.ok(js.length >= 1);
+    assert.ok(js.some((f) => readFileSync(join(app, 'dist', 'assets', f), 'utf8').includes(wasm[0])), 'the bundle refers to the hashed .wasm');
+  });
+
+  test('the built app loads the module in Chromium and fits the known line', async () => {
+    server = await startServer({ root: join(app, 'dist') });
+    browser = await launchBrowser();
+    const page = browser.context.pages()[0] ?? await browser.context.newPage();
+    const problems = watchConsole(page);
+    const wasmResponses = [];
+    page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(r.headers()['content-type']); });
+    await page.goto(server.pageUrl);
+    await page.waitForFunction(() => window.__result !== undefined, null, { timeout: 30000 });
+    const r = await page.evaluate(() => window.__result);
+    await page.screenshot({ path: join(resultsDir(), 'vite-app.png') });
+    assert.equal(r.failure, undefined, r.failure);
+    const s5 = Math.sqrt(5);
+    const sign = Math.sign(r.normal[1]);             // the normal's sign is free: compare with (-1, 2)/sqrt(5)
+    assert.ok(Math.abs(sign * r.normal[0] + 1 / s5) < 1e-12, `normal ${r.normal}`);
+    assert.ok(Math.abs(sign * r.normal[1] - 2 / s5) < 1e-12, `normal ${r.normal}`);
+    // n . (1, 1.5) + c = 0  ->  c = -(-1 + 3)/sqrt(5)
+    assert.ok(Math.abs(sign * r.offset + 2 / s5) < 1e-12, `offset ${r.offset}`);
+    assert.ok(Math.abs(r.rms - 0.05) < 1e-12, `rms ${r.rms}`);
+    assert.equal(r.count, 4);
+    assert.equal(r.error?.name, 'RangeError');
+    assert.match(r.error.message, /fitLine/);
+    assert.equal(r.againRms, r.rms);
+    assert.deepEqual(wasmResponses, ['application/wasm'], 'one streaming-compilable .wasm request');
+    assert.deepEqual(problems, []);
+    assert.equal(r.version, JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
+  });
+});
