@@ -1,0 +1,108 @@
+// The demo page in headless Debian Chromium, first slice: it loads the package through the import map, reads a real
+// scan and fits a total-least-squares line; the numbers must match an independent fit done here in plain JavaScript.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import {
+  DATA, launchBrowser, parseCarmen, resultsDir, returnsOf, sameLine, startServer, tlsFit, watchConsole, xyOf,
+} from './helpers.js';
+
+const TIMEOUT = 30000;
+
+describe('demo page (web/index.html) in Chromium: scans and the TLS line fit', { timeout: 180000 }, () => {
+  let server, browser, page, problems;
+  const intel = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
+  const csail = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'));
+
+  before(async () => {
+    server = await startServer();
+    browser = await launchBrowser();
+    page = browser.context.pages()[0] ?? await browser.context.newPage();
+    problems = watchConsole(page);
+    await page.goto(server.pageUrl);
+    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
+  });
+
+  after(async () => {
+    try { if (browser) await browser.close(); } finally { if (server) await server.close(); }
+  });
+
+  // Waits until the page shows a result computed with all of the given settings.
+  async function settledWith(settings) {
+    await page.waitForFunction((want) => window.__rtl.settings &&
+      Object.entries(want).every(([k, v]) => window.__rtl.settings[k] === v), settings, { timeout: TIMEOUT });
+    return page.evaluate(() => window.__rtl);
+  }
+
+  test('loads the package and shows Intel scan 0 without errors', async () => {
+    const r = await page.evaluate(() => window.__rtl);
+    assert.deepEqual(r.errors, [], 'page errors');
+    assert.equal(r.ready, true);
+    assert.equal(r.features.fitLine, true);
+    assert.equal(typeof r.version, 'string');
+    assert.equal(r.dataset, 'intel');
+    assert.equal(r.scanIndex, 0);
+    assert.equal(r.beams, 180);
+    assert.equal(r.validCount, returnsOf(intel[0]).length);
+    assert.match(await page.textContent('#status'), /Intel Research Lab, scan 0/);
+    await page.screenshot({ path: join(resultsDir(), 'page-initial.png'), fullPage: true });
+  });
+
+  test('the whole-scan TLS line matches an independent fit of the same beams', async () => {
+    const r = await page.evaluate(() => window.__rtl);
+    const beams = returnsOf(intel[0]);
+    assert.ok(beams.length > 100, 'scan 0 has enough returns');
+    assert.deepEqual(r.fit.indices, beams);
+    const ref = tlsFit(xyOf(intel[0], beams));
+    assert.equal(r.fit.n, beams.length);
+    assert.ok(Math.abs(Math.hypot(...r.fit.normal) - 1) < 1e-9, 'unit normal');
+    assert.ok(sameLine(r.fit, ref, 1e-6), `page ${JSON.stringify(r.fit.normal)} ${r.fit.offset} vs ref ${JSON.stringify(ref.normal)} ${ref.offset}`);
+    assert.ok(Math.abs(r.fit.rms - ref.rms) < 1e-6, `rms ${r.fit.rms} vs ${ref.rms}`);
+    // The numbers shown to the user are the same ones.
+    assert.equal(await page.textContent('#fit-rms'), `${(ref.rms * 1000).toFixed(1)} mm`);
+    assert.equal(await page.textContent('#fit-n'), `${beams.length} (beams 0–179)`);
+  });
+
+  test('a beam window fits just those beams, and "Whole scan" restores the full fit', async () => {
+    const whole = (await page.evaluate(() => window.__rtl)).fit;
+    await page.fill('#fit-from', '10');
+    await page.fill('#fit-to', '60');
+    const r = await settledWith({ fitFrom: 10, fitTo: 60 });
+    const beams = returnsOf(intel[0], 10, 60);
+    assert.deepEqual(r.fit.indices, beams);
+    const ref = tlsFit(xyOf(intel[0], beams));
+    assert.ok(sameLine(r.fit, ref, 1e-6));
+    assert.ok(Math.abs(r.fit.rms - ref.rms) < 1e-6);
+    assert.ok(!sameLine(r.fit, whole, 1e-3), 'a different line than the whole scan');
+    await page.screenshot({ path: join(resultsDir(), 'page-window-10-60.png') });
+    await page.click('#fit-all');
+    const r2 = await settledWith({ fitFrom: 0, fitTo: 179 });
+    assert.equal(r2.fit.source, 'beams 0–179');
+    assert.ok(sameLine(r2.fit, whole, 1e-12));
+  });
+
+  test('switching to CSAIL (361 beams) and moving the scan slider recomputes', async () => {
+    await page.selectOption('#dataset', 'csail');
+    await page.waitForFunction(() => window.__rtl.dataset === 'csail', null, { timeout: TIMEOUT });
+    let r = await page.evaluate(() => window.__rtl);
+    assert.equal(r.beams, 361);
+    assert.equal(r.scanIndex, 0);
+    await page.fill('#scan', '7');
+    await page.waitForFunction(() => window.__rtl.dataset === 'csail' && window.__rtl.scanIndex === 7, null, { timeout: TIMEOUT });
+    r = await page.evaluate(() => window.__rtl);
+    const beams = returnsOf(csail[7]);
+    assert.deepEqual(r.fit.indices, beams);
+    const ref = tlsFit(xyOf(csail[7], beams));
+    assert.ok(sameLine(r.fit, ref, 1e-6));
+    assert.ok(Math.abs(r.fit.rms - ref.rms) < 1e-6);
+    assert.match(await page.textContent('#scan-info'), new RegExp(`361 beams, ${beams.length} returns`));
+    await page.screenshot({ path: join(resultsDir(), 'page-csail-7.png'), fullPage: true });
+  });
+
+  test('no console errors, failed requests or page errors during the session', async () => {
+    const r = await page.evaluate(() => window.__rtl);
+    assert.deepEqual(r.errors, []);
+    assert.deepEqual(problems, []);
+  });
+});
