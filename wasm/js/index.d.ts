@@ -28,11 +28,12 @@ export { init };
 export interface LineFitOptions { /** 2 (default) or 3 */ dim?: Dim }
 export interface LineFit2D {
   dim: 2;
-  /** unit normal (a, b) of the line a*x + b*y + c = 0 */
+  /** unit normal (a, b) of the line a*x + b*y + c = 0; oriented so that c <= 0 (it points from the origin
+   *  towards the line; for a line through the origin its first non-zero component is positive) */
   normal: Float64Array;
-  /** c of a*x + b*y + c = 0 (signed distance of the origin is -c) */
+  /** c of a*x + b*y + c = 0 (-c >= 0 is the distance of the line from the origin) */
   offset: number;
-  /** unit direction, (-b, a) rotated: normal = (-direction.y, direction.x) */
+  /** unit direction (b, -a), so that normal = (-direction.y, direction.x) */
   direction: Float64Array;
   /** centroid of the points (lies on the line) */
   centroid: Float64Array;
@@ -42,7 +43,7 @@ export interface LineFit2D {
 }
 export interface LineFit3D {
   dim: 3;
-  /** unit direction (largest principal axis) */
+  /** unit direction (largest principal axis), first non-zero component positive */
   direction: Float64Array;
   /** centroid of the points (lies on the line) */
   centroid: Float64Array;
@@ -258,4 +259,6 @@ export interface RTL {
   heapInUse(): number;
   /** bytes of wasm linear memory */
   memoryBytes(): number;
+  /** the wasm shadow-stack pointer (diagnostics: it is the same before and after every call, failing or not) */
+  stackPointer(): number;
 }

@@ -1,0 +1,32 @@
+// Shared helpers of the package tests (tests/js): tolerant comparisons and reference data.
+import assert from 'node:assert/strict';
+
+export function near(actual, expected, tol, what = 'value') {
+  assert.ok(Math.abs(actual - expected) <= tol, `${what}: ${actual} differs from ${expected} by more than ${tol}`);
+}
+
+export function nearArray(actual, expected, tol, what = 'array') {
+  assert.equal(actual.length, expected.length, `${what}: length`);
+  for (let i = 0; i < expected.length; i++) near(actual[i], expected[i], tol, `${what}[${i}]`);
+}
+
+// Points on the line y = 2x + 1, each one moved by +d and -d along the unit normal: the TLS line is exactly
+// -2x + y - 1 = 0 (normalised), the RMS orthogonal residual exactly d, the centroid (0, 1).
+export function offsetLinePoints(d = 0.05) {
+  const s = Math.sqrt(5);
+  const n = [-2 / s, 1 / s];
+  const xy = [];
+  for (let t = -4.5; t <= 4.5; t += 1) {
+    for (const k of [1, -1]) xy.push(t + k * d * n[0], 2 * t + 1 + k * d * n[1]);
+  }
+  return { xy: new Float64Array(xy), normal: n, offset: -1 / s, rms: d, centroid: [0, 1] };
+}
+
+// Assert that f() throws an error of class `type` whose message matches `re`.
+export function throwsWith(f, type, re) {
+  assert.throws(f, (e) => {
+    assert.equal(e.constructor, type, `expected ${type.name}, got ${e.constructor.name}: ${e.message}`);
+    assert.match(e.message, re);
+    return true;
+  });
+}

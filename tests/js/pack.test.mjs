@@ -1,0 +1,45 @@
+// `npm pack` gives a tarball that installs into an empty folder and works there from ESM and CommonJS.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const ROOT = resolve(fileURLToPath(new URL('../..', import.meta.url)));
+const npm = (args, cwd) => execFileSync('npm', args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+
+test('npm pack -> npm install into an empty folder -> import and require work', { timeout: 120_000 }, () => {
+  const dir = mkdtempSync(join(tmpdir(), 'rtl-pack-'));
+  try {
+    const out = JSON.parse(npm(['pack', '--json', '--pack-destination', dir], ROOT));
+    const files = out[0].files.map((f) => f.path);
+    for (const f of ['package.json', 'dist/index.mjs', 'dist/index.node.mjs', 'dist/index.cjs', 'dist/index.d.ts',
+      'dist/rtl.wasm', 'dist/rtl.mjs', 'dist/rtl.cjs', 'dist/api.mjs', 'dist/api.cjs']) {
+      assert.ok(files.includes(f), `tarball contains ${f}`);
+    }
+    assert.ok(!files.some((f) => f.startsWith('wasm/') || f.startsWith('tests/') || f.startsWith('include/')),
+      'tarball holds only the package files');
+    const app = join(dir, 'app');
+    execFileSync('mkdir', [app]);
+    writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', version: '1.0.0', private: true }));
+    npm(['install', '--no-audit', '--no-fund', '--offline', join(dir, out[0].filename)], app);
+    assert.ok(readdirSync(join(app, 'node_modules', 'rtl-wasm', 'dist')).includes('rtl.wasm'));
+    writeFileSync(join(app, 'esm.mjs'), `import init from 'rtl-wasm';
+      const r = await init(); const f = r.fitLine(new Float64Array([0, 2, 1, 2, 5, 2]));
+      console.log(JSON.stringify({ n: Array.from(f.normal), c: f.offset, v: r.version }));
+      try { r.fitLine([1]); } catch (e) { console.log(e.constructor.name); }`);
+    writeFileSync(join(app, 'cjs.cjs'), `require('rtl-wasm')().then((r) => {
+      const f = r.fitLine([0, 2, 1, 2, 5, 2]);
+      console.log(JSON.stringify({ n: Array.from(f.normal), c: f.offset, v: r.version }));
+      try { r.fitLine('x'); } catch (e) { console.log(e.constructor.name); } });`);
+    for (const [file, err] of [['esm.mjs', 'RangeError'], ['cjs.cjs', 'TypeError']]) {
+      const lines = execFileSync(process.execPath, [file], { cwd: app, encoding: 'utf8' }).trim().split('\n');
+      assert.deepEqual(JSON.parse(lines[0]), { n: [0, 1], c: -2, v: out[0].version }, file);
+      assert.equal(lines[1], err, file);
+    }
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});

@@ -1,0 +1,91 @@
+// Shared helpers of the embind adapter. Rules (see /work/shared/wasm-toolchain.md):
+//  * no C++ exception may cross into JS (it leaks the wasm stack): every binding runs inside guarded(), which turns
+//    an exception into a returned {error, kind} object that the JS layer rethrows as RangeError/TypeError/Error;
+//  * large arrays come in as (pointer, count) into the wasm heap, written by JS with HEAPF64.set;
+//  * results leave as JS typed arrays copied in C++, so JS never holds a view that memory growth could detach.
+#pragma once
+
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rtl_wasm {
+
+using emscripten::val;
+
+// An argument error whose JS counterpart is a TypeError (wrong kind of value, as opposed to a bad value).
+struct type_error : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+inline val errorValue(const char* kind, const char* message) {
+  val r = val::object();
+  r.set("error", val(std::string(message)));
+  r.set("kind", val(kind));
+  return r;
+}
+
+// Runs f() and returns its val; any exception becomes {error, kind} (kind: TypeError, RangeError or Error).
+template <class F>
+val guarded(F&& f) noexcept {
+  try {
+    return f();
+  } catch (const type_error& e) {
+    return errorValue("TypeError", e.what());
+  } catch (const std::invalid_argument& e) {
+    return errorValue("RangeError", e.what());
+  } catch (const std::out_of_range& e) {
+    return errorValue("RangeError", e.what());
+  } catch (const std::length_error& e) {
+    return errorValue("RangeError", e.what());
+  } catch (const std::bad_alloc&) {
+    return errorValue("RangeError", "out of wasm memory");
+  } catch (const std::exception& e) {
+    return errorValue("Error", e.what());
+  } catch (...) {
+    return errorValue("Error", "unknown C++ exception");
+  }
+}
+
+inline const double* doubles(std::uintptr_t p) { return reinterpret_cast<const double*>(p); }
+
+// Copies n numbers into a new JS typed array (the view is only used for the copy, inside this call).
+template <class T>
+val typedArray(const char* ctor, const T* data, std::size_t n) {
+  return val::global(ctor).new_(emscripten::typed_memory_view(n, data));
+}
+inline val f64(const double* d, std::size_t n) { return typedArray("Float64Array", d, n); }
+inline val f64(const std::vector<double>& v) { return f64(v.data(), v.size()); }
+inline val f32(const std::vector<float>& v) { return typedArray("Float32Array", v.data(), v.size()); }
+inline val u32(const std::vector<std::uint32_t>& v) { return typedArray("Uint32Array", v.data(), v.size()); }
+inline val i32(const std::vector<std::int32_t>& v) { return typedArray("Int32Array", v.data(), v.size()); }
+
+inline std::string str(std::size_t v) { return std::to_string(v); }
+
+// Checks an interleaved point array: a whole number of points, at least `minPoints`, all finite (unless gaps are
+// allowed, where a point with any NaN coordinate is a gap; +-Infinity is always rejected).
+inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::size_t dim, std::size_t minPoints,
+                        bool allowGaps) {
+  if (len % dim != 0)
+    throw std::invalid_argument(std::string(fn) + ": points has " + str(len) + " numbers, not a multiple of dim " +
+                                str(dim) + " (interleaved coordinates expected)");
+  const std::size_t n = len / dim;
+  if (n < minPoints)
+    throw std::invalid_argument(std::string(fn) + ": needs at least " + str(minPoints) + " points, got " + str(n));
+  for (std::size_t i = 0; i < len; ++i) {
+    const double v = xy[i];
+    if (std::isfinite(v)) continue;
+    if (std::isnan(v) && allowGaps) continue;
+    throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has a non-finite coordinate (" +
+                                (std::isnan(v) ? "NaN" : (v > 0 ? "Infinity" : "-Infinity")) + ") at index " + str(i));
+  }
+}
+
+}  // namespace rtl_wasm
