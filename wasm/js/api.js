@@ -76,6 +76,208 @@ function check(r) {
   return r;
 }
 
+
+// ------------------------------------------------------------------------------------------------ drawings
+// Cluster k is drawn in hsb(k * golden ratio mod 1, 0.8, 0.75): neighbouring labels get distant hues. The TikZ
+// export defines the same colours with \definecolor{ColorX}{hsb}{h,s,b}; unlabelled points are gray.
+const GOLDEN = 0.6180339887498949;
+function clusterHsb(k) { return [(k * GOLDEN) % 1, 0.8, 0.75]; }
+function hsbToHex([h, s, v]) {
+  const f = (n) => {
+    const k = (n + h * 6) % 6;
+    return Math.round(255 * (v - v * s * Math.max(0, Math.min(k, 4 - k, 1))));
+  };
+  return '#' + [f(5), f(3), f(1)].map((c) => c.toString(16).padStart(2, '0')).join('');
+}
+const UNLABELLED = '#808080';
+
+function fmt(v) {
+  // Fixed precision without trailing zeros (both TikZ and SVG): 1e-4 of a unit is below any drawing's resolution.
+  const s = (Math.round(v * 1e4) / 1e4).toFixed(4).replace(/\.?0+$/, '');
+  return s === '-0' ? '0' : s;
+}
+
+// Checks a drawing and returns {xy, labels, segs, title, n}; nothing is drawn for NaN points (gaps).
+function checkDrawing(d, fn) {
+  if (d === null || typeof d !== 'object' || Array.isArray(d) || ArrayBuffer.isView(d))
+    throw new TypeError(`${fn}: drawing must be an object {points, labels, segments, title}, got ${describe(d)}`);
+  for (const k of Object.keys(d)) {
+    if (!['points', 'labels', 'segments', 'title', 'standalone'].includes(k))
+      throw new TypeError(`${fn}: unknown drawing field "${k}" (known: points, labels, segments, title, standalone)`);
+  }
+  const xy = d.points === undefined ? new Float64Array(0) : toF64(d.points, fn, 'drawing.points');
+  if (xy.length % 2) throw new RangeError(`${fn}: drawing.points has ${xy.length} numbers, not a multiple of 2 (x,y interleaved)`);
+  for (let i = 0; i < xy.length; i++) {
+    if (!Number.isFinite(xy[i]) && !Number.isNaN(xy[i]))
+      throw new RangeError(`${fn}: drawing.points[${i}] is ${xy[i]} (only finite numbers, or NaN for a gap)`);
+  }
+  const n = xy.length / 2;
+  let labels = null;
+  if (d.labels !== undefined) {
+    labels = toF64(d.labels, fn, 'drawing.labels');
+    if (labels.length !== n) throw new RangeError(`${fn}: drawing.labels has ${labels.length} entries for ${n} points`);
+    for (let i = 0; i < n; i++) {
+      if (!Number.isInteger(labels[i]) || labels[i] < -1)
+        throw new RangeError(`${fn}: drawing.labels[${i}] is ${labels[i]}, expected an integer >= -1`);
+    }
+  }
+  const segs = d.segments === undefined ? new Float64Array(0) : toF64(d.segments, fn, 'drawing.segments');
+  if (segs.length % 4) throw new RangeError(`${fn}: drawing.segments has ${segs.length} numbers, not a multiple of 4 (x1,y1,x2,y2 per segment)`);
+  for (let i = 0; i < segs.length; i++) {
+    if (!Number.isFinite(segs[i])) throw new RangeError(`${fn}: drawing.segments[${i}] is ${segs[i]}, expected a finite number`);
+  }
+  if (d.title !== undefined && typeof d.title !== 'string') throw new TypeError(`${fn}: drawing.title must be a string, got ${describe(d.title)}`);
+  if (d.standalone !== undefined && typeof d.standalone !== 'boolean')
+    throw new TypeError(`${fn}: drawing.standalone must be a boolean, got ${describe(d.standalone)}`);
+  // Data bounds over finite points and segment ends.
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  const grow = (x, y) => {
+    if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+    if (x < minX) minX = x; if (x > maxX) maxX = x; if (y < minY) minY = y; if (y > maxY) maxY = y;
+  };
+  for (let i = 0; i < n; i++) grow(xy[2 * i], xy[2 * i + 1]);
+  for (let i = 0; i < segs.length; i += 2) grow(segs[i], segs[i + 1]);
+  if (minX > maxX) { minX = maxX = minY = maxY = 0; }
+  return { xy, labels, segs, n, title: d.title, bounds: { minX, minY, maxX, maxY } };
+}
+
+// One uniform scale (a scan must not be distorted) that fits the data range into w x h.
+function fitScale(b, w, h) {
+  const rx = b.maxX - b.minX, ry = b.maxY - b.minY;
+  const s = Math.min(rx > 0 ? w / rx : Infinity, ry > 0 ? h / ry : Infinity);
+  return Number.isFinite(s) ? s : 1;
+}
+
+function escapeXml(s) {
+  return s.replace(/[<>&"']/g, (c) => ({ '<': '&lt;', '>': '&gt;', '&': '&amp;', '"': '&quot;', "'": '&apos;' })[c]);
+}
+
+// LaTeX escaping as rtl::LaTeX::escapeLaTeXCharacters (rtl-api 4.2).
+function escapeLatex(s) {
+  let out = '';
+  for (const c of s) {
+    if ('&%$#_{}'.includes(c)) out += '\\' + c;
+    else if (c === '~') out += '\\textasciitilde ';
+    else if (c === '^') out += '\\textasciicircum ';
+    else if (c === '\\') out += '\\textbackslash ';
+    else if (c === '<' || c === '>') out += (out.endsWith('$') ? ' ' : '') + '$' + c + '$';
+    else out += c;
+  }
+  return out;
+}
+
+function toSvg(drawing, opts) {
+  const fn = 'toSvg';
+  const o = options(opts, fn, ['width', 'height', 'pointRadius']);
+  const W = num(o, 'width', fn, 800, { min: 1, max: 100000 });
+  const H = num(o, 'height', fn, 800, { min: 1, max: 100000 });
+  const r = num(o, 'pointRadius', fn, 2, { min: 0, max: 1000 });
+  const d = checkDrawing(drawing, fn);
+  const margin = Math.max(r, 1) + 4;
+  const top = d.title ? 24 : 0;
+  const b = d.bounds;
+  const s = fitScale(b, Math.max(W - 2 * margin, 1), Math.max(H - 2 * margin - top, 1));
+  const ox = (W - (b.maxX - b.minX) * s) / 2, oy = top + (H - top + (b.maxY - b.minY) * s) / 2;
+  const X = (x) => fmt(ox + (x - b.minX) * s), Y = (y) => fmt(oy - (y - b.minY) * s);  // SVG y points down
+  const out = [`<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" viewBox="0 0 ${W} ${H}">`];
+  if (d.title) out.push(`<title>${escapeXml(d.title)}</title>`,
+    `<text x="${fmt(W / 2)}" y="18" text-anchor="middle" font-family="sans-serif" font-size="14">${escapeXml(d.title)}</text>`);
+  // Points grouped by colour: one <g fill> per cluster.
+  const groups = new Map();
+  for (let i = 0; i < d.n; i++) {
+    const x = d.xy[2 * i], y = d.xy[2 * i + 1];
+    if (Number.isNaN(x) || Number.isNaN(y)) continue;
+    const k = d.labels ? d.labels[i] : -1;
+    if (!groups.has(k)) groups.set(k, []);
+    groups.get(k).push(`<circle cx="${X(x)}" cy="${Y(y)}" r="${fmt(r)}"/>`);
+  }
+  for (const k of [...groups.keys()].sort((a, b2) => a - b2)) {
+    const colour = k < 0 ? UNLABELLED : hsbToHex(clusterHsb(k));
+    out.push(`<g class="${k < 0 ? 'points' : 'cluster'}"${k < 0 ? '' : ` data-cluster="${k}"`} fill="${colour}">`, ...groups.get(k), '</g>');
+  }
+  if (d.segs.length) {
+    out.push('<g class="segments" stroke="#000000" stroke-width="1.5" stroke-linecap="round">');
+    for (let i = 0; i < d.segs.length; i += 4) {
+      out.push(`<line x1="${X(d.segs[i])}" y1="${Y(d.segs[i + 1])}" x2="${X(d.segs[i + 2])}" y2="${Y(d.segs[i + 3])}"/>`);
+    }
+    out.push('</g>');
+  }
+  out.push('</svg>');
+  return out.join('\n') + '\n';
+}
+
+// Generated names as in rtl::LaTeXTikz2D: the 0-based index with its decimal digits as letters (0 -> A, 11 -> BB).
+function latexName(prefix, i) { return prefix + String(i).replace(/[0-9]/g, (c) => 'ABCDEFGHIJ'[c]); }
+
+// TikZ with the conventions of rtl::LaTeXTikz2D (rtl/io/LaTeXTikz2D.h): minimal document with xcolor[rgb], tikz and
+// preview[active,tightpage]; the picture in data units scaled by xscale/yscale to the requested size; StyleX/.style
+// keys in the picture options; \definecolor{ColorX}{hsb}{...}; \pgfmathsetmacro \MaxX \MinX \MaxY \MinY
+// \MarkGlobalScaleX/Y \MarkRadius; points as \MarkX{x}{y}{rotation} dots of \MarkRadius cm whatever the scaling.
+// One difference: a single (uniform) scale, so that a scan keeps its shape.
+function toTikz(drawing, opts) {
+  const fn = 'toTikz';
+  const o = options(opts, fn, ['standalone', 'width', 'height', 'markRadius']);
+  if (o.standalone !== undefined && typeof o.standalone !== 'boolean')
+    throw new TypeError(`${fn}: option standalone must be a boolean, got ${describe(o.standalone)}`);
+  const W = num(o, 'width', fn, 12, { min: 0, exclusiveMin: true, max: 500 });
+  const H = num(o, 'height', fn, 12, { min: 0, exclusiveMin: true, max: 500 });
+  const markRadius = num(o, 'markRadius', fn, 0.03, { min: 0, max: 10 });
+  const d = checkDrawing(drawing, fn);
+  const standalone = o.standalone ?? drawing.standalone ?? true;
+  const b = d.bounds;
+  const sc = fitScale(b, W, H);
+
+  const styles = [], colours = [], marks = [], body = [];
+  const colourIndex = new Map();
+  const colour = (hsb) => {
+    const key = `{hsb}{${hsb.map((v) => fmt(v)).join(',')}}`;
+    if (!colourIndex.has(key)) { colourIndex.set(key, latexName('Color', colours.length)); colours.push(`\\definecolor{${colourIndex.get(key)}}${key}`); }
+    return colourIndex.get(key);
+  };
+  const style = (text) => { const name = latexName('Style', styles.length); styles.push(`${name}/.${text}`); return name; };
+  const mark = (styleName) => {
+    const name = '\\' + latexName('Mark', marks.length);
+    marks.push(`\\newcommand{${name}}[3]{\\begin{scope}[shift={(#1,#2)}, xscale=\\MarkGlobalScaleX, yscale=\\MarkGlobalScaleY, rotate=#3, scale=1] \\filldraw[${styleName}] (0,0) circle (\\MarkRadius); \\end{scope}}`);
+    return name;
+  };
+
+  const byLabel = new Map();
+  for (let i = 0; i < d.n; i++) {
+    const x = d.xy[2 * i], y = d.xy[2 * i + 1];
+    if (Number.isNaN(x) || Number.isNaN(y)) continue;
+    const k = d.labels ? d.labels[i] : -1;
+    if (!byLabel.has(k)) byLabel.set(k, []);
+    byLabel.get(k).push(`{${fmt(x)}}{${fmt(y)}}{0}`);
+  }
+  for (const k of [...byLabel.keys()].sort((a, c) => a - c)) {
+    const c = k < 0 ? colour([0, 0, 0.5]) : colour(clusterHsb(k));
+    const m = mark(style(`style={draw=${c},fill=${c},line width=0.1pt}`));
+    body.push(`% ${k < 0 ? 'points' : `cluster ${k}`}`, ...byLabel.get(k).map((a) => m + a));
+  }
+  if (d.segs.length) {
+    const st = style('style={draw=black,line width=0.6pt,line cap=round}');
+    body.push('% segments');
+    for (let i = 0; i < d.segs.length; i += 4) {
+      body.push(`\\draw[${st}] (${fmt(d.segs[i])},${fmt(d.segs[i + 1])}) -- (${fmt(d.segs[i + 2])},${fmt(d.segs[i + 3])});`);
+    }
+  }
+  if (d.title) body.push(`\\node[anchor=south] at (${fmt((b.minX + b.maxX) / 2)},${fmt(b.maxY)}) {${escapeLatex(d.title)}};`);
+
+  const pic = [
+    `\\begin{tikzpicture}[xscale=${fmt(sc)}, yscale=${fmt(sc)}${styles.map((t) => `,\n\t${t}`).join('')}]`,
+    ...colours,
+    `\\pgfmathsetmacro{\\MaxX}{${fmt(b.maxX)}}`, `\\pgfmathsetmacro{\\MinX}{${fmt(b.minX)}}`,
+    `\\pgfmathsetmacro{\\MaxY}{${fmt(b.maxY)}}`, `\\pgfmathsetmacro{\\MinY}{${fmt(b.minY)}}`,
+    `\\pgfmathsetmacro{\\MarkGlobalScaleX}{${1 / sc}}`, `\\pgfmathsetmacro{\\MarkGlobalScaleY}{${1 / sc}}`,
+    `\\pgfmathsetmacro{\\MarkRadius}{${fmt(markRadius)}}`,
+    ...marks, ...body, '\\end{tikzpicture}',
+  ].join('\n') + '\n';
+  if (!standalone) return pic;
+  return '\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n' +
+    '\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n' +
+    '\\setlength\\PreviewBorder{0.1cm}\n\n\\begin{document}\n' + pic + '\\end{document}\n';
+}
+
 // ------------------------------------------------------------------------------------------------ the module
 function wrap(m) {
   // Copies `arrays` (Float64Array) into the wasm heap, calls f(ptr0, len0, ptr1, len1, ...), frees them again.
@@ -107,6 +309,8 @@ function wrap(m) {
   return {
     version: VERSION,
     fitLine,
+    toSvg,
+    toTikz,
     heapInUse: () => m.heapInUse(),
     memoryBytes: () => m.memoryBytes(),
     stackPointer: () => m.stackPointer(),

@@ -124,25 +124,31 @@ export interface VectorizeResult {
 
 // ---------------------------------------------------------------------------------------------- drawings
 export interface Drawing {
-  /** 2D points (x,y interleaved) */
+  /** 2D points (x,y interleaved); NaN points (gaps) are not drawn */
   points?: PointArray;
-  /** cluster label per point (-1 = no cluster): clusters are coloured */
+  /** cluster label per point (integer, -1 = no cluster): cluster k is coloured hsb(k * 0.618 mod 1, 0.8, 0.75),
+   *  unlabelled points gray (the same colours in SVG and TikZ) */
   labels?: ArrayLike<number>;
-  /** line segments x1,y1,x2,y2,... */
+  /** line segments x1,y1,x2,y2,... (finite) */
   segments?: PointArray;
+  /** drawn above the picture (escaped for LaTeX / XML) */
   title?: string;
-  /** toTikz: a complete LaTeX document (default) or a bare tikzpicture (false); may also be given in the options */
+  /** toTikz: a complete LaTeX document (default) or a bare tikzpicture (false); the option wins if both are given */
   standalone?: boolean;
 }
+/** TikZ in the conventions of the C++ rtl::LaTeXTikz2D (minimal document + preview, StyleX/ColorX/MarkX names,
+ *  picture in data units scaled to the size); unlike it, one uniform scale so that scans keep their shape. */
 export interface TikzOptions {
   /** complete LaTeX document (default true) or only the tikzpicture */
   standalone?: boolean;
-  /** picture size in cm (default 12 x 12) */
+  /** picture size in cm (default 12 x 12; the data range is fitted inside, aspect kept) */
   width?: number;
   height?: number;
+  /** point mark radius in cm (default 0.03) */
+  markRadius?: number;
 }
 export interface SvgOptions {
-  /** pixels (default 800 x 800) */
+  /** pixels (default 800 x 800; the data range is fitted inside, aspect kept, y axis up) */
   width?: number;
   height?: number;
   /** point radius in pixels (default 2) */
