@@ -280,18 +280,23 @@ function toTikz(drawing, opts) {
 
 // ------------------------------------------------------------------------------------------------ the module
 function wrap(m) {
-  // Copies `arrays` (Float64Array) into the wasm heap, calls f(ptr0, len0, ptr1, len1, ...), frees them again.
-  // HEAPF64 is read after every _malloc: memory growth replaces the buffer and detaches older views.
+  // Copies `arrays` (Float64Array or Uint8Array) into the wasm heap, calls f(ptr0, len0, ptr1, len1, ...) with lengths
+  // in elements, frees them again. HEAP* views are read after every _malloc: memory growth replaces the buffer and
+  // detaches older views.
   function withHeap(arrays, f) {
     const ptrs = [];
     try {
       for (const a of arrays) {
-        const p = m._malloc(Math.max(8, a.length * 8));
-        if (!p) throw new RangeError(`out of wasm memory allocating ${a.length * 8} bytes`);
+        const p = m._malloc(Math.max(8, a.byteLength));
+        if (!p) throw new RangeError(`out of wasm memory allocating ${a.byteLength} bytes`);
         ptrs.push(p);
       }
       const args = [];
-      arrays.forEach((a, i) => { m.HEAPF64.set(a, ptrs[i] / 8); args.push(ptrs[i], a.length); });
+      arrays.forEach((a, i) => {
+        if (a instanceof Float64Array) m.HEAPF64.set(a, ptrs[i] / 8);
+        else m.HEAPU8.set(a, ptrs[i]);
+        args.push(ptrs[i], a.length);
+      });
       return check(f(...args));
     } finally {
       for (const p of ptrs) m._free(p);
@@ -306,11 +311,47 @@ function wrap(m) {
     return withHeap([xy], (p, n) => m.fitLine(p, n, dim));
   }
 
+  // Organised LiDAR: 16-byte little-endian float32 records x, y, z, intensity; (0,0,0) = no return (NaN point).
+  // The cloud is stored column-major whatever the file layout: beam b of column c is point c * beams + b.
+  function readOrganizedLidar(data, opts) {
+    const fn = 'readOrganizedLidar';
+    let u8;
+    if (data instanceof ArrayBuffer) u8 = new Uint8Array(data);
+    else if (ArrayBuffer.isView(data)) u8 = new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
+    else throw new TypeError(`${fn}: data must be an ArrayBuffer or a typed array / DataView / Buffer, got ${describe(data)}`);
+    if (opts === undefined) throw new TypeError(`${fn}: options {beams} are required`);
+    const o = options(opts, fn, ['beams', 'layout']);
+    if (o.beams === undefined) throw new TypeError(`${fn}: option beams is required`);
+    const beams = num(o, 'beams', fn, 0, { min: 1, integer: true, max: 1 << 20 });
+    const layout = o.layout ?? 'column-major';
+    if (typeof layout !== 'string') throw new TypeError(`${fn}: option layout must be a string, got ${describe(layout)}`);
+    if (layout !== 'column-major' && layout !== 'row-major')
+      throw new RangeError(`${fn}: option layout must be 'column-major' or 'row-major', got '${layout}'`);
+    const r = withHeap([u8], (p, n) => m.readOrganizedLidar(p, n, beams, layout === 'row-major' ? 1 : 0));
+    const { columns, points } = r;
+    return {
+      beams, columns, points, intensity: r.intensity,
+      ring(b) {
+        if (typeof b !== 'number') throw new TypeError(`ring: beam must be a number, got ${describe(b)}`);
+        if (!Number.isInteger(b) || b < 0 || b >= beams) throw new RangeError(`ring: beam must be an integer in [0, ${beams - 1}], got ${b}`);
+        const out = new Float64Array(3 * columns);
+        for (let c = 0; c < columns; c++) out.set(points.subarray(3 * (c * beams + b), 3 * (c * beams + b) + 3), 3 * c);
+        return out;
+      },
+      column(c) {
+        if (typeof c !== 'number') throw new TypeError(`column: c must be a number, got ${describe(c)}`);
+        if (!Number.isInteger(c) || c < 0 || c >= columns) throw new RangeError(`column: c must be an integer in [0, ${columns - 1}], got ${c}`);
+        return points.slice(3 * c * beams, 3 * (c + 1) * beams);
+      },
+    };
+  }
+
   return {
     version: VERSION,
     fitLine,
     toSvg,
     toTikz,
+    readOrganizedLidar,
     heapInUse: () => m.heapInUse(),
     memoryBytes: () => m.memoryBytes(),
     stackPointer: () => m.stackPointer(),

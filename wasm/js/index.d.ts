@@ -176,8 +176,10 @@ export interface OrganizedLidarOptions {
 export interface OrganizedCloud {
   beams: number;
   columns: number;
-  /** x,y,z per point in file order; no-return points (0,0,0) are NaN */
+  /** x,y,z per point, column-major whatever the file layout: beam b of column c is point c * beams + b;
+   *  no-return points (0,0,0 in the file) are NaN */
   points: Float64Array;
+  /** per point, in the same order as points */
   intensity: Float32Array;
   /** the points of one beam over all columns (x,y,z interleaved) */
   ring(beam: number): Float64Array;

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <streambuf>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +46,8 @@ val guarded(F&& f) noexcept {
     return errorValue("RangeError", e.what());
   } catch (const std::length_error& e) {
     return errorValue("RangeError", e.what());
+  } catch (const std::runtime_error& e) {  // the library's readers: malformed input data
+    return errorValue("RangeError", e.what());
   } catch (const std::bad_alloc&) {
     return errorValue("RangeError", "out of wasm memory");
   } catch (const std::exception& e) {
@@ -55,6 +58,15 @@ val guarded(F&& f) noexcept {
 }
 
 inline const double* doubles(std::uintptr_t p) { return reinterpret_cast<const double*>(p); }
+inline const char* bytes(std::uintptr_t p) { return reinterpret_cast<const char*>(p); }
+
+// A read-only std::istream source over bytes already in the wasm heap (no copy).
+struct MemoryBuffer : std::streambuf {
+  MemoryBuffer(const char* p, std::size_t n) {
+    char* b = const_cast<char*>(p);  // streambuf wants char*; nothing writes through it
+    setg(b, b, b + n);
+  }
+};
 
 // Copies n numbers into a new JS typed array (the view is only used for the copy, inside this call).
 template <class T>
