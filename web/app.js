@@ -73,6 +73,7 @@ function readSettings() {
       clusters: $('show-clusters').checked,
       segments: $('show-segments').checked,
       fit: $('show-fit').checked,
+      residuals: $('show-residuals').checked,
     },
   };
 }
@@ -201,7 +202,10 @@ function compute() {
   if (fitIdx.length >= 2) {
     try {
       const line = rtl.fitLine(gather(points, fitIdx));
-      fit = { normal: [line.normal[0], line.normal[1]], offset: line.offset, rms: line.rms, n: fitIdx.length };
+      fit = {
+        normal: [line.normal[0], line.normal[1]], offset: line.offset, rms: line.rms, n: fitIdx.length,
+        centroid: [line.centroid[0], line.centroid[1]],
+      };
     } catch (e) {
       fitError = e.message;
     }
@@ -373,6 +377,19 @@ function draw(r) {
     ctx.setLineDash([]);
     ctx.strokeStyle = '#c81e3c'; ctx.lineWidth = 2.6 * dpr;
     ctx.beginPath(); ctx.moveTo(X(px + tMin * dx), Y(py + tMin * dy)); ctx.lineTo(X(px + tMax * dx), Y(py + tMax * dy)); ctx.stroke();
+    // Orthogonal residuals: what TLS minimises (the sum of their squares), drawn from each point to its foot.
+    if (s.show.residuals) {
+      ctx.strokeStyle = 'rgba(200, 30, 60, 0.7)'; ctx.lineWidth = 1 * dpr;
+      ctx.beginPath();
+      for (const k of r.fitIdx) {
+        const x = r.points[2 * k], y = r.points[2 * k + 1], d = nx * x + ny * y + c;
+        ctx.moveTo(X(x), Y(y)); ctx.lineTo(X(x - d * nx), Y(y - d * ny));
+      }
+      ctx.stroke();
+    }
+    // The centroid, through which every TLS line passes.
+    ctx.fillStyle = '#c81e3c';
+    ctx.beginPath(); ctx.arc(X(r.fit.centroid[0]), Y(r.fit.centroid[1]), 4.5 * dpr, 0, 2 * Math.PI); ctx.fill();
   }
 
   // The sensor: a triangle at the origin pointing along +x (the robot's heading).
@@ -397,9 +414,10 @@ function showNumbers(r) {
     $('fit-normal').textContent = `(${fmt(r.fit.normal[0], 4)}, ${fmt(r.fit.normal[1], 4)})`;
     $('fit-offset').textContent = `${fmt(r.fit.offset, 4)} m`;
     $('fit-rms').textContent = `${fmt(r.fit.rms * 1000, 1)} mm`;
+    $('fit-centroid').textContent = `(${fmt(r.fit.centroid[0], 3)}, ${fmt(r.fit.centroid[1], 3)}) m`;
   } else {
     $('fit-n').textContent = r.fitError ?? '–';
-    $('fit-normal').textContent = $('fit-offset').textContent = $('fit-rms').textContent = '–';
+    for (const id of ['fit-normal', 'fit-offset', 'fit-rms', 'fit-centroid']) $(id).textContent = '–';
   }
   $('seg-gaps').textContent = `${r.stats.gaps} beams`;
   if (state.features.segment) {
@@ -493,12 +511,26 @@ function update() {
 
 function drawing(r) {
   const s = r.settings;
-  const drawn = r.clusters.filter((c) => c.length >= s.minPoints);
+  const segs = r.segments.flatMap((g) => [g.x1, g.y1, g.x2, g.y2]);
+  // The fitted line, as drawn: between the projections of its first and last point.
+  if (r.fit && s.show.fit) {
+    const [nx, ny] = r.fit.normal, [cx, cy] = r.fit.centroid, dx = -ny, dy = nx;
+    let tMin = Infinity, tMax = -Infinity;
+    for (const k of r.fitIdx) {
+      const t = (r.points[2 * k] - cx) * dx + (r.points[2 * k + 1] - cy) * dy;
+      tMin = Math.min(tMin, t); tMax = Math.max(tMax, t);
+    }
+    segs.push(cx + tMin * dx, cy + tMin * dy, cx + tMax * dx, cy + tMax * dy);
+  }
+  const parts = [`${DATASETS[r.dataset].label} scan ${r.scanIndex}`];
+  if (r.labels) parts.push(`${r.clusters.filter((c) => c.length >= s.minPoints).length} clusters`);
+  if (state.features.vectorize) parts.push(`${r.segments.length} segments (${s.method.toUpperCase()})`);
+  if (r.fit && s.show.fit) parts.push(`TLS line through ${r.fit.n} points, RMS ${fmt(r.fit.rms * 1000, 1)} mm`);
   return {
     points: r.points,
-    labels: r.labels,
-    segments: new Float64Array(r.segments.flatMap((g) => [g.x1, g.y1, g.x2, g.y2])),
-    title: `${DATASETS[r.dataset].label} scan ${r.scanIndex}, ${drawn.length} clusters, ${r.segments.length} segments (${s.method.toUpperCase()})`,
+    ...(r.labels && s.show.clusters ? { labels: r.labels } : {}),
+    segments: new Float64Array(segs),
+    title: parts.join(', '),
   };
 }
 
@@ -633,6 +665,7 @@ function applyFeatures() {
   $('dl-tikz').disabled = !f.tikz;
   $('show-clusters').disabled = !f.segment;
   $('show-segments').disabled = !f.vectorize;
+  $('fit-tip').hidden = !f.segment;
 }
 
 async function main() {

@@ -115,6 +115,26 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     assert.equal(col.source.column, 100);
   });
 
+  test('--fit as SVG (stdout) and as TikZ (a tikzpicture, or a standalone document with -o)', () => {
+    let r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'svg']);
+    assert.equal(r.code, 0, r.err);
+    const scan = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'))[3];
+    assert.match(r.out, /^<svg[\s>]/);
+    assert.match(r.out, /<\/svg>\s*$/);
+    assert.match(r.out, /<title>tests\/data\/csail\.log<\/title>/);
+    assert.equal(r.out.match(/<circle /g).length, returnsOf(scan).length, 'one dot per return');
+    assert.equal(r.out.match(/<line /g).length, 1, 'the fitted line');
+    r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'tikz']);
+    assert.equal(r.code, 0, r.err);
+    assert.doesNotMatch(r.out, /\\documentclass/);
+    assert.match(r.out, /\\begin\{tikzpicture\}[\s\S]*\\end\{tikzpicture\}\s*$/);
+    const out = join(tmp, 'fit.tex');
+    r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'tikz', '--standalone', '-o', out]);
+    assert.equal(r.code, 0, r.err);
+    assert.equal(r.out, '');
+    assert.match(readFileSync(out, 'utf8'), /^\\documentclass[\s\S]*\\begin\{tikzpicture\}[\s\S]*\\end\{document\}\s*$/);
+  });
+
   test('reads points from standard input with --type', () => {
     const r = rtl(['-', '--type', 'csv', '--fit'], '0 0\n1 1\n2 2\n3 3\n');
     assert.equal(r.code, 0, r.err);
@@ -137,6 +157,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     [['tests/data/intel.log', '-f', 'pdf'], 2, /--format must be one of json, svg, tikz/],
     [['tests/data/intel.log', '--beams', '4'], 2, /--beams applies to binary scans only/],
     [['tests/data/intel.log', '--standalone'], 2, /--standalone applies to --format tikz only/],
+    [['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--fit', '-f', 'svg'], 2, /--format svg draws 2D data only/],
     [['points.dat'], 2, /cannot tell the input type.*--type/],
     [['tests/data/rellis3d-os1-4x2048.bin'], 2, /needs --beams/],
     [['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '1', '--column', '2'], 2, /either --ring or --column/],

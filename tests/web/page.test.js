@@ -59,9 +59,27 @@ describe('demo page (web/index.html) in Chromium: scans and the TLS line fit', {
     assert.ok(Math.abs(Math.hypot(...r.fit.normal) - 1) < 1e-9, 'unit normal');
     assert.ok(sameLine(r.fit, ref, 1e-6), `page ${JSON.stringify(r.fit.normal)} ${r.fit.offset} vs ref ${JSON.stringify(ref.normal)} ${ref.offset}`);
     assert.ok(Math.abs(r.fit.rms - ref.rms) < 1e-6, `rms ${r.fit.rms} vs ${ref.rms}`);
+    assert.ok(Math.hypot(r.fit.centroid[0] - ref.centroid[0], r.fit.centroid[1] - ref.centroid[1]) < 1e-9, 'centroid');
     // The numbers shown to the user are the same ones.
     assert.equal(await page.textContent('#fit-rms'), `${(ref.rms * 1000).toFixed(1)} mm`);
     assert.equal(await page.textContent('#fit-n'), `${beams.length} (beams 0–179)`);
+    // The residuals (what TLS minimises) can be drawn: more red pixels on the canvas than without them.
+    const redPixels = () => page.evaluate(() => {
+      const c = document.getElementById('canvas');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i] > 150 && d[i + 1] < 110 && d[i + 2] < 130) n++;
+      return n;
+    });
+    const without = await redPixels();
+    const rev = (await page.evaluate(() => window.__rtl)).revision;
+    await page.check('#show-residuals');
+    await page.waitForFunction((v) => window.__rtl.revision > v && window.__rtl.settings.show.residuals, rev, { timeout: TIMEOUT });
+    const withResiduals = await redPixels();
+    assert.ok(withResiduals > without * 1.05, `red pixels ${withResiduals} with residuals vs ${without}`);
+    await page.screenshot({ path: join(resultsDir(), 'page-residuals.png') });
+    await page.uncheck('#show-residuals');
+    await page.waitForFunction(() => !window.__rtl.settings.show.residuals, null, { timeout: TIMEOUT });
   });
 
   test('a beam window fits just those beams, and "Whole scan" restores the full fit', async () => {
@@ -98,6 +116,23 @@ describe('demo page (web/index.html) in Chromium: scans and the TLS line fit', {
     assert.ok(Math.abs(r.fit.rms - ref.rms) < 1e-6);
     assert.match(await page.textContent('#scan-info'), new RegExp(`361 beams, ${beams.length} returns`));
     await page.screenshot({ path: join(resultsDir(), 'page-csail-7.png'), fullPage: true });
+  });
+
+  test('SVG and TikZ downloads of the figure come from the package exporters', async () => {
+    const r = await page.evaluate(() => window.__rtl);       // CSAIL scan 7 after the previous test
+    const [svgDl] = await Promise.all([page.waitForEvent('download'), page.click('#dl-svg')]);
+    assert.equal(svgDl.suggestedFilename(), 'rtl-csail-7.svg');
+    const svg = readFileSync(await svgDl.path(), 'utf8');
+    assert.match(svg, /^<svg[\s>]/);
+    assert.match(svg, /<\/svg>\s*$/);
+    assert.match(svg, /<title>MIT CSAIL scan 7, [^<]*TLS line through \d+ points/);
+    assert.equal(svg.match(/<circle /g).length, r.validCount, 'one dot per return');
+    assert.equal(svg.match(/<line /g).length, 1, 'the fitted line');
+    const [texDl] = await Promise.all([page.waitForEvent('download'), page.click('#dl-tikz')]);
+    assert.equal(texDl.suggestedFilename(), 'rtl-csail-7.tex');
+    const tex = readFileSync(await texDl.path(), 'utf8');
+    assert.match(tex, /\\documentclass/);
+    assert.match(tex, /\\begin\{tikzpicture\}[\s\S]*\\end\{tikzpicture\}[\s\S]*\\end\{document\}/);
   });
 
   test('no console errors, failed requests or page errors during the session', async () => {
