@@ -25,7 +25,14 @@ async function main() {
     error = { name: e.name, message: e.message };
   }
   const again = rtl.fitLine(points); // the module keeps working after an error
+  // The package's SVG exporter draws the points and the fitted line (between the outer points' projections).
+  const [c, dir] = [fit.centroid, fit.direction];
+  const end = (t) => [c[0] + t * dir[0], c[1] + t * dir[1]];
+  const svg = rtl.toSvg({ points, segments: [...end(-3), ...end(3)], title: 'TLS line' }, { width: 400, height: 300 });
+  document.getElementById('figure').innerHTML = svg;
   return {
+    svgCircles: document.querySelectorAll('#figure svg circle').length,
+    svgLines: document.querySelectorAll('#figure svg line').length,
     version: rtl.version,
     normal: Array.from(fit.normal),
     offset: fit.offset,

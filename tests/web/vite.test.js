@@ -1,14 +1,59 @@
 // The package in a bundler: `npm pack` the repository, install the tarball into a fresh copy of the consumer app in
-// tests/vite-app/, build it with `vite build` (no plugins), serve the output and run it in headless Chromium.
+// tests/vite-app/, build it with `vite build` (no plugins), serve the output and run it in headless Chromium; then the
+// same app under the Vite dev server with the one setting the README gives (optimizeDeps.exclude).
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync, spawnSync } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
+import { createServer } from 'node:net';
 import { cpSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { REPO, launchBrowser, resultsDir, startServer, watchConsole } from './helpers.js';
 
 const NPM_ENV = { ...process.env, npm_config_audit: 'false', npm_config_fund: 'false', npm_config_update_notifier: 'false' };
+
+const VITE = join(REPO, 'node_modules', 'vite', 'bin', 'vite.js');
+
+function freePort() {
+  return new Promise((res, rej) => {
+    const srv = createServer().once('error', rej).listen(0, '127.0.0.1', () => {
+      const { port } = srv.address();
+      srv.close(() => res(port));
+    });
+  });
+}
+
+// Opens the app, waits for its result and checks it: the known line, the error path, the SVG, no console errors.
+async function checkApp(browser, url, shot) {
+  const page = await browser.context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console.error: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  const wasmResponses = [];
+  page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(`${r.status()} ${r.headers()['content-type']}`); });
+  await page.goto(url);
+  await page.waitForFunction(() => window.__result !== undefined, null, { timeout: 60000 });
+  const r = await page.evaluate(() => window.__result);
+  await page.screenshot({ path: join(resultsDir(), shot) });
+  await page.close();
+  assert.equal(r.failure, undefined, r.failure);
+  const s5 = Math.sqrt(5);
+  const sign = Math.sign(r.normal[1]);             // the normal's sign is free: compare with (-1, 2)/sqrt(5)
+  assert.ok(Math.abs(sign * r.normal[0] + 1 / s5) < 1e-12, `normal ${r.normal}`);
+  assert.ok(Math.abs(sign * r.normal[1] - 2 / s5) < 1e-12, `normal ${r.normal}`);
+  // n . (1, 1.5) + c = 0  ->  c = -(-1 + 3)/sqrt(5)
+  assert.ok(Math.abs(sign * r.offset + 2 / s5) < 1e-12, `offset ${r.offset}`);
+  assert.ok(Math.abs(r.rms - 0.05) < 1e-12, `rms ${r.rms}`);
+  assert.equal(r.count, 4);
+  assert.equal(r.error?.name, 'RangeError');
+  assert.match(r.error.message, /fitLine/);
+  assert.equal(r.againRms, r.rms);
+  assert.equal(r.svgCircles, 4);
+  assert.equal(r.svgLines, 1);
+  assert.deepEqual(wasmResponses, ['200 application/wasm'], 'one streaming-compilable .wasm request');
+  assert.deepEqual(problems, []);
+  assert.equal(r.version, JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
+}
 
 function run(cmd, args, cwd) {
   const r = spawnSync(cmd, args, { cwd, env: NPM_ENV, encoding: 'utf8', timeout: 180000 });
@@ -28,7 +73,7 @@ describe('Vite consumer app (tests/vite-app) built with vite build, run in Chrom
     writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'rtl-vite-consumer', private: true, type: 'module' }));
     run('npm', ['install', '--offline', '--ignore-scripts', '--no-package-lock', join(tmp, packed[0].filename)], app);
     // Vite itself comes from the repository's dev dependencies; the app only has the package.
-    run(process.execPath, [join(REPO, 'node_modules', 'vite', 'bin', 'vite.js'), 'build'], app);
+    run(process.execPath, [VITE, 'build'], app);
   });
 
   after(async () => {
@@ -52,28 +97,31 @@ describe('Vite consumer app (tests/vite-app) built with vite build, run in Chrom
   test('the built app loads the module in Chromium and fits the known line', async () => {
     server = await startServer({ root: join(app, 'dist') });
     browser = await launchBrowser();
-    const page = browser.context.pages()[0] ?? await browser.context.newPage();
-    const problems = watchConsole(page);
-    const wasmResponses = [];
-    page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(r.headers()['content-type']); });
-    await page.goto(server.pageUrl);
-    await page.waitForFunction(() => window.__result !== undefined, null, { timeout: 30000 });
-    const r = await page.evaluate(() => window.__result);
-    await page.screenshot({ path: join(resultsDir(), 'vite-app.png') });
-    assert.equal(r.failure, undefined, r.failure);
-    const s5 = Math.sqrt(5);
-    const sign = Math.sign(r.normal[1]);             // the normal's sign is free: compare with (-1, 2)/sqrt(5)
-    assert.ok(Math.abs(sign * r.normal[0] + 1 / s5) < 1e-12, `normal ${r.normal}`);
-    assert.ok(Math.abs(sign * r.normal[1] - 2 / s5) < 1e-12, `normal ${r.normal}`);
-    // n . (1, 1.5) + c = 0  ->  c = -(-1 + 3)/sqrt(5)
-    assert.ok(Math.abs(sign * r.offset + 2 / s5) < 1e-12, `offset ${r.offset}`);
-    assert.ok(Math.abs(r.rms - 0.05) < 1e-12, `rms ${r.rms}`);
-    assert.equal(r.count, 4);
-    assert.equal(r.error?.name, 'RangeError');
-    assert.match(r.error.message, /fitLine/);
-    assert.equal(r.againRms, r.rms);
-    assert.deepEqual(wasmResponses, ['application/wasm'], 'one streaming-compilable .wasm request');
-    assert.deepEqual(problems, []);
-    assert.equal(r.version, JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
+    await checkApp(browser, server.pageUrl, 'vite-app-build.png');
+  });
+
+  test('the same app works under the Vite dev server (optimizeDeps.exclude from the README)', async () => {
+    const port = await freePort();
+    // Started with node directly (npx would leave a child running); stopped by PID below.
+    const dev = spawn(process.execPath, [VITE, '--host', '127.0.0.1', '--port', String(port), '--strictPort'],
+      { cwd: app, stdio: ['ignore', 'pipe', 'pipe'] });
+    let log = '';
+    dev.stdout.on('data', (d) => { log += d; });
+    dev.stderr.on('data', (d) => { log += d; });
+    const stopped = new Promise((res) => dev.once('exit', res));
+    try {
+      const url = `http://127.0.0.1:${port}/`;
+      const deadline = Date.now() + 60000;
+      for (;;) {
+        try { if ((await fetch(url)).ok) break; } catch { /* not listening yet */ }
+        assert.ok(Date.now() < deadline && dev.exitCode === null, `vite dev server did not start:\n${log}`);
+        await new Promise((r) => setTimeout(r, 200));
+      }
+      browser ??= await launchBrowser();
+      await checkApp(browser, url, 'vite-app-dev.png');
+    } finally {
+      dev.kill('SIGTERM');
+      await stopped;
+    }
   });
 });
