@@ -1,0 +1,255 @@
+// CAR_Segmenter (Cyclic, Adaptive, Retroactive): batch segmentation of one closed, ordered scan of a rotating
+// LiDAR into clusters of nearby points.
+//
+// loadData(points, origin) treats the scan as a closed loop of N points. Point i joins an earlier point j when
+// i - j <= step (cyclically across the seam, N - 1 -> 0) and |p_i - p_j| <= t_i, where
+//     t_i = clamp((step * 2 pi / N) * |p_i - origin|, lower_bound, upper_bound)
+// (seg/ProximityCriterion.h). Clusters are the connected components of that relation: merging is complete, so no
+// two points meeting the criterion end up in different clusters. Points with a NaN (or infinite) coordinate are gaps
+// and belong to no cluster; they still occupy their index. Each cluster lists its points in increasing scan order,
+// with at most step - 1 indices skipped between consecutive points; a cluster that wraps the seam starts with its
+// end-of-scan part. grabCluster() hands clusters out in the order of their smallest index.
+//
+// Bad input: step 0 is treated as 1; an empty scan gives no cluster; loadData throws std::invalid_argument unless
+// 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 1, bounds [0, +inf).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <list>
+#include <map>
+#include <vector>
+
+#include "rtl/core/VectorND.h"
+#include "rtl/seg/ProximityCriterion.h"
+
+namespace rtl
+{
+    template<class Vector>
+    class CAR_Segmenter
+    {
+    public:
+        typedef typename Vector::ElementType ElementType;
+        typedef Vector VectorType;
+
+        CAR_Segmenter() = default;
+        CAR_Segmenter(size_t step, ElementType lower_bound, ElementType upper_bound)
+            : step_(step == 0 ? 1 : step), lower_(lower_bound), upper_(upper_bound) {}
+        ~CAR_Segmenter() = default;
+
+        void setStepSize(size_t step) { step_ = step == 0 ? 1 : step; }
+        void setLowerBound(ElementType lb) { lower_ = lb; }
+        void setUpperBound(ElementType ub) { upper_ = ub; }
+
+        //! Reserves the work buffers for scans of up to max_size points. Optional: larger scans grow them as needed.
+        void setMaxSize(size_t max_size)
+        {
+            flags_.reserve(max_size);
+            if (step_ > 1)
+            {
+                tsq_.reserve(max_size);
+                parent_.reserve(max_size);
+            }
+        }
+
+        [[nodiscard]] size_t clustersAvailable() const { return clusters_.size() - next_; }
+
+        //! Segments a closed scan, replacing any clusters not grabbed yet.
+        void loadData(const std::vector<VectorType> &points, const VectorType &origin = VectorType::zeros())
+        {
+            seg_detail::checkParameters<ElementType>("CAR_Segmenter::loadData", lower_, upper_,
+                                                     seg_detail::isFinite<D>(origin.data().data()));
+            clusters_.clear();
+            next_ = 0;
+            if (points.empty()) return;
+            const ElementType scaling = seg_detail::circularScaling<ElementType>(step_, points.size());
+            if (step_ == 1) segmentNeighbours(points, origin, scaling);
+            else segmentWindow(points, origin, scaling);
+        }
+
+        //! Removes and returns the next cluster (never empty); an empty vector when none is left.
+        std::vector<VectorType> grabCluster()
+        {
+            if (next_ >= clusters_.size()) return {};
+            std::vector<VectorType> c = std::move(clusters_[next_++]);
+            if (next_ == clusters_.size())
+            {
+                clusters_.clear();
+                next_ = 0;
+            }
+            return c;
+        }
+
+    private:
+        static constexpr int D = VectorType::dimensionality();
+        static constexpr size_t none = std::numeric_limits<size_t>::max();
+        static const ElementType *ptr(const VectorType &v) { return v.data().data(); }
+
+        // step 1: every cluster is a run of consecutive points, except one that may wrap the seam. One vectorisable
+        // pass marks which points are valid (bit 0) and linked to their predecessor (bit 1); runs are then copied
+        // out whole.
+        void segmentNeighbours(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
+        {
+            const size_t n = pts.size();
+            const ElementType *o = ptr(origin);
+            flags_.resize(n);
+            unsigned char *f = flags_.data();
+            f[0] = seg_detail::isFinite<D>(ptr(pts[0])) ? 1 : 0;
+            for (size_t i = 1; i < n; ++i)
+            {
+                const ElementType *p = ptr(pts[i]), *q = ptr(pts[i - 1]);
+                const ElementType tsq = seg_detail::squaredThreshold(seg_detail::squaredDistance<D>(p, o), scaling, lower_, upper_);
+                const bool valid = seg_detail::isFinite<D>(p);
+                const bool link = valid & seg_detail::isFinite<D>(q) & (seg_detail::squaredDistance<D>(p, q) <= tsq);
+                f[i] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
+            }
+
+            constexpr std::uint64_t all_linked = 0x0202020202020202ull;
+            size_t i = 0;
+            while (i < n)
+            {
+                if (!(f[i] & 1u))
+                {
+                    ++i;
+                    continue;
+                }
+                const size_t b = i++;
+                for (std::uint64_t w; i + 8 <= n; i += 8)
+                {
+                    std::memcpy(&w, f + i, 8);
+                    if ((w & all_linked) != all_linked) break;
+                }
+                while (i < n && (f[i] & 2u)) ++i;
+                clusters_.emplace_back(pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(i));
+            }
+
+            // Seam: point 0 follows point n - 1. With two or more clusters, point 0 opens the first and n - 1 closes
+            // the last; the wrapped cluster keeps the first place (smallest index) and starts with its end part.
+            if (n >= 2 && clusters_.size() >= 2 && (f[0] & 1u) && (f[n - 1] & 1u) &&
+                closeTo(pts[n - 1], pts[0], origin, scaling))
+            {
+                std::vector<VectorType> &first = clusters_.front(), &last = clusters_.back();
+                last.insert(last.end(), first.begin(), first.end());
+                first = std::move(last);
+                clusters_.pop_back();
+            }
+        }
+
+        // General step: union-find over point indices, the root of a component being its smallest index.
+        void segmentWindow(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
+        {
+            const size_t n = pts.size(), s = step_;
+            const ElementType *o = ptr(origin);
+            tsq_.resize(n);
+            parent_.resize(n);
+            for (size_t i = 0; i < n; ++i)
+            {
+                const ElementType *p = ptr(pts[i]);
+                tsq_[i] = seg_detail::squaredThreshold(seg_detail::squaredDistance<D>(p, o), scaling, lower_, upper_);
+                parent_[i] = seg_detail::isFinite<D>(p) ? i : none;
+            }
+
+            for (size_t i = 0; i < n; ++i)
+            {
+                if (parent_[i] == none) continue;
+                const ElementType *p = ptr(pts[i]);
+                size_t root = none;
+                for (size_t k = 1, kmax = std::min(s, i); k <= kmax; ++k)
+                {
+                    const size_t j = i - k;
+                    if (parent_[j] == none || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tsq_[i])) continue;
+                    const size_t r = find(j);
+                    if (root == none) root = r;
+                    else if (r < root) { parent_[root] = r; root = r; }
+                    else if (r > root) parent_[r] = root;
+                }
+                parent_[i] = root == none ? i : root;
+            }
+
+            // Seam: pairs (j, i) with j near the end, i near the beginning and i + n - j <= step; i is the later point.
+            for (size_t i = 0; i < std::min(s, n); ++i)
+            {
+                if (parent_[i] == none) continue;
+                for (size_t k = i + 1; k <= s; ++k)
+                {
+                    const size_t j = i + n - k;
+                    if (j <= i) break;
+                    if (parent_[j] != none && seg_detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j])) <= tsq_[i]) unite(i, j);
+                }
+            }
+
+            // Copy runs of equal root into their cluster. A gap of more than step - 1 indices inside a cluster can
+            // only come from the seam: the cluster is rotated there, so that it starts with its end-of-scan part.
+            slot_.resize(n);
+            last_.clear();
+            rotate_at_.clear();
+            size_t i = 0;
+            while (i < n)
+            {
+                if (parent_[i] == none)
+                {
+                    ++i;
+                    continue;
+                }
+                const size_t r = find(i), b = i++;
+                while (i < n && parent_[i] != none && find(i) == r) ++i;
+                size_t c;
+                if (r == b)
+                {
+                    c = clusters_.size();
+                    slot_[r] = c;
+                    clusters_.emplace_back();
+                    last_.push_back(b);
+                    rotate_at_.push_back(0);
+                }
+                else
+                {
+                    c = slot_[r];
+                    if (b - last_[c] > s) rotate_at_[c] = clusters_[c].size();
+                }
+                clusters_[c].insert(clusters_[c].end(), pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(i));
+                last_[c] = i - 1;
+            }
+            for (size_t c = 0; c < clusters_.size(); ++c)
+                if (rotate_at_[c] > 0)
+                    std::rotate(clusters_[c].begin(), clusters_[c].begin() + static_cast<std::ptrdiff_t>(rotate_at_[c]), clusters_[c].end());
+        }
+
+        bool closeTo(const VectorType &earlier, const VectorType &later, const VectorType &origin, ElementType scaling) const
+        {
+            return seg_detail::meetsCriterion(earlier, later, origin, scaling, lower_, upper_);
+        }
+
+        size_t find(size_t x)
+        {
+            while (parent_[x] != x)
+            {
+                parent_[x] = parent_[parent_[x]];
+                x = parent_[x];
+            }
+            return x;
+        }
+
+        void unite(size_t a, size_t b)
+        {
+            a = find(a);
+            b = find(b);
+            if (a < b) parent_[b] = a;
+            else if (b < a) parent_[a] = b;
+        }
+
+        size_t step_ = 1;
+        ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
+
+        std::vector<std::vector<VectorType>> clusters_;
+        size_t next_ = 0;
+
+        // work buffers, kept between calls
+        std::vector<unsigned char> flags_;
+        std::vector<ElementType> tsq_;
+        std::vector<size_t> parent_, slot_, last_, rotate_at_;
+    };
+}

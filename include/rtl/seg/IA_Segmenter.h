@@ -1,0 +1,262 @@
+// IA_Segmenter (Incremental, Adaptive): streaming segmentation of ordered points, one addPoint() at a time.
+//
+// The segmenter keeps a window of the last `step` points. A new point p joins every cluster that has a window point
+// q with |p - q| <= t(p), t(p) = clamp(scaling * |p - origin|, lower_bound, upper_bound) (seg/ProximityCriterion.h);
+// if it touches several clusters they are merged, completely, alive points included; otherwise it opens a cluster.
+// A point leaving the window moves to its cluster's alive list (aliveClusters(), keyed by cluster id, ids growing
+// with creation; a merge keeps the older id). A cluster whose last window point leaves is closed: it moves from the
+// alive map to the closed queue, which grabCluster() empties in closing order. Every cluster lists its points in
+// stream order and is non-empty. Points with a NaN (or infinite) coordinate are gaps: they take a window place but
+// join no cluster. Nothing is ever lost: each point is in the window, in an alive cluster or in a closed cluster,
+// however addPoint() and grabCluster() calls interleave. flush() (an addition to the published API) empties the
+// window at the end of a stream, closing every cluster.
+//
+// With scaling = step * 2 pi / N this is the criterion of CAR_Segmenter: on the same points both give the same
+// clusters, except that CAR also links across the seam of a closed scan.
+//
+// Bad input: step 0 is treated as 1; addPoint throws std::invalid_argument unless 0 <= lower_bound <= upper_bound
+// (upper may be +inf), the scaling is not NaN and the origin is finite.
+// Defaults: step 1, bounds [0, +inf), scaling 2 pi / 360 (one-degree beams).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <deque>
+#include <limits>
+#include <list>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include "rtl/core/VectorND.h"
+#include "rtl/seg/ProximityCriterion.h"
+
+namespace rtl
+{
+    template<class Vector>
+    class IA_Segmenter
+    {
+    public:
+        typedef typename Vector::ElementType ElementType;
+        typedef Vector VectorType;
+
+        IA_Segmenter() { resizeWindow(1); }
+        IA_Segmenter(size_t step, ElementType lower_bound, ElementType upper_bound, ElementType scaling)
+            : lower_(lower_bound), upper_(upper_bound), scaling_(scaling)
+        {
+            resizeWindow(step == 0 ? 1 : step);
+        }
+        ~IA_Segmenter() = default;
+
+        //! Changes the window size; when it shrinks, the oldest window points leave the window first.
+        void setStepSize(unsigned int step) { resizeWindow(step == 0 ? 1 : step); }
+        void setLowerBound(ElementType lb) { lower_ = lb; }
+        void setUpperBound(ElementType ub) { upper_ = ub; }
+        void setScaling(ElementType scale) { scaling_ = scale; }
+
+        [[nodiscard]] size_t closedClustersAvailable() const { return closed_.size(); }
+        [[nodiscard]] size_t aliveClustersAvailable() const { return alive_.size(); }
+        [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const { return alive_; }
+
+        void addPoint(const VectorType &pt, const VectorType &origin = VectorType::zeros())
+        {
+            const ElementType *p = pt.data().data();
+            if (!(lower_ >= ElementType(0)) || !(upper_ >= lower_) || scaling_ != scaling_ || !seg_detail::isFinite<D>(origin.data().data()))
+            {
+                seg_detail::checkParameters<ElementType>("IA_Segmenter::addPoint", lower_, upper_, seg_detail::isFinite<D>(origin.data().data()));
+                throw std::invalid_argument("IA_Segmenter::addPoint: the scaling must not be NaN");
+            }
+            size_t rec = none;
+            if (seg_detail::isFinite<D>(p))
+            {
+                const ElementType tsq = seg_detail::squaredThreshold(seg_detail::squaredDistance<D>(p, origin.data().data()), scaling_, lower_, upper_);
+                for (size_t w = 0; w < step_; ++w)
+                {
+                    const size_t r = wrec_[w];
+                    if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
+                    rec = rec == none ? r : merge(rec, r);
+                }
+                if (rec == none) rec = newRecord();
+                ++recs_[rec].in_window;
+            }
+            size_t slot;
+            if (count_ == step_)
+            {
+                slot = head_;
+                evict(slot);
+                head_ = head_ + 1 == step_ ? 0 : head_ + 1;
+            }
+            else
+            {
+                slot = head_ + count_;
+                if (slot >= step_) slot -= step_;
+                ++count_;
+            }
+            wpts_[slot] = pt;
+            wrec_[slot] = rec;
+            widx_[slot] = stream_++;
+        }
+
+        //! Removes and returns the oldest closed cluster; an empty vector when none is closed.
+        std::vector<VectorType> grabCluster()
+        {
+            if (closed_.empty()) return {};
+            std::vector<VectorType> c = std::move(closed_.front());
+            closed_.pop_front();
+            return c;
+        }
+
+        //! End of stream: every window point leaves the window (oldest first), so every cluster closes.
+        void flush()
+        {
+            for (size_t k = 0; k < count_; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
+            head_ = 0;
+            count_ = 0;
+        }
+
+    private:
+        static constexpr int D = VectorType::dimensionality();
+        static constexpr size_t none = std::numeric_limits<size_t>::max();
+        typedef std::map<size_t, std::vector<VectorType>> AliveMap;
+
+        struct Record
+        {
+            size_t id = 0;
+            size_t in_window = 0;
+            bool has_alive = false;
+            typename AliveMap::iterator alive;      // valid when has_alive
+            std::vector<size_t> alive_index;         // stream index of each alive point, for merges
+        };
+
+        size_t newRecord()
+        {
+            size_t r;
+            if (free_.empty())
+            {
+                r = recs_.size();
+                recs_.emplace_back();
+            }
+            else
+            {
+                r = free_.back();
+                free_.pop_back();
+            }
+            Record &R = recs_[r];
+            R.id = next_id_++;
+            R.in_window = 0;
+            R.has_alive = false;
+            R.alive_index.clear();
+            return r;
+        }
+
+        // The window point in `slot` leaves the window for its cluster's alive list; the cluster closes if it was
+        // its last window point.
+        void evict(size_t slot)
+        {
+            const size_t r = wrec_[slot];
+            if (r == none) return;
+            wrec_[slot] = none;
+            Record &R = recs_[r];
+            if (!R.has_alive)
+            {
+                R.alive = alive_.emplace(R.id, std::vector<VectorType>()).first;
+                R.has_alive = true;
+            }
+            R.alive->second.push_back(wpts_[slot]);
+            R.alive_index.push_back(widx_[slot]);
+            if (--R.in_window == 0)
+            {
+                closed_.push_back(std::move(R.alive->second));
+                alive_.erase(R.alive);
+                R.has_alive = false;
+                free_.push_back(r);
+            }
+        }
+
+        // Merges two clusters that both have window points; the older id survives. Returns the survivor's record.
+        size_t merge(size_t a, size_t b)
+        {
+            const size_t keep = recs_[a].id < recs_[b].id ? a : b, gone = keep == a ? b : a;
+            for (size_t w = 0; w < step_; ++w)
+                if (wrec_[w] == gone) wrec_[w] = keep;
+            Record &K = recs_[keep], &G = recs_[gone];
+            K.in_window += G.in_window;
+            if (G.has_alive)
+            {
+                if (!K.has_alive)
+                {
+                    K.alive = alive_.emplace(K.id, std::move(G.alive->second)).first;
+                    K.has_alive = true;
+                    K.alive_index.swap(G.alive_index);
+                }
+                else
+                {
+                    // both alive lists are in stream order: merge them by stream index
+                    std::vector<VectorType> &kp = K.alive->second, &gp = G.alive->second;
+                    std::vector<VectorType> pts;
+                    std::vector<size_t> idx;
+                    pts.reserve(kp.size() + gp.size());
+                    idx.reserve(kp.size() + gp.size());
+                    size_t i = 0, j = 0;
+                    while (i < kp.size() || j < gp.size())
+                    {
+                        if (j == gp.size() || (i < kp.size() && K.alive_index[i] < G.alive_index[j]))
+                        {
+                            pts.push_back(kp[i]);
+                            idx.push_back(K.alive_index[i++]);
+                        }
+                        else
+                        {
+                            pts.push_back(gp[j]);
+                            idx.push_back(G.alive_index[j++]);
+                        }
+                    }
+                    kp.swap(pts);
+                    K.alive_index.swap(idx);
+                }
+                alive_.erase(G.alive);
+                G.has_alive = false;
+            }
+            G.in_window = 0;
+            free_.push_back(gone);
+            return keep;
+        }
+
+        void resizeWindow(size_t step)
+        {
+            if (step == step_ && !wrec_.empty()) return;
+            // the oldest points that do not fit leave first, in stream order
+            size_t k = 0;
+            for (; count_ - k > step; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
+            std::vector<VectorType> pts(step);
+            std::vector<size_t> rec(step, none), idx(step, 0);
+            for (size_t m = 0; k < count_; ++k, ++m)
+            {
+                const size_t w = head_ + k < step_ ? head_ + k : head_ + k - step_;
+                pts[m] = wpts_[w];
+                rec[m] = wrec_[w];
+                idx[m] = widx_[w];
+            }
+            count_ = std::min(count_, step);
+            head_ = 0;
+            step_ = step;
+            wpts_.swap(pts);
+            wrec_.swap(rec);
+            widx_.swap(idx);
+        }
+
+        ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
+        ElementType scaling_ = seg_detail::circularScaling<ElementType>(1, 360);
+
+        // window: a ring of step_ slots, count_ of them used, head_ the oldest; wrec_ is none for gaps and free slots
+        size_t step_ = 0, head_ = 0, count_ = 0;
+        std::vector<VectorType> wpts_;
+        std::vector<size_t> wrec_, widx_;
+
+        std::vector<Record> recs_;
+        std::vector<size_t> free_;
+        AliveMap alive_;
+        std::deque<std::vector<VectorType>> closed_;
+        size_t next_id_ = 0, stream_ = 0;
+    };
+}
