@@ -56,7 +56,20 @@ function numberInput(id, fallback) {
   return Number.isFinite(v) ? v : fallback;
 }
 
+// A setting the user has to correct (shown next to the status, not treated as a page error).
+class SettingsError extends Error {}
+
 function readSettings() {
+  for (const el of $('controls').querySelectorAll('[aria-invalid]')) el.removeAttribute('aria-invalid');
+  const s = readSettingsValues();
+  if (state.features?.segment && s.upperBound < s.lowerBound) {
+    $('seg-upper').setAttribute('aria-invalid', 'true');
+    throw new SettingsError(`the upper bound (${s.upperBound} m) is below the lower bound (${s.lowerBound} m)`);
+  }
+  return s;
+}
+
+function readSettingsValues() {
   return {
     step: Math.max(1, Math.round(numberInput('seg-step', 3))),
     lowerBound: Math.max(0, numberInput('seg-lower', 0.1)),
@@ -438,6 +451,7 @@ function expose(r) {
   window.__rtl = {
     ready: true,
     revision: state.revision,
+    inputError: null,
     errors: window.__rtl.errors,
     dataset: r.dataset,
     scanIndex: r.scanIndex,
@@ -500,6 +514,12 @@ function update() {
           `in ${fmt(r.stats.segTimeMs + r.stats.vecTimeMs, 1)} ms.`
         : `${r.validCount} returns` + (r.fit ? `, TLS line through ${r.fit.n} points, RMS ${fmt(r.fit.rms * 1000, 1)} mm.` : '.')));
     } catch (e) {
+      // Bad settings (ours, or a RangeError from the package naming the option) are the user's to fix.
+      if (e instanceof SettingsError || e instanceof RangeError) {
+        setStatus(`Check the settings: ${e.message}.`, true);
+        window.__rtl.inputError = e.message;
+        return;
+      }
       setStatus(`Error: ${e.message}`, true);
       window.__rtl.errors.push(String(e.message));
       console.error(e);
