@@ -17,7 +17,7 @@ const METHOD_TEXT = {
 };
 
 // Okabe–Ito palette (colour-blind safe) plus a few darker companions; clusters cycle through it.
-const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#B2182B'];
+const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#332288'];
 const SMALL_CLUSTER = '#9aa3af';
 const GAP_COLOUR = '#c9ced6';
 
