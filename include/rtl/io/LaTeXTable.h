@@ -1,0 +1,117 @@
+// A LaTeX tabular inside a table float, written into a LaTeXDoc (rtl-api §4.3).
+#pragma once
+
+#include <algorithm>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "rtl/io/LaTeXUtility.h"
+
+namespace rtl
+{
+    //! Collects a heading, rows and horizontal rules. Cell text and the caption are user text and are escaped with
+    //! LaTeX::escapeLaTeXCharacters; the *Raw variants take ready LaTeX (e.g. "$10^{3}$") for callers that format
+    //! cells themselves. The column style is tabular syntax and is written as given.
+    class LaTeXTable
+    {
+    public:
+        LaTeXTable() = default;
+        ~LaTeXTable() = default;
+
+        //! Tabular column specification, e.g. "c|c||c". If never set, every column is centred ("c" per cell).
+        void setColumnStyle(const std::string &cs) { column_style = cs; }
+        std::string columnsStyle() { return column_style; }
+
+        //! Sets the heading row (escaped); an empty vector is ignored.
+        void setHeading(const std::vector<std::string> &heading_cells)
+        {
+            if (!heading_cells.empty())
+                heading = escapeCells(heading_cells);
+        }
+        void setHeadingRaw(const std::vector<std::string> &heading_cells)
+        {
+            if (!heading_cells.empty())
+                heading = heading_cells;
+        }
+
+        //! Appends a row (escaped); an empty vector is ignored.
+        void addRow(const std::vector<std::string> &row_cells)
+        {
+            if (!row_cells.empty())
+                rows.push_back({false, escapeCells(row_cells)});
+        }
+        void addRowRaw(const std::vector<std::string> &row_cells)
+        {
+            if (!row_cells.empty())
+                rows.push_back({false, row_cells});
+        }
+
+        void addHLine() { rows.push_back({true, {}}); }
+
+        //! Writes table/center/tabular, the heading and rows (cells joined by " & ", each line starting with a tab and
+        //! ending with "\\"), and a caption only if `desc` is non-empty, then a blank line.
+        void writeTable(std::ostream &ofs, const std::string &desc) const
+        {
+            ofs << "\\begin{table}\n\\begin{center}\n\\begin{tabular}{" << effectiveColumnStyle() << "}\n";
+            bool first = true;
+            auto line = [&](const std::string &text) {
+                if (!first)
+                    ofs << "\n";
+                first = false;
+                ofs << "\t" << text;
+            };
+            if (!heading.empty())
+                line(joinCells(heading));
+            for (const auto &r : rows)
+                line(r.hline ? std::string("\\hline") : joinCells(r.cells));
+            ofs << "\n\\end{tabular}\n\\end{center}\n";
+            if (!desc.empty())
+                ofs << "\\caption{" << LaTeX::escapeLaTeXCharacters(desc) << "}\n";
+            ofs << "\\end{table}\n\n";
+        }
+
+    private:
+        struct Row
+        {
+            bool hline;
+            std::vector<std::string> cells;
+        };
+
+        static std::vector<std::string> escapeCells(const std::vector<std::string> &cells)
+        {
+            std::vector<std::string> out;
+            out.reserve(cells.size());
+            for (const auto &c : cells)
+                out.push_back(LaTeX::escapeLaTeXCharacters(c));
+            return out;
+        }
+
+        static std::string joinCells(const std::vector<std::string> &cells)
+        {
+            std::string s;
+            for (size_t i = 0; i < cells.size(); ++i)
+            {
+                if (i > 0)
+                    s += " & ";
+                s += cells[i];
+            }
+            return s + " \\\\";
+        }
+
+        std::string effectiveColumnStyle() const
+        {
+            if (!column_style.empty())
+                return column_style;
+            size_t cols = heading.size();
+            for (const auto &r : rows)
+                cols = std::max(cols, r.cells.size());
+            return std::string(std::max<size_t>(cols, 1), 'c');
+        }
+
+        std::string column_style;
+        std::vector<std::string> heading;
+        std::vector<Row> rows;
+    };
+}
