@@ -23,9 +23,9 @@ test('toSvg: circles per cluster in the palette colours, y up, uniform scale, se
   assert.match(svg, /^<svg xmlns="http:\/\/www\.w3\.org\/2000\/svg" width="420" height="300" viewBox="0 0 420 300">/);
   assert.ok(svg.trimEnd().endsWith('</svg>'));
   assert.equal((svg.match(/<circle /g) || []).length, 4, 'the NaN point is not drawn');
-  // cluster 0: hue 0 -> hsb(0, 0.8, 0.75) = #bf2626; cluster 1: hue 0.618 -> #2653bf; unlabelled gray
-  assert.match(svg, /<g class="cluster" data-cluster="0" fill="#bf2626">\n<circle [^\n]*\n<circle [^\n]*\n<\/g>/);
-  assert.match(svg, /<g class="cluster" data-cluster="1" fill="#2653bf">\n<circle [^\n]*\n<\/g>/);
+  // cluster 0: #0072B2, cluster 1: #E69F00 (the page's palette); unlabelled gray
+  assert.match(svg, /<g class="cluster" data-cluster="0" fill="#0072B2">\n<circle [^\n]*\n<circle [^\n]*\n<\/g>/);
+  assert.match(svg, /<g class="cluster" data-cluster="1" fill="#E69F00">\n<circle [^\n]*\n<\/g>/);
   assert.match(svg, /<g class="points" fill="#808080">\n<circle [^\n]*\n<\/g>/);
   assert.match(svg, /<title>scan &lt;1&gt; &amp; &quot;x&quot;<\/title>/);
   // Geometry: data x in [0,4], y in [0,2]; margin 7, title 24 -> scale min((420-14)/4, (300-14-24)/2) = 101.5.
@@ -35,7 +35,7 @@ test('toSvg: circles per cluster in the palette colours, y up, uniform scale, se
   near(x2 - x1, 4 * 101.5, 1e-3, 'segment width');
   near(y1 - y2, 2 * 101.5, 1e-3, 'segment height (y up)');
   near((x1 + x2) / 2, 210, 1e-3, 'centred horizontally');
-  const c0 = svg.match(/data-cluster="0" fill="#bf2626">\n<circle cx="([\d.]+)" cy="([\d.]+)" r="3"\/>/);
+  const c0 = svg.match(/data-cluster="0" fill="#0072B2">\n<circle cx="([\d.]+)" cy="([\d.]+)" r="3"\/>/);
   assert.deepEqual([Number(c0[1]), Number(c0[2])], [x1, y1], 'point (0,0) at the segment start');
   const gray = svg.match(/<g class="points" fill="#808080">\n<circle cx="([\d.]+)" cy="([\d.]+)"/);
   assert.deepEqual([Number(gray[1]), Number(gray[2])], [x2, y2], 'unlabelled point (4,2) at the segment end');
@@ -52,9 +52,9 @@ test('toTikz: LaTeXTikz2D conventions (preamble, StyleX, ColorX, MarkX, macros),
   assert.ok(tex.startsWith('\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n'));
   assert.ok(tex.endsWith('\\end{tikzpicture}\n\\end{document}\n'));
   assert.match(tex, /\\begin\{tikzpicture\}\[xscale=2, yscale=2,\n\tStyleA\/\.style=\{draw=ColorA,fill=ColorA/);
-  assert.match(tex, /\\definecolor\{ColorA\}\{hsb\}\{0,0,0\.5\}/, 'unlabelled (drawn first, beneath)');
-  assert.match(tex, /\\definecolor\{ColorB\}\{hsb\}\{0,0\.8,0\.75\}/, 'cluster 0');
-  assert.match(tex, /\\definecolor\{ColorC\}\{hsb\}\{0\.618,0\.8,0\.75\}/, 'cluster 1');
+  assert.match(tex, /\\definecolor\{ColorA\}\{HTML\}\{808080\}/, 'unlabelled (drawn first, beneath)');
+  assert.match(tex, /\\definecolor\{ColorB\}\{HTML\}\{0072B2\}/, 'cluster 0');
+  assert.match(tex, /\\definecolor\{ColorC\}\{HTML\}\{E69F00\}/, 'cluster 1');
   assert.match(tex, /\\pgfmathsetmacro\{\\MarkGlobalScaleX\}\{0\.5\}/);
   for (const m of ['MaxX}{4}', 'MinX}{0}', 'MaxY}{2}', 'MinY}{0}']) assert.ok(tex.includes(`\\pgfmathsetmacro{\\${m}`), m);
   assert.match(tex, /\\newcommand\{\\MarkA\}\[3\]\{\\begin\{scope\}\[shift=\{\(#1,#2\)\}, xscale=\\MarkGlobalScaleX/);

@@ -68,7 +68,37 @@ function dimOption(o, fn, allowed = [2, 3]) {
   return d;
 }
 
+
+function originOption(o, fn, dim) {
+  if (o.origin === undefined) return [0, 0, 0];
+  const a = toF64(o.origin, fn, 'option origin');
+  if (a.length !== dim) throw new RangeError(`${fn}: option origin must have ${dim} numbers (dim ${dim}), got ${a.length}`);
+  for (let i = 0; i < dim; i++) if (!Number.isFinite(a[i])) throw new RangeError(`${fn}: option origin[${i}] must be finite, got ${a[i]}`);
+  return [a[0], a[1], dim === 3 ? a[2] : 0];
+}
+
+// Proximity bounds of the segmenters: 0 <= lowerBound <= upperBound (upperBound may be Infinity).
+function boundsOptions(o, fn, lowerDefault, upperDefault) {
+  const lower = num(o, 'lowerBound', fn, lowerDefault, { min: 0 });
+  let upper = upperDefault;
+  if (o.upperBound === Infinity) upper = Infinity;
+  else upper = num(o, 'upperBound', fn, upperDefault, { min: 0 });
+  if (!(upper >= lower)) throw new RangeError(`${fn}: option upperBound (${upper}) must be >= lowerBound (${lower})`);
+  return [lower, upper];
+}
+
+// Half-open runs [b0, e0, b1, e1, ...] of consecutive values in an index list.
+function runs(idx) {
+  const r = [];
+  for (let i = 0; i < idx.length; i++) {
+    if (i === 0 || idx[i] !== idx[i - 1] + 1) r.push(idx[i], idx[i] + 1);
+    else r[r.length - 1] = idx[i] + 1;
+  }
+  return Uint32Array.from(r);
+}
+
 const ERRORS = { TypeError, RangeError, Error };
+const DISPOSE = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
 // The C++ side returns {error, kind} instead of throwing (an exception crossing into JS leaks the wasm stack).
 function check(r) {
@@ -78,17 +108,11 @@ function check(r) {
 
 
 // ------------------------------------------------------------------------------------------------ drawings
-// Cluster k is drawn in hsb(k * golden ratio mod 1, 0.8, 0.75): neighbouring labels get distant hues. The TikZ
-// export defines the same colours with \definecolor{ColorX}{hsb}{h,s,b}; unlabelled points are gray.
-const GOLDEN = 0.6180339887498949;
-function clusterHsb(k) { return [(k * GOLDEN) % 1, 0.8, 0.75]; }
-function hsbToHex([h, s, v]) {
-  const f = (n) => {
-    const k = (n + h * 6) % 6;
-    return Math.round(255 * (v - v * s * Math.max(0, Math.min(k, 4 - k, 1))));
-  };
-  return '#' + [f(5), f(3), f(1)].map((c) => c.toString(16).padStart(2, '0')).join('');
-}
+// Cluster k is drawn in PALETTE[k % 10]: the Okabe-Ito colour-blind safe set plus darker companions, the same as
+// the demo page (web/app.js), so exported figures match the screen. No pure red: that is kept for fitted lines.
+// The TikZ export defines them with \definecolor{ColorX}{HTML}{...}; unlabelled points are gray.
+const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#332288'];
+const clusterColour = (k) => PALETTE[k % PALETTE.length];
 const UNLABELLED = '#808080';
 
 function fmt(v) {
@@ -192,7 +216,7 @@ function toSvg(drawing, opts) {
     groups.get(k).push(`<circle cx="${X(x)}" cy="${Y(y)}" r="${fmt(r)}"/>`);
   }
   for (const k of [...groups.keys()].sort((a, b2) => a - b2)) {
-    const colour = k < 0 ? UNLABELLED : hsbToHex(clusterHsb(k));
+    const colour = k < 0 ? UNLABELLED : clusterColour(k);
     out.push(`<g class="${k < 0 ? 'points' : 'cluster'}"${k < 0 ? '' : ` data-cluster="${k}"`} fill="${colour}">`, ...groups.get(k), '</g>');
   }
   if (d.segs.length) {
@@ -211,7 +235,7 @@ function latexName(prefix, i) { return prefix + String(i).replace(/[0-9]/g, (c) 
 
 // TikZ with the conventions of rtl::LaTeXTikz2D (rtl/io/LaTeXTikz2D.h): minimal document with xcolor[rgb], tikz and
 // preview[active,tightpage]; the picture in data units scaled by xscale/yscale to the requested size; StyleX/.style
-// keys in the picture options; \definecolor{ColorX}{hsb}{...}; \pgfmathsetmacro \MaxX \MinX \MaxY \MinY
+// keys in the picture options; \definecolor{ColorX}{HTML}{...}; \pgfmathsetmacro \MaxX \MinX \MaxY \MinY
 // \MarkGlobalScaleX/Y \MarkRadius; points as \MarkX{x}{y}{rotation} dots of \MarkRadius cm whatever the scaling.
 // One difference: a single (uniform) scale, so that a scan keeps its shape.
 function toTikz(drawing, opts) {
@@ -229,8 +253,8 @@ function toTikz(drawing, opts) {
 
   const styles = [], colours = [], marks = [], body = [];
   const colourIndex = new Map();
-  const colour = (hsb) => {
-    const key = `{hsb}{${hsb.map((v) => fmt(v)).join(',')}}`;
+  const colour = (hex) => {
+    const key = `{HTML}{${hex.slice(1).toUpperCase()}}`;
     if (!colourIndex.has(key)) { colourIndex.set(key, latexName('Color', colours.length)); colours.push(`\\definecolor{${colourIndex.get(key)}}${key}`); }
     return colourIndex.get(key);
   };
@@ -250,7 +274,7 @@ function toTikz(drawing, opts) {
     byLabel.get(k).push(`{${fmt(x)}}{${fmt(y)}}{0}`);
   }
   for (const k of [...byLabel.keys()].sort((a, c) => a - c)) {
-    const c = k < 0 ? colour([0, 0, 0.5]) : colour(clusterHsb(k));
+    const c = colour(k < 0 ? UNLABELLED : clusterColour(k));
     const m = mark(style(`style={draw=${c},fill=${c},line width=0.1pt}`));
     body.push(`% ${k < 0 ? 'points' : `cluster ${k}`}`, ...byLabel.get(k).map((a) => m + a));
   }
@@ -311,6 +335,75 @@ function wrap(m) {
     return withHeap([xy], (p, n) => m.fitLine(p, n, dim));
   }
 
+  function segment(points, opts) {
+    const fn = 'segment';
+    const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin']);
+    const dim = dimOption(o, fn);
+    const step = num(o, 'step', fn, 3, { min: 1, integer: true, max: 2 ** 31 });
+    const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
+    const origin = originOption(o, fn, dim);
+    const xyz = toF64(points, fn, 'points');
+    const r = withHeap([xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2]));
+    const clusters = [];
+    for (let k = 0; k + 1 < r.offsets.length; k++) {
+      const indices = r.indices.subarray(r.offsets[k], r.offsets[k + 1]);
+      clusters.push({ indices, ranges: runs(indices) });
+    }
+    return { labels: r.labels, clusters };
+  }
+
+  // Stateful objects own a C++ object behind an integer handle: dispose() frees it, and if the caller forgets,
+  // the FinalizationRegistry frees it after the wrapper is garbage collected (the held value does not reference
+  // the wrapper, so it does not keep it alive).
+  const registry = typeof FinalizationRegistry === 'function' ? new FinalizationRegistry((free) => free()) : null;
+
+  function splitClusters(r, dim) {
+    const out = [];
+    for (let k = 0; k + 1 < r.offsets.length; k++) out.push(r.points.slice(dim * r.offsets[k], dim * r.offsets[k + 1]));
+    return out;
+  }
+
+  class StreamSegmenter {
+    #h = 0;
+    #dim;
+    constructor(opts) {
+      const fn = 'StreamSegmenter';
+      const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'scaling']);
+      this.#dim = dimOption(o, fn);
+      const step = num(o, 'step', fn, 3, { min: 1, integer: true, max: 1 << 24 });
+      const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
+      const scaling = num(o, 'scaling', fn, 0.05, { min: 0 });
+      const h = check(m.streamCreate(this.#dim, step, lower, upper, scaling));
+      this.#h = h;
+      registry?.register(this, () => m.streamDestroy(h), this);
+    }
+    #handle(fn) {
+      if (this.#h === 0) throw new TypeError(`StreamSegmenter.${fn}: the segmenter was disposed`);
+      return this.#h;
+    }
+    get dim() { return this.#dim; }
+    get disposed() { return this.#h === 0; }
+    addPoints(points, origin) {
+      const fn = 'StreamSegmenter.addPoints';
+      const h = this.#handle('addPoints');
+      const o = originOption(origin === undefined ? {} : { origin }, fn, this.#dim);
+      const xyz = toF64(points, fn, 'points');
+      withHeap([xyz], (p, n) => m.streamAdd(h, p, n, this.#dim, o[0], o[1], o[2]));
+    }
+    get closedClustersAvailable() { return m.streamClosed(this.#handle('closedClustersAvailable')); }
+    get aliveClustersAvailable() { return m.streamAlive(this.#handle('aliveClustersAvailable')); }
+    takeClosedClusters() { return splitClusters(check(m.streamTakeClosed(this.#handle('takeClosedClusters'))), this.#dim); }
+    aliveClusters() { return splitClusters(check(m.streamAliveClusters(this.#handle('aliveClusters'))), this.#dim); }
+    flush() { check(m.streamFlush(this.#handle('flush'))); }
+    dispose() {
+      if (this.#h === 0) return;
+      registry?.unregister(this);
+      m.streamDestroy(this.#h);
+      this.#h = 0;
+    }
+    [DISPOSE]() { this.dispose(); }
+  }
+
   // Organised LiDAR: 16-byte little-endian float32 records x, y, z, intensity; (0,0,0) = no return (NaN point).
   // The cloud is stored column-major whatever the file layout: beam b of column c is point c * beams + b.
   function readOrganizedLidar(data, opts) {
@@ -349,6 +442,8 @@ function wrap(m) {
   return {
     version: VERSION,
     fitLine,
+    segment,
+    StreamSegmenter,
     toSvg,
     toTikz,
     readOrganizedLidar,

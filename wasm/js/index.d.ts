@@ -126,8 +126,9 @@ export interface VectorizeResult {
 export interface Drawing {
   /** 2D points (x,y interleaved); NaN points (gaps) are not drawn */
   points?: PointArray;
-  /** cluster label per point (integer, -1 = no cluster): cluster k is coloured hsb(k * 0.618 mod 1, 0.8, 0.75),
-   *  unlabelled points gray (the same colours in SVG and TikZ) */
+  /** cluster label per point (integer, -1 = no cluster): cluster k gets colour k % 10 of the Okabe-Ito based
+   *  palette of the demo page (#0072B2, #E69F00, #009E73, #D55E00, #CC79A7, #56B4E9, #8C6D1F, #1B7837, #762A83,
+   *  #332288), unlabelled points gray #808080; the same colours in SVG and TikZ */
   labels?: ArrayLike<number>;
   /** line segments x1,y1,x2,y2,... (finite) */
   segments?: PointArray;
@@ -190,24 +191,31 @@ export interface OrganizedCloud {
 // ---------------------------------------------------------------------------------------------- stateful classes
 export interface StreamSegmenterOptions {
   dim?: Dim;          // default 2
-  /** sliding window length, integer >= 1; default 3 */
+  /** sliding window length (points compared with each new one), integer >= 1; default 3 */
   step?: number;
-  lowerBound?: number;   // default 0.1
-  upperBound?: number;   // default 0.5
-  /** threshold = scaling * |p - origin| clamped to [lowerBound, upperBound]; default 0.05 */
+  /** lower bound of the distance threshold (m), >= 0; default 0.1 */
+  lowerBound?: number;
+  /** upper bound (m), >= lowerBound, may be Infinity; default 0.5 */
+  upperBound?: number;
+  /** threshold = scaling * |p - origin| clamped to [lowerBound, upperBound]; >= 0, default 0.05
+   *  (step * 2 pi / N gives segment()'s criterion for a scan of N beams) */
   scaling?: number;
 }
-/** Streaming (IA) segmenter. Construct it through the module: `new rtl.StreamSegmenter(options)`. */
+/** Streaming (IA) segmenter over rtl::IA_Segmenter. Construct it through the module: `new rtl.StreamSegmenter(options)`.
+ *  It owns wasm memory: call dispose() (or use `using`); a FinalizationRegistry frees it if you forget. */
 export interface StreamSegmenter {
   readonly dim: Dim;
-  /** feeds points in stream order (origin: dim numbers, default zeros); gaps (NaN points) are skipped */
+  /** feeds points in stream order (origin: dim finite numbers, default zeros); a NaN point is a gap: it takes a
+   *  window place but joins no cluster */
   addPoints(points: PointArray, origin?: ArrayLike<number>): void;
   readonly closedClustersAvailable: number;
   readonly aliveClustersAvailable: number;
-  /** removes and returns the closed clusters, oldest first, each as interleaved points in stream order */
+  /** removes and returns the closed clusters, in closing order, each as interleaved points in stream order */
   takeClosedClusters(): Float64Array[];
-  /** current alive clusters (not removed) */
+  /** current alive clusters (points that left the window, cluster not closed yet), not removed */
   aliveClusters(): Float64Array[];
+  /** end of stream: every window point leaves the window, so every cluster closes */
+  flush(): void;
   dispose(): void;
   [Symbol.dispose](): void;
   readonly disposed: boolean;

@@ -1,0 +1,68 @@
+// Segmentation on flat arrays, shared by the wasm bindings (segment.cpp) and the native comparison tool
+// (tests/tools/rtl_native.cpp), so that both run exactly the same C++ on the same numbers. No emscripten here.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <rtl/core/VectorND.h>
+#include <rtl/seg/CAR_Segmenter.h>
+
+namespace rtl_ops {
+
+// A point that remembers its index in the scan. CAR_Segmenter copies points into its clusters; carrying the index
+// along gives per-point labels without searching for the copies afterwards.
+template <int D>
+struct IndexedPoint : rtl::VectorND<D, double> {
+  using Base = rtl::VectorND<D, double>;
+  IndexedPoint() = default;
+  IndexedPoint(const Base& b) : Base(b) {}  // NOLINT: implicit, so that VectorType::zeros() converts
+  std::uint32_t index = 0;
+};
+
+struct SegmentParams {
+  std::size_t step = 3;
+  double lowerBound = 0.1, upperBound = 0.5;
+  double origin[3] = {0, 0, 0};
+};
+
+struct SegmentOutput {
+  std::vector<std::int32_t> labels;        // per point, -1 for gaps
+  std::vector<std::uint32_t> indices;      // all clusters' point indices, cluster after cluster
+  std::vector<std::uint32_t> offsets;      // cluster k = indices[offsets[k] .. offsets[k+1])
+};
+
+template <int D>
+SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p) {
+  if (n > 0xffffffffu) throw std::length_error("segment: more than 2^32 - 1 points");
+  std::vector<IndexedPoint<D>> pts(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < D; ++k) pts[i][static_cast<std::size_t>(k)] = xyz[D * i + static_cast<std::size_t>(k)];
+    pts[i].index = static_cast<std::uint32_t>(i);
+  }
+  IndexedPoint<D> origin;
+  for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
+  rtl::CAR_Segmenter<IndexedPoint<D>> seg(p.step, p.lowerBound, p.upperBound);
+  seg.setMaxSize(n);
+  seg.loadData(pts, origin);
+
+  SegmentOutput out;
+  out.labels.assign(n, -1);
+  out.indices.reserve(n);
+  out.offsets.push_back(0);
+  while (seg.clustersAvailable() > 0) {
+    const auto c = seg.grabCluster();
+    const auto label = static_cast<std::int32_t>(out.offsets.size() - 1);
+    for (const auto& q : c) {
+      out.labels[q.index] = label;
+      out.indices.push_back(q.index);
+    }
+    out.offsets.push_back(static_cast<std::uint32_t>(out.indices.size()));
+  }
+  return out;
+}
+
+}  // namespace rtl_ops

@@ -1,0 +1,33 @@
+// segment(): the batch CAR segmenter on an interleaved point array in the wasm heap (see seg_ops.h).
+#include "adapter.h"
+#include "seg_ops.h"
+
+namespace rtl_wasm {
+namespace {
+
+val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lower, double upper, double ox,
+            double oy, double oz) {
+  return guarded([&] {
+    if (dim != 2 && dim != 3) throw std::invalid_argument("segment: dim must be 2 or 3, got " + std::to_string(dim));
+    const double* xyz = doubles(ptr);
+    checkPoints("segment", xyz, len, static_cast<std::size_t>(dim), 0, true);
+    rtl_ops::SegmentParams p;
+    p.step = static_cast<std::size_t>(step);
+    p.lowerBound = lower;
+    p.upperBound = upper;
+    p.origin[0] = ox;
+    p.origin[1] = oy;
+    p.origin[2] = oz;
+    const auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p) : rtl_ops::segment<3>(xyz, len / 3, p);
+    val r = val::object();
+    r.set("labels", i32(out.labels));
+    r.set("indices", u32(out.indices));
+    r.set("offsets", u32(out.offsets));
+    return r;
+  });
+}
+
+}  // namespace
+}  // namespace rtl_wasm
+
+EMSCRIPTEN_BINDINGS(rtl_segment) { emscripten::function("segment", &rtl_wasm::segment); }
