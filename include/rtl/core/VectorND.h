@@ -35,6 +35,24 @@ namespace rtl
         constexpr bool are_elements_v = ((std::is_convertible_v<T, E> && !is_eigen_v<T>) && ...);
     }
 
+    namespace core_detail
+    {
+        //! Stands in for a transformation that does not exist in this dimension; it cannot be constructed.
+        template<int tag>
+        struct Unavailable
+        {
+            Unavailable() = delete;
+        };
+
+        // Rotations and rigid transformations need at least two dimensions. In one dimension the core types declare
+        // their transform overloads with an Unavailable parameter instead, so that overload resolution for
+        // transformed(TranslationND<1, E>) never instantiates RotationND<1, E> / RigidTfND<1, E>.
+        template<int d, typename E>
+        using RotationArg = std::conditional_t<(d > 1), RotationND<d, E>, Unavailable<0>>;
+        template<int d, typename E>
+        using RigidTfArg = std::conditional_t<(d > 1), RigidTfND<d, E>, Unavailable<1>>;
+    }
+
     //! Shared implementation of VectorND and its 2D/3D specialisations (CRTP over the child template).
     template<int dimensions, typename Element, template<int, typename> class ChildTemplate>
     class VectorND_common
@@ -66,18 +84,18 @@ namespace rtl
         void transform(const TranslationND<dimensions, Element> &tr) { elements += tr.trVec().data(); }
 
         //! R v.
-        [[nodiscard]] ChildType transformed(const RotationND<dimensions, Element> &rot) const
+        [[nodiscard]] ChildType transformed(const core_detail::RotationArg<dimensions, Element> &rot) const
         {
             return ChildType(EigenType(rot.rotMat().data() * elements));
         }
-        void transform(const RotationND<dimensions, Element> &rot) { elements = (rot.rotMat().data() * elements).eval(); }
+        void transform(const core_detail::RotationArg<dimensions, Element> &rot) { elements = (rot.rotMat().data() * elements).eval(); }
 
         //! R v + t.
-        [[nodiscard]] ChildType transformed(const RigidTfND<dimensions, Element> &tf) const
+        [[nodiscard]] ChildType transformed(const core_detail::RigidTfArg<dimensions, Element> &tf) const
         {
             return ChildType(EigenType(tf.rotMat().data() * elements + tf.trVec().data()));
         }
-        void transform(const RigidTfND<dimensions, Element> &tf) { elements = (tf.rotMat().data() * elements + tf.trVec().data()).eval(); }
+        void transform(const core_detail::RigidTfArg<dimensions, Element> &tf) { elements = (tf.rotMat().data() * elements + tf.trVec().data()).eval(); }
 
         EigenType &data() { return elements; }
         const EigenType &data() const { return elements; }
