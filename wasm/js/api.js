@@ -404,6 +404,97 @@ function wrap(m) {
     [DISPOSE]() { this.dispose(); }
   }
 
+  function frameName(v, fn, what) {
+    if (typeof v !== 'string') throw new TypeError(`${fn}: ${what} must be a string, got ${describe(v)}`);
+    if (v.length === 0) throw new RangeError(`${fn}: ${what} must not be empty`);
+    return v;
+  }
+  function vector(v, fn, what, n) {
+    const a = toF64(v, fn, what);
+    if (a.length !== n) throw new RangeError(`${fn}: ${what} must have ${n} numbers, got ${a.length}`);
+    for (let i = 0; i < n; i++) if (!Number.isFinite(a[i])) throw new RangeError(`${fn}: ${what}[${i}] must be finite, got ${a[i]}`);
+    return a;
+  }
+
+  // A transformation {angle, translation} (2D) or {quaternion | angle + axis, translation} (3D) -> [q0..q3, t0..t2]
+  // with a unit quaternion [w, x, y, z] in 3D.
+  function rigid(tf, fn, dim) {
+    if (tf === null || typeof tf !== 'object' || Array.isArray(tf) || ArrayBuffer.isView(tf))
+      throw new TypeError(`${fn}: the transformation must be an object, got ${describe(tf)}`);
+    const known = dim === 2 ? ['angle', 'translation'] : ['quaternion', 'angle', 'axis', 'translation'];
+    const o = options(tf, fn, known);
+    const t = o.translation === undefined ? new Float64Array(dim) : vector(o.translation, fn, 'translation', dim);
+    if (dim === 2) return [num(o, 'angle', fn, 0), 0, 0, 0, t[0], t[1], 0];
+    let q;
+    if (o.quaternion !== undefined) {
+      if (o.angle !== undefined || o.axis !== undefined) throw new TypeError(`${fn}: give either quaternion or angle + axis, not both`);
+      q = Array.from(vector(o.quaternion, fn, 'quaternion', 4));
+    } else if (o.angle !== undefined || o.axis !== undefined) {
+      const angle = num(o, 'angle', fn, 0);
+      if (o.axis === undefined) throw new TypeError(`${fn}: angle needs an axis in 3D`);
+      const axis = vector(o.axis, fn, 'axis', 3);
+      const len = Math.hypot(axis[0], axis[1], axis[2]);
+      if (!(len > 0)) throw new RangeError(`${fn}: axis must not be the zero vector`);
+      const s = Math.sin(angle / 2) / len;
+      q = [Math.cos(angle / 2), axis[0] * s, axis[1] * s, axis[2] * s];
+    } else {
+      q = [1, 0, 0, 0];
+    }
+    const qn = Math.hypot(...q);
+    if (!(qn > 0)) throw new RangeError(`${fn}: quaternion must not be zero`);
+    return [q[0] / qn, q[1] / qn, q[2] / qn, q[3] / qn, t[0], t[1], t[2]];
+  }
+
+  class TfTree {
+    #h = 0;
+    #dim;
+    constructor(root, opts) {
+      const fn = 'TfTree';
+      frameName(root, fn, 'root');
+      const o = options(opts, fn, ['dim']);
+      this.#dim = dimOption(o, fn);
+      const h = check(m.tfCreate(this.#dim, root));
+      this.#h = h;
+      registry?.register(this, () => m.tfDestroy(h), this);
+    }
+    #handle(fn) {
+      if (this.#h === 0) throw new TypeError(`TfTree.${fn}: the tree was disposed`);
+      return this.#h;
+    }
+    get dim() { return this.#dim; }
+    get disposed() { return this.#h === 0; }
+    get size() { return m.tfSize(this.#handle('size')); }
+    insert(name, parent, tf) {
+      const fn = 'TfTree.insert';
+      const h = this.#handle('insert');
+      frameName(name, fn, 'name');
+      frameName(parent, fn, 'parent');
+      return check(m.tfInsert(h, name, parent, ...rigid(tf, fn, this.#dim)));
+    }
+    erase(name) { return m.tfErase(this.#handle('erase'), frameName(name, 'TfTree.erase', 'name')); }
+    contains(name) { return m.tfContains(this.#handle('contains'), frameName(name, 'TfTree.contains', 'name')); }
+    tf(from, to) {
+      const fn = 'TfTree.tf';
+      const h = this.#handle('tf');
+      return check(m.tfGet(h, frameName(from, fn, 'from'), frameName(to, fn, 'to')));
+    }
+    transformPoints(from, to, points) {
+      const fn = 'TfTree.transformPoints';
+      const h = this.#handle('transformPoints');
+      frameName(from, fn, 'from');
+      frameName(to, fn, 'to');
+      const xyz = toF64(points, fn, 'points');
+      return withHeap([xyz], (p, n) => m.tfApply(h, from, to, p, n, this.#dim));
+    }
+    dispose() {
+      if (this.#h === 0) return;
+      registry?.unregister(this);
+      m.tfDestroy(this.#h);
+      this.#h = 0;
+    }
+    [DISPOSE]() { this.dispose(); }
+  }
+
   // Organised LiDAR: 16-byte little-endian float32 records x, y, z, intensity; (0,0,0) = no return (NaN point).
   // The cloud is stored column-major whatever the file layout: beam b of column c is point c * beams + b.
   function readOrganizedLidar(data, opts) {
@@ -444,6 +535,7 @@ function wrap(m) {
     fitLine,
     segment,
     StreamSegmenter,
+    TfTree,
     toSvg,
     toTikz,
     readOrganizedLidar,

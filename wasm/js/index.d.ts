@@ -221,14 +221,21 @@ export interface StreamSegmenter {
   readonly disposed: boolean;
 }
 
-export interface Transform2D { angle: number; translation: ArrayLike<number> }
+export interface Transform2D {
+  /** rotation angle (rad), counter-clockwise; default 0 */
+  angle?: number;
+  /** default [0, 0] */
+  translation?: ArrayLike<number>;
+}
 export interface Transform3D {
-  /** rotation as a unit quaternion [w, x, y, z]; or give angle + axis; default identity */
+  /** rotation as a quaternion [w, x, y, z] (normalised for you); or give angle + axis; default identity */
   quaternion?: ArrayLike<number>;
   angle?: number;
   axis?: ArrayLike<number>;
-  translation: ArrayLike<number>;
+  /** default [0, 0, 0] */
+  translation?: ArrayLike<number>;
 }
+/** v -> rotation * v + translation */
 export interface RigidTransform {
   dim: Dim;
   /** rotation matrix, row-major dim x dim */
@@ -237,18 +244,22 @@ export interface RigidTransform {
   /** homogeneous (dim+1) x (dim+1) matrix, row-major */
   matrix: Float64Array;
 }
-/** A tree of named frames holding rigid transformations (parent -> child). Construct it through the module:
- *  `new rtl.TfTree(rootName, { dim })`. */
+/** A tree of named frames holding rigid transformations, over rtl::TfTree<std::string, RigidTfND<dim, double>>.
+ *  Construct it through the module: `new rtl.TfTree(rootName, { dim })`. It owns wasm memory: call dispose()
+ *  (or use `using`); a FinalizationRegistry frees it if you forget. */
 export interface TfTree {
   readonly dim: Dim;
+  /** number of frames, the root included */
   readonly size: number;
-  /** adds frame `name` under `parent`; false if the parent is unknown or the name exists */
+  /** adds frame `name` under `parent`; `tf` maps coordinates of `parent` to coordinates of `name` (as in
+   *  rtl::TfTree). false (nothing changed) if the parent is unknown or the name exists */
   insert(name: string, parent: string, tf: Transform2D | Transform3D): boolean;
+  /** removes the frame and its subtree; false for the root or an unknown name */
   erase(name: string): boolean;
   contains(name: string): boolean;
-  /** the transformation that maps coordinates of frame `from` to frame `to` */
+  /** the transformation that maps coordinates of frame `from` to frame `to` (RangeError for an unknown frame) */
   tf(from: string, to: string): RigidTransform;
-  /** applies tf(from, to) to every point (NaN points stay NaN) */
+  /** applies tf(from, to) to every point (dim numbers each; NaN points stay NaN) */
   transformPoints(from: string, to: string, points: PointArray): Float64Array;
   dispose(): void;
   [Symbol.dispose](): void;
