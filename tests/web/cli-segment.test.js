@@ -1,0 +1,88 @@
+// bin/rtl.js with the package's segmenter: clusters of a CARMEN scan and of a LiDAR ring, the same as segment()
+// called directly, the bounds' effect, per-cluster line fits, and coloured clusters in the SVG.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import init from 'rtl-wasm';
+import { DATA, REPO, isReturn, parseCarmen, sameLine, tlsFit, xyOf } from './helpers.js';
+
+const CLI = join(REPO, 'bin', 'rtl.js');
+function rtl(args, input) {
+  const r = spawnSync(process.execPath, [CLI, ...args], { cwd: REPO, encoding: 'utf8', input, timeout: 60000 });
+  return { code: r.status, out: r.stdout, err: r.stderr };
+}
+
+describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
+  let tmp, pkg;
+  const scans = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
+  before(async () => { tmp = mkdtempSync(join(tmpdir(), 'rtl-cli-')); pkg = await init(); });
+  after(() => rmSync(tmp, { recursive: true, force: true }));
+
+  test('segments a CARMEN scan (the default action): clusters cover every return, gaps stay unlabelled', () => {
+    const r = rtl(['tests/data/intel.log', '--scan', '2']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    const scan = scans[2];
+    assert.equal(j.points, 180);
+    const { labels, clusters, ...params } = j.segmentation;
+    assert.deepEqual(params, { step: 3, lowerBound: 0.1, upperBound: 0.5 });
+    assert.equal(labels.length, 180);
+    assert.equal(clusters.flat().length, j.returns);
+    labels.forEach((l, i) => assert.equal(l >= 0, isReturn(scan.ranges[i]), `beam ${i}`));
+    clusters.forEach((c, ci) => c.forEach((i) => assert.equal(labels[i], ci)));
+    assert.ok(clusters.length > 1);
+    assert.equal(j.vectorization, undefined);
+    assert.equal(j.fits, undefined);
+    // The same labels as segment() called directly on the scan's points.
+    const points = new Float64Array(2 * scan.n).fill(NaN);
+    scan.ranges.forEach((rr, i) => {
+      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
+    });
+    assert.deepEqual(labels, Array.from(pkg.segment(points).labels));
+  });
+
+  test('tighter bounds and a step of 1 cut more clusters', () => {
+    const base = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2']).out).segmentation.clusters.length;
+    const strict = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2', '--lower', '0.02', '--upper', '0.05']).out);
+    assert.deepEqual([strict.segmentation.lowerBound, strict.segmentation.upperBound], [0.02, 0.05]);
+    assert.ok(strict.segmentation.clusters.length > base, `${strict.segmentation.clusters.length} vs ${base}`);
+    const step1 = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2', '--step', '1']).out);
+    assert.ok(step1.segmentation.clusters.length >= base);
+  });
+
+  test('--segment --fit fits each cluster of at least --min-points points', () => {
+    const r = rtl(['tests/data/intel.log', '--scan', '5', '-s', '--fit', '--min-points', '10']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    const big = j.segmentation.clusters.map((c, k) => [c, k]).filter(([c]) => c.length >= 10);
+    assert.ok(big.length >= 1);
+    assert.deepEqual(j.fits.map((f) => f.cluster), big.map(([, k]) => k));
+    for (const f of j.fits) {
+      const members = j.segmentation.clusters[f.cluster];
+      assert.equal(f.count, members.length);
+      const ref = tlsFit(xyOf(scans[5], members));
+      assert.ok(sameLine(f, ref, 1e-9), `cluster ${f.cluster}`);
+      assert.ok(Math.abs(f.rms - ref.rms) < 1e-9);
+    }
+  });
+
+  test('segments one ring of the organised binary scan (3D)', () => {
+    const r = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '1', '--upper', '1']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    assert.equal(j.dim, 3);
+    assert.equal(j.segmentation.labels.length, 2048);
+    assert.equal(j.segmentation.clusters.flat().length, j.returns);
+    assert.ok(j.segmentation.clusters.length >= 1);
+  });
+
+  test('SVG of a segmented scan: one coloured group per cluster', () => {
+    const r = rtl(['tests/data/intel.log', '--scan', '2', '-f', 'svg']);
+    assert.equal(r.code, 0, r.err);
+    const n = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2']).out).segmentation.clusters.length;
+    assert.equal([...r.out.matchAll(/<g class="cluster" data-cluster="\d+"/g)].length, n);
+  });
+});

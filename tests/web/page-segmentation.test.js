@@ -1,0 +1,155 @@
+// The demo page in headless Debian Chromium, segmentation: labels and gaps of a real scan, cluster colours on the
+// canvas, the effect of the distance bounds, fitting a clicked cluster, and clusters in the SVG export.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import init from 'rtl-wasm';
+import {
+  DATA, isReturn, launchBrowser, parseCarmen, resultsDir, sameLine, startServer, tlsFit, watchConsole, xyOf,
+} from './helpers.js';
+
+const TIMEOUT = 30000;
+const PALETTE = [0x0072B2, 0xE69F00, 0x009E73, 0xD55E00, 0xCC79A7, 0x56B4E9, 0x8C6D1F, 0x1B7837, 0x762A83, 0x332288];
+
+describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 240000 }, () => {
+  let server, browser, page, problems;
+  const intel = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
+  const scan = intel[0];
+
+  before(async () => {
+    server = await startServer();
+    browser = await launchBrowser();
+    page = browser.context.pages()[0] ?? await browser.context.newPage();
+    problems = watchConsole(page);
+    await page.goto(server.pageUrl);
+    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
+  });
+
+  after(async () => {
+    try { if (browser) await browser.close(); } finally { if (server) await server.close(); }
+  });
+
+  const state = () => page.evaluate(() => window.__rtl);
+  const revision = () => page.evaluate(() => window.__rtl.revision);
+  async function settled(previousRevision) {
+    await page.waitForFunction((r) => window.__rtl.revision > r, previousRevision, { timeout: TIMEOUT });
+    return state();
+  }
+  async function settledWith(settings) {
+    await page.waitForFunction((want) => window.__rtl.settings &&
+      Object.entries(want).every(([k, v]) => window.__rtl.settings[k] === v), settings, { timeout: TIMEOUT });
+    return state();
+  }
+
+  test('the build has segment()', async () => {
+    const r = await state();
+    assert.deepEqual(r.errors, []);
+    assert.equal(r.features.segment, true);
+  });
+
+  test('segmentation labels every return, marks gaps, and colours the clusters on the canvas', async () => {
+    const r = await state();
+    const seg = r.segmentation;
+    assert.equal(seg.labels.length, 180);
+    seg.labels.forEach((l, i) => {
+      if (isReturn(scan.ranges[i])) assert.ok(l >= 0 && l < seg.clusterCount, `beam ${i} labelled ${l}`);
+      else assert.equal(l, -1, `gap beam ${i}`);
+    });
+    assert.equal(seg.clusterSizes.reduce((a, b) => a + b, 0), r.validCount);
+    assert.ok(seg.clusterCount >= 2 && seg.clusterCount < r.validCount / 2, `${seg.clusterCount} clusters`);
+    // Neighbouring returns in one cluster are closer than the upper bound times the step (a chain, not a jump).
+    const xy = (i) => [scan.ranges[i] * Math.cos(scan.angles[i]), scan.ranges[i] * Math.sin(scan.angles[i])];
+    for (let i = 1; i < 180; i++) {
+      if (seg.labels[i] >= 0 && seg.labels[i] === seg.labels[i - 1]) {
+        const [a, b] = [xy(i), xy(i - 1)];
+        assert.ok(Math.hypot(a[0] - b[0], a[1] - b[1]) < 3 * 0.5 + 1e-9, `beams ${i - 1}, ${i}`);
+      }
+    }
+    const colours = await page.evaluate(() => {
+      const c = document.getElementById('canvas');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      const seen = new Map();
+      for (let i = 0; i < d.length; i += 4) {
+        const key = (d[i] << 16) | (d[i + 1] << 8) | d[i + 2];
+        seen.set(key, (seen.get(key) ?? 0) + 1);
+      }
+      return [...seen.entries()];
+    });
+    // Points are drawn in their cluster's palette colour: the largest cluster's colour, and at least two colours
+    // when two clusters have 10+ points (small clusters may hide under the segment lines).
+    const painted = (c) => colours.some(([k, n]) => k === c && n >= 10);
+    const largest = seg.clusterSizes.indexOf(seg.largest);
+    assert.ok(painted(PALETTE[largest % PALETTE.length]), `largest cluster ${largest} painted`);
+    const big = seg.clusterSizes.filter((n) => n >= 10).length;
+    const drawn = PALETTE.filter(painted);
+    assert.ok(drawn.length >= Math.min(2, big), `cluster colours on canvas: ${drawn.length}, clusters with 10+ points: ${big}`);
+    assert.match(await page.textContent('#seg-count'), new RegExp(`^${seg.clusterCount} \\(`));
+  });
+
+  test('the page shows the same clusters as the package computes in Node for the same scan and settings', async () => {
+    const rtl = await init();
+    const points = new Float64Array(2 * scan.n).fill(NaN);
+    scan.ranges.forEach((r, i) => {
+      if (isReturn(r)) { points[2 * i] = r * Math.cos(scan.angles[i]); points[2 * i + 1] = r * Math.sin(scan.angles[i]); }
+    });
+    const ref = rtl.segment(points, { step: 3, lowerBound: 0.1, upperBound: 0.5 });
+    const r = await state();
+    assert.deepEqual(r.segmentation.labels, Array.from(ref.labels));
+    assert.deepEqual(r.segmentation.clusterSizes, ref.clusters.map((c) => c.indices.length));
+  });
+
+  test('tighter distance bounds give more clusters; restoring them restores the result', async () => {
+    const before = (await state()).segmentation.clusterCount;
+    await page.fill('#seg-lower', '0.02');
+    await page.fill('#seg-upper', '0.05');
+    const strict = (await settledWith({ upperBound: 0.05, lowerBound: 0.02 })).segmentation.clusterCount;
+    assert.ok(strict > before, `${strict} clusters with 2-5 cm bounds vs ${before} with defaults`);
+    await page.screenshot({ path: join(resultsDir(), 'page-segmentation-strict.png') });
+    // Bounds the wrong way round: the page says what to fix and keeps the last result.
+    const rev = await revision();
+    await page.fill('#seg-lower', '0.1');
+    await page.waitForFunction(() => window.__rtl.inputError !== null && window.__rtl.inputError !== undefined, null, { timeout: TIMEOUT });
+    assert.match(await page.textContent('#status'), /Check the settings: the upper bound \(0\.05 m\) is below the lower bound \(0\.1 m\)/);
+    assert.equal(await page.getAttribute('#seg-upper', 'aria-invalid'), 'true');
+    assert.equal(await revision(), rev);
+    await page.fill('#seg-upper', '0.5');
+    assert.equal((await settledWith({ upperBound: 0.5, lowerBound: 0.1 })).segmentation.clusterCount, before);
+    assert.equal(await page.getAttribute('#seg-upper', 'aria-invalid'), null);
+  });
+
+  test('clicking a cluster fits its points', async () => {
+    const r0 = await state();
+    const largest = r0.segmentation.clusterSizes.indexOf(r0.segmentation.largest);
+    const member = r0.segmentation.labels.indexOf(largest);
+    const at = await page.evaluate((i) => window.__rtl.clientPoint(i), member);
+    const rev = await revision();
+    await page.mouse.click(at.x, at.y);
+    const r = await settled(rev);
+    assert.equal(r.fit.source, `cluster ${largest + 1}`);
+    assert.deepEqual(r.fit.indices, r0.segmentation.labels.flatMap((l, i) => (l === largest ? [i] : [])));
+    assert.ok(r.fit.rms < r0.fit.rms, `cluster fit rms ${r.fit.rms} below whole-scan ${r0.fit.rms}`);
+    const ref = tlsFit(xyOf(scan, r.fit.indices));
+    assert.ok(sameLine(r.fit, ref, 1e-6));
+    assert.ok(Math.abs(r.fit.rms - ref.rms) < 1e-6);
+    await page.screenshot({ path: join(resultsDir(), 'page-cluster-fit.png') });
+  });
+
+  test('the SVG export colours the clusters', async () => {
+    const r = await state();
+    const [svgDl] = await Promise.all([page.waitForEvent('download'), page.click('#dl-svg')]);
+    const svg = readFileSync(await svgDl.path(), 'utf8');
+    const groups = [...svg.matchAll(/<g class="cluster" data-cluster="(\d+)"/g)].map((m) => Number(m[1]));
+    assert.deepEqual(groups, [...Array(r.segmentation.clusterCount).keys()]);
+    // The export uses the page's cluster colours.
+    const fills = [...svg.matchAll(/<g class="cluster" data-cluster="(\d+)" fill="(#[0-9a-fA-F]{6})"/g)];
+    assert.equal(fills.length, groups.length);
+    for (const [, k, fill] of fills) assert.equal(parseInt(fill.slice(1), 16), PALETTE[Number(k) % PALETTE.length], `cluster ${k}`);
+    assert.equal(svg.match(/<circle /g).length, r.validCount);
+  });
+
+  test('no console errors, failed requests or page errors during the session', async () => {
+    assert.deepEqual((await state()).errors, []);
+    assert.deepEqual(problems, []);
+  });
+});
