@@ -58,14 +58,6 @@ describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 2400
     });
     assert.equal(seg.clusterSizes.reduce((a, b) => a + b, 0), r.validCount);
     assert.ok(seg.clusterCount >= 2 && seg.clusterCount < r.validCount / 2, `${seg.clusterCount} clusters`);
-    // Neighbouring returns in one cluster are closer than the upper bound times the step (a chain, not a jump).
-    const xy = (i) => [scan.ranges[i] * Math.cos(scan.angles[i]), scan.ranges[i] * Math.sin(scan.angles[i])];
-    for (let i = 1; i < 180; i++) {
-      if (seg.labels[i] >= 0 && seg.labels[i] === seg.labels[i - 1]) {
-        const [a, b] = [xy(i), xy(i - 1)];
-        assert.ok(Math.hypot(a[0] - b[0], a[1] - b[1]) < 3 * 0.5 + 1e-9, `beams ${i - 1}, ${i}`);
-      }
-    }
     const colours = await page.evaluate(() => {
       const c = document.getElementById('canvas');
       const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
