@@ -1,0 +1,324 @@
+// Vectorization: ordered point chains -> line segments (2D, 3D) or plane polygons (3D).
+//
+// Every Vectorizer* runs a fixed pipeline of the vect/ stages and returns false as soon as a stage fails; the
+// results of the last call stay available through approximations(), indices() and the output accessor.
+// Common preconditions, checked: at least 2 points, all coordinates finite, sigma > 0 (and delta > 0 where
+// used); otherwise operator() returns false and the outputs are empty. Defaults: sigma 0.03, delta 3.
+// setMaxSize(n) sizes the internal buffers for chains of up to n points, so later calls do not allocate for them.
+#pragma once
+
+#include <cmath>
+#include <list>
+#include <map>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include "rtl/Core.h"
+#include "rtl/vect/ApproximationTlsLine2D.h"
+#include "rtl/vect/ApproximationTlsLine3D.h"
+#include "rtl/vect/ApproximationTlsPlane3D.h"
+#include "rtl/vect/ExtractorChainFast.h"
+#include "rtl/vect/ExtractorChainIncremental.h"
+#include "rtl/vect/OptimizerContinuity2D.h"
+#include "rtl/vect/OptimizerTotalError.h"
+#include "rtl/vect/PostprocessorPolyline2D.h"
+#include "rtl/vect/PostprocessorProjectEndpoints.h"
+#include "rtl/vect/PrecArray.h"
+#include "rtl/vect/PrecSums.h"
+#include "rtl/vect/VectorizerPointElimination.h"
+
+namespace rtl
+{
+    namespace vect_detail
+    {
+        template<class V>
+        bool allFinite(const std::vector<V> &pts)
+        {
+            for (const auto &p : pts)
+                if (!p.data().allFinite())
+                    return false;
+            return true;
+        }
+
+        template<typename E>
+        bool validParameter(E v) { return v > E(0) && std::isfinite(static_cast<double>(v)); }
+
+        //! Shared state of the vectorizers: approximations and index ranges of the last call.
+        template<class Approximation>
+        class VectorizerBase
+        {
+        public:
+            typedef typename Approximation::ElementType ElementType;
+            typedef typename Approximation::ComputeType ComputeType;
+            typedef typename Approximation::VectorType VectorType;
+            typedef Approximation ApproximationType;
+            typedef std::pair<size_t, size_t> IndexType;
+
+            const std::vector<ApproximationType> &approximations() const { return approx; }
+            const std::vector<IndexType> &indices() const { return idx; }
+
+        protected:
+            std::vector<ApproximationType> approx;
+            std::vector<IndexType> idx;
+            ElementType sigma{static_cast<ElementType>(0.03)};
+
+            void reserveBase(size_t size) { approx.reserve(size / 2 + 1); idx.reserve(size / 2 + 1); }
+            bool fail() { approx.clear(); idx.clear(); return false; }
+        };
+    }
+
+    //! Incremental TLS lines, trimmed by the projections of each range's end points.
+    template<typename Element, typename Compute>
+    class VectorizerITLSProjections2D : public vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>>
+    {
+        typedef vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>> Base;
+    public:
+        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+        using typename Base::ApproximationType; using typename Base::IndexType;
+        typedef typename ApproximationType::ConstrainedType OutputType;
+
+        VectorizerITLSProjections2D() = default;
+        ~VectorizerITLSProjections2D() = default;
+
+        void setSigma(ElementType sigma) { this->sigma = sigma; }
+        void setMaxSize(size_t size) { this->reserveBase(size); }
+
+        bool operator()(const std::vector<VectorType> &pts)
+        {
+            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::allFinite(pts) ||
+                (extractor.setSigma(this->sigma), !extractor(pts, this->approx, this->idx)) || !post(pts, this->approx, this->idx))
+            {
+                this->fail();
+                post(pts, this->approx, this->idx);
+                return false;
+            }
+            return true;
+        }
+        const std::vector<OutputType> &lineSegments() const { return post.output(); }
+
+    private:
+        ExtractorChainIncremental<ApproximationType> extractor;
+        PostprocessorProjectEndpoints<ApproximationType> post;
+    };
+
+    //! FTLS: prefix sums, fast chain extraction, continuity repair, polyline of line crossings.
+    template<typename Element, typename Compute>
+    class VectorizerFTLSPolyline2D : public vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>>
+    {
+        typedef vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>> Base;
+    public:
+        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+        using typename Base::ApproximationType; using typename Base::IndexType;
+        typedef PrecArray2D<Element, Compute> PrecArrayType;
+        typedef typename ApproximationType::ConstrainedType OutputType;
+
+        VectorizerFTLSPolyline2D() = default;
+        ~VectorizerFTLSPolyline2D() = default;
+
+        void setSigma(ElementType sigma) { this->sigma = sigma; }
+        void setDelta(ElementType delta) { this->delta = delta; }
+        void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }
+
+        bool operator()(const std::vector<VectorType> &pts)
+        {
+            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::validParameter(delta))
+                return failAll(pts);
+            prec.precompute(pts);
+            if (!prec.array.row(static_cast<Eigen::Index>(pts.size())).allFinite())
+                return failAll(pts);
+            extractor.setSigma(this->sigma);
+            continuity.setSigma(this->sigma);
+            continuity.setDelta(delta);
+            if (!extractor(prec, this->approx, this->idx) || !continuity(pts, prec, this->approx, this->idx) ||
+                !polyline(pts, this->approx, this->idx))
+                return failAll(pts);
+            return true;
+        }
+        std::vector<OutputType> lineSegments() const { return polyline.lineSegments(); }
+        //! Polyline vertices (one more than the segments).
+        const std::vector<VectorType> &vertices() const { return polyline.vertices(); }
+
+    private:
+        ElementType delta{3};
+        bool failAll(const std::vector<VectorType> &pts) { this->fail(); polyline(pts, this->approx, this->idx); return false; }
+        PrecArrayType prec;
+        ExtractorChainFast<PrecArrayType, ApproximationType> extractor;
+        OptimizerContinuity2D<PrecArrayType, ApproximationType> continuity;
+        PostprocessorPolyline2D<ApproximationType> polyline;
+    };
+
+    //! AFTLS: FTLS with the total-error optimizer between extraction and continuity repair.
+    template<typename Element, typename Compute>
+    class VectorizerAFTLSPolyline2D : public vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>>
+    {
+        typedef vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>> Base;
+    public:
+        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+        using typename Base::ApproximationType; using typename Base::IndexType;
+        typedef PrecArray2D<Element, Compute> PrecArrayType;
+        typedef typename ApproximationType::ConstrainedType OutputType;
+
+        VectorizerAFTLSPolyline2D() = default;
+        ~VectorizerAFTLSPolyline2D() = default;
+
+        void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }
+        void setSigma(ElementType sigma) { this->sigma = sigma; }
+        void setSimplexShift(size_t simplex_shift) { optimizer.setSimplexShift(simplex_shift); }
+        void setMaxIterations(size_t max_iterations) { optimizer.setMaxIterations(max_iterations); }
+        void setDelta(ElementType delta) { this->delta = delta; }
+
+        bool operator()(const std::vector<VectorType> &pts)
+        {
+            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::validParameter(delta))
+                return failAll(pts);
+            prec.precompute(pts);
+            if (!prec.array.row(static_cast<Eigen::Index>(pts.size())).allFinite())
+                return failAll(pts);
+            extractor.setSigma(this->sigma);
+            optimizer.setSigma(this->sigma);
+            continuity.setSigma(this->sigma);
+            continuity.setDelta(delta);
+            if (!extractor(prec, this->approx, this->idx) || !optimizer(pts, prec, this->approx, this->idx) ||
+                !continuity(pts, prec, this->approx, this->idx) || !polyline(pts, this->approx, this->idx))
+                return failAll(pts);
+            return true;
+        }
+        std::vector<OutputType> lineSegments() const { return polyline.lineSegments(); }
+        const std::vector<VectorType> &vertices() const { return polyline.vertices(); }
+
+    private:
+        ElementType delta{3};
+        bool failAll(const std::vector<VectorType> &pts) { this->fail(); polyline(pts, this->approx, this->idx); return false; }
+        PrecArrayType prec;
+        ExtractorChainFast<PrecArrayType, ApproximationType> extractor;
+        OptimizerTotalError<PrecArrayType, ApproximationType> optimizer;
+        OptimizerContinuity2D<PrecArrayType, ApproximationType> continuity;
+        PostprocessorPolyline2D<ApproximationType> polyline;
+    };
+
+    //! Incremental TLS 3D lines, trimmed by the projections of each range's end points.
+    template<typename Element, typename Compute>
+    class VectorizerITLSProjections3D : public vect_detail::VectorizerBase<ApproximationTlsLine3D<Element, Compute>>
+    {
+        typedef vect_detail::VectorizerBase<ApproximationTlsLine3D<Element, Compute>> Base;
+    public:
+        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+        using typename Base::ApproximationType; using typename Base::IndexType;
+        typedef typename ApproximationType::ConstrainedType OutputType;
+
+        VectorizerITLSProjections3D() = default;
+        ~VectorizerITLSProjections3D() = default;
+
+        void setSigma(ElementType sigma) { this->sigma = sigma; }
+        void setMaxSize(size_t size) { this->reserveBase(size); }
+
+        bool operator()(const std::vector<VectorType> &pts)
+        {
+            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::allFinite(pts) ||
+                (extractor.setSigma(this->sigma), !extractor(pts, this->approx, this->idx)) || !post(pts, this->approx, this->idx))
+            {
+                this->fail();
+                post(pts, this->approx, this->idx);
+                return false;
+            }
+            return true;
+        }
+        const std::vector<OutputType> &lineSegments() const { return post.output(); }
+
+    private:
+        ExtractorChainIncremental<ApproximationType> extractor;
+        PostprocessorProjectEndpoints<ApproximationType> post;
+    };
+
+    namespace vect_detail
+    {
+        //! Prefix sums -> fast extraction -> [total-error optimizer] -> projected end points, for 3D primitives.
+        template<class Approximation, bool optimize>
+        class VectorizerFast3D : public VectorizerBase<Approximation>
+        {
+            typedef VectorizerBase<Approximation> Base;
+        public:
+            using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+            using typename Base::ApproximationType; using typename Base::IndexType;
+            typedef PrecArray3D<ElementType, ComputeType> PrecArrayType;
+            typedef typename ApproximationType::ConstrainedType OutputType;
+
+            void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }
+            void setSigma(ElementType sigma) { this->sigma = sigma; }
+
+            bool operator()(const std::vector<VectorType> &pts)
+            {
+                if (pts.size() < 2 || !validParameter(this->sigma))
+                    return failAll(pts);
+                prec.precompute(pts);
+                if (!prec.array.row(static_cast<Eigen::Index>(pts.size())).allFinite())
+                    return failAll(pts);
+                extractor.setSigma(this->sigma);
+                if (!extractor(prec, this->approx, this->idx))
+                    return failAll(pts);
+                if constexpr (optimize)
+                {
+                    optimizer.setSigma(this->sigma);
+                    if (!optimizer(pts, prec, this->approx, this->idx))
+                        return failAll(pts);
+                }
+                return post(pts, this->approx, this->idx) || failAll(pts);
+            }
+
+        protected:
+            bool failAll(const std::vector<VectorType> &pts) { this->fail(); post(pts, this->approx, this->idx); return false; }
+            PrecArrayType prec;
+            ExtractorChainFast<PrecArrayType, ApproximationType> extractor;
+            OptimizerTotalError<PrecArrayType, ApproximationType> optimizer;
+            PostprocessorProjectEndpoints<ApproximationType> post;
+        };
+    }
+
+    //! FTLS 3D lines, trimmed by the projections of each range's end points.
+    template<typename Element, typename Compute>
+    class VectorizerFTLSProjections3D : public vect_detail::VectorizerFast3D<ApproximationTlsLine3D<Element, Compute>, false>
+    {
+    public:
+        VectorizerFTLSProjections3D() = default;
+        ~VectorizerFTLSProjections3D() = default;
+        const std::vector<typename ApproximationTlsLine3D<Element, Compute>::ConstrainedType> &lineSegments() const { return this->post.output(); }
+    };
+
+    //! AFTLS 3D lines (total-error optimizer), trimmed by the projections of each range's end points.
+    template<typename Element, typename Compute>
+    class VectorizerAFTLSProjections3D : public vect_detail::VectorizerFast3D<ApproximationTlsLine3D<Element, Compute>, true>
+    {
+    public:
+        typedef typename ApproximationTlsLine3D<Element, Compute>::ConstrainedType LineSegmentType;
+        VectorizerAFTLSProjections3D() = default;
+        ~VectorizerAFTLSProjections3D() = default;
+        void setSimplexShift(size_t simplex_shift) { this->optimizer.setSimplexShift(simplex_shift); }
+        void setMaxIterations(size_t max_iterations) { this->optimizer.setMaxIterations(max_iterations); }
+        const std::vector<LineSegmentType> &lineSegments() const { return this->post.output(); }
+    };
+
+    //! AFTLS 3D planes: polygons of each range's points projected onto its fitted plane.
+    template<typename Element, typename Compute>
+    class VectorizerAFTLSPlaneProjections3D : public vect_detail::VectorizerFast3D<ApproximationTlsPlane3D<Element, Compute>, true>
+    {
+    public:
+        VectorizerAFTLSPlaneProjections3D() = default;
+        ~VectorizerAFTLSPlaneProjections3D() = default;
+        void setSimplexShift(size_t simplex_shift) { this->optimizer.setSimplexShift(simplex_shift); }
+        void setMaxIterations(size_t max_iterations) { this->optimizer.setMaxIterations(max_iterations); }
+        const std::vector<typename ApproximationTlsPlane3D<Element, Compute>::ConstrainedType> &polygons() const { return this->post.output(); }
+    };
+
+    using VectorizerDouglasPeucker2f = VectorizerDouglasPeuckerND<2, float>;
+    using VectorizerDouglasPeucker2d = VectorizerDouglasPeuckerND<2, double>;
+    using VectorizerDouglasPeucker3f = VectorizerDouglasPeuckerND<3, float>;
+    using VectorizerDouglasPeucker3d = VectorizerDouglasPeuckerND<3, double>;
+    using VectorizerReumannWitkam2f = VectorizerReumannWitkamND<2, float>;
+    using VectorizerReumannWitkam2d = VectorizerReumannWitkamND<2, double>;
+    using VectorizerReumannWitkam3f = VectorizerReumannWitkamND<3, float>;
+    using VectorizerReumannWitkam3d = VectorizerReumannWitkamND<3, double>;
+}

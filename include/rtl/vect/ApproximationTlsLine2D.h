@@ -1,0 +1,137 @@
+// ApproximationTlsLine2D: total-least-squares line of a 2D point set, from its PrecSums in O(1).
+//
+// The line passes through the centroid along the major eigenvector of the covariance; errSquared() is the minor
+// eigenvalue (the mean squared orthogonal residual). The eigenvector is taken in closed form from whichever of the
+// two eigenvector formulas is better conditioned, so exactly axis-aligned sets get an exact axis direction (the
+// published implementation was 90 degrees off there, rtl-api 6.10 item 1). Geometry is kept in ComputeType and
+// crossings are computed in it (item 2); accessors return ElementType.
+#pragma once
+
+#include <cmath>
+#include <iterator>
+
+#include "rtl/core/LineSegmentND.h"
+#include "rtl/core/VectorND.h"
+#include "rtl/vect/PrecSums.h"
+#include "rtl/vect/TlsDetail.h"
+
+namespace rtl
+{
+    template<typename Element, typename Compute>
+    class ApproximationTlsLine2D
+    {
+    public:
+        typedef Element ElementType;
+        typedef Compute ComputeType;
+        typedef VectorND<2, ElementType> VectorType;
+        typedef LineSegmentND<2, ElementType> ConstrainedType;
+        typedef PrecSums2D<ComputeType> PrecSumsType;
+        typedef VectorND<2, ComputeType> ComputeVectorType;
+
+        ApproximationTlsLine2D() = default;
+        explicit ApproximationTlsLine2D(PrecSumsType ps) { operator()(ps); }
+        ~ApproximationTlsLine2D() = default;
+
+        //! Implicit equation a x + b y + c = 0 with (a, b) = normal().
+        [[nodiscard]] ElementType a() const { return static_cast<ElementType>(-dy); }
+        [[nodiscard]] ElementType b() const { return static_cast<ElementType>(dx); }
+        [[nodiscard]] ElementType c() const { return static_cast<ElementType>(dy * mx - dx * my); }
+        [[nodiscard]] VectorType direction() const { return VectorType(static_cast<ElementType>(dx), static_cast<ElementType>(dy)); }
+        [[nodiscard]] VectorType normal() const { return VectorType(static_cast<ElementType>(-dy), static_cast<ElementType>(dx)); }
+        //! The centroid of the fitted points (a point of the line).
+        [[nodiscard]] VectorType point() const { return VectorType(static_cast<ElementType>(mx), static_cast<ElementType>(my)); }
+        //! Mean squared orthogonal residual of the fitted points.
+        [[nodiscard]] ElementType errSquared() const { return static_cast<ElementType>(err); }
+        [[nodiscard]] ComputeType errSquaredCompute() const { return err; }
+        [[nodiscard]] ComputeType count() const { return n; }
+
+        //! Refits from the sums of a point set. An empty set gives the x axis with zero error; a set of coincident
+        //! points (isotropic covariance) gets the direction (1, 0).
+        bool operator()(PrecSumsType ps)
+        {
+            const vect_detail::Moments2D<ComputeType> m(ps);
+            n = m.n; mx = m.mx; my = m.my;
+            const ComputeType hd = (m.cxx - m.cyy) / 2, r = std::hypot(hd, m.cxy), mean = (m.cxx + m.cyy) / 2;
+            err = std::max(ComputeType(0), mean - r);
+            ComputeType vx, vy;
+            if (hd >= 0) { vx = hd + r; vy = m.cxy; }
+            else { vx = m.cxy; vy = r - hd; }
+            const ComputeType len = std::hypot(vx, vy);
+            if (len > ComputeType(0) && std::isfinite(len)) { dx = vx / len; dy = vy / len; }
+            else { dx = 1; dy = 0; }
+            return true;
+        }
+
+        //! Fit of points given relative to `origin` (sums of p - origin): better conditioned for far-off points.
+        bool operator()(PrecSumsType ps, const ComputeVectorType &origin)
+        {
+            operator()(ps);
+            mx += origin.x(); my += origin.y();
+            return true;
+        }
+
+        //! Orthogonal projection onto the line (computed in ComputeType).
+        ComputeVectorType projectCompute(const ComputeVectorType &p) const
+        {
+            const ComputeType t = (p.x() - mx) * dx + (p.y() - my) * dy;
+            return ComputeVectorType(mx + t * dx, my + t * dy);
+        }
+        VectorType project(const VectorType &pt) const { return projectCompute(pt.template cast<ComputeType>()).template cast<ElementType>(); }
+
+        //! Segment between the projections of beg and end, directed from beg to end.
+        ConstrainedType trim(const VectorType &beg, const VectorType &end) const
+        {
+            const VectorType pb = project(beg), pe = project(end);
+            const ComputeType t = (static_cast<ComputeType>(end.x()) - beg.x()) * dx + (static_cast<ComputeType>(end.y()) - beg.y()) * dy;
+            const ComputeType s = t < 0 ? -1 : 1;
+            return ConstrainedType(pb, pe, VectorType(static_cast<ElementType>(s * dx), static_cast<ElementType>(s * dy)));
+        }
+        //! Trims by the first and the last element of [beg, end) (non-empty).
+        template<class Iter>
+        ConstrainedType trim(Iter beg, Iter end) const { return trim(*beg, *std::prev(end)); }
+
+        //! Crossing of two lines in ComputeType; false if they are parallel (or the crossing is not finite).
+        static bool getCrossingCompute(const ApproximationTlsLine2D &l1, const ApproximationTlsLine2D &l2, ComputeVectorType &crossing)
+        {
+            const ComputeType den = l1.dx * l2.dy - l1.dy * l2.dx;
+            if (den == ComputeType(0))
+                return false;
+            const ComputeType t = ((l2.mx - l1.mx) * l2.dy - (l2.my - l1.my) * l2.dx) / den;
+            const ComputeVectorType c(l1.mx + t * l1.dx, l1.my + t * l1.dy);
+            if (!std::isfinite(c.x()) || !std::isfinite(c.y()))
+                return false;
+            crossing = c;
+            return true;
+        }
+        static bool getCrossing(const ApproximationTlsLine2D &l1, const ApproximationTlsLine2D &l2, VectorType &crossing)
+        {
+            ComputeVectorType c;
+            if (!getCrossingCompute(l1, l2, c))
+                return false;
+            crossing = c.template cast<ElementType>();
+            return true;
+        }
+
+        //! Mean squared orthogonal residual of a point set given by its sums.
+        static ElementType getErrorSquared(PrecSumsType ps) { return static_cast<ElementType>(errorSquaredCompute(ps)); }
+        static ComputeType errorSquaredCompute(const PrecSumsType &ps)
+        {
+            const vect_detail::Moments2D<ComputeType> m(ps);
+            return std::max(ComputeType(0), (m.cxx + m.cyy) / 2 - std::hypot((m.cxx - m.cyy) / 2, m.cxy));
+        }
+        //! errorSquared(ps) < sigma2, decided without square roots (the minor eigenvalue is below sigma2 iff
+        //! cov - sigma2 I is not positive semidefinite). False for NaN sums.
+        static bool errorBelow(const PrecSumsType &ps, ComputeType sigma2)
+        {
+            const ComputeType n = ps.cnt(), t = n * n * sigma2;
+            const ComputeType a = n * ps.sx2() - ps.sx() * ps.sx() - t, b = n * ps.sy2() - ps.sy() * ps.sy() - t,
+                              c = n * ps.sxy() - ps.sx() * ps.sy();
+            if (!std::isfinite(a + b + c))
+                return false;
+            return a < 0 || b < 0 || a * b < c * c;
+        }
+
+    private:
+        ComputeType mx{0}, my{0}, dx{1}, dy{0}, err{0}, n{0};
+    };
+}

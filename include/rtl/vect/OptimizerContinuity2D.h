@@ -1,0 +1,233 @@
+// OptimizerContinuity2D: makes consecutive 2D lines meet near their shared boundary, so that the polyline built from
+// their crossings (PostprocessorPolyline2D) follows the data. A pair passes when the lines cross within delta of
+// the midpoint of the two boundary points (crossing computed in ComputeType).
+//
+// A failing pair is repaired by the first of these that works; every new range keeps >= 2 points and, when a sigma
+// is set, an RMS residual < sigma (the published version let split ranges exceed sigma and gave up on pairs of
+// fewer than 6 points, rtl-api 6.10 items 3 and 4):
+//   1. move the boundary by up to 3 points, if both pieces then pass the pair test;
+//   2. merge the pair into one range (the vertex disappears), if it fits and its new neighbour pairs pass;
+//   3. split the combined range into three equal parts (the published repair), if all three fit and pass;
+//   4. re-partition a window of neighbouring ranges: a small dynamic programme over candidate breakpoints near
+//      the window's boundaries finds the fewest ranges that fit sigma and whose every pair (including the two
+//      pairs with the ranges outside the window) passes (e.g. a 2-point "bridge" range across a step);
+//   5. as a last resort, bridge the two boundary points without checking and let the loop re-check.
+// The repaired pairs are re-checked; a work budget proportional to the input bounds the total effort.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "rtl/core/VectorND.h"
+
+namespace rtl
+{
+    template<class SumArray, class Approximation>
+    class OptimizerContinuity2D
+    {
+    public:
+        typedef typename Approximation::ElementType ElementType;
+        typedef typename Approximation::ComputeType ComputeType;
+        typedef typename Approximation::VectorType VectorType;
+        typedef typename Approximation::ConstrainedType LineSegmentType;
+        typedef std::pair<size_t, size_t> IndexType;
+        typedef VectorND<2, ComputeType> ComputeVectorType;
+
+        OptimizerContinuity2D() = default;
+        ~OptimizerContinuity2D() = default;
+
+        void setDelta(ElementType delta) { delta2 = static_cast<ComputeType>(delta) * static_cast<ComputeType>(delta); }
+        //! RMS bound that repaired ranges must respect (default: none, as in the published version).
+        void setSigma(ElementType sigma) { sigma2 = static_cast<ComputeType>(sigma) * static_cast<ComputeType>(sigma); }
+
+        //! Repairs `lines`/`indices` in place. False if a pair could not be repaired (inputs then unspecified but
+        //! consistent), if the inputs are inconsistent, or if delta is not positive.
+        bool operator()(const std::vector<VectorType> &pts, const SumArray &sum_array, std::vector<Approximation> &lines,
+                        std::vector<IndexType> &indices)
+        {
+            if (lines.size() != indices.size() || indices.empty() || !(delta2 > ComputeType(0)))
+                return false;
+            if (sum_array.size() == 0 || indices.back().second > sum_array.size() - 1 || indices.back().second > pts.size())
+                return false;
+            size_t budget = 16 * indices.size() + 4 * pts.size() + 64;
+            size_t i = 0;
+            while (i + 1 < indices.size())
+            {
+                if (pairOk(pts, lines, indices, i)) { ++i; continue; }
+                if (budget-- == 0 || !repair(pts, sum_array, lines, indices, i))
+                    return false;
+                i = i > 0 ? i - 1 : 0;
+            }
+            return true;
+        }
+
+    private:
+        ComputeType delta2{9};
+        ComputeType sigma2{std::numeric_limits<ComputeType>::infinity()};
+
+        bool fits(const SumArray &a, size_t b, size_t e) const
+        {
+            return e - b >= 2 && (e - b == 2 || Approximation::errorBelow(a.sums(b, e), sigma2) || sigma2 == std::numeric_limits<ComputeType>::infinity());
+        }
+
+        bool crossingOk(const std::vector<VectorType> &pts, const Approximation &l1, const Approximation &l2, size_t boundary) const
+        {
+            ComputeVectorType x;
+            if (!Approximation::getCrossingCompute(l1, l2, x))
+                return false;
+            const ComputeVectorType m = (pts[boundary - 1].template cast<ComputeType>() + pts[boundary].template cast<ComputeType>()) * ComputeType(0.5);
+            return (x - m).lengthSquared() <= delta2;
+        }
+
+        bool pairOk(const std::vector<VectorType> &pts, const std::vector<Approximation> &l, const std::vector<IndexType> &idx, size_t i) const
+        {
+            return crossingOk(pts, l[i], l[i + 1], idx[i].second);
+        }
+
+        //! Replaces ranges [i, i + cnt) by `ranges` (a partition of the same span) if `check` accepts the result.
+        bool tryReplace(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
+                        std::vector<IndexType> &indices, size_t i, size_t cnt, const std::vector<IndexType> &ranges, bool check) const
+        {
+            for (const auto &r : ranges)
+                if (!fits(a, r.first, r.second))
+                    return false;
+            std::vector<Approximation> fitted;
+            fitted.reserve(ranges.size());
+            for (const auto &r : ranges)
+                fitted.emplace_back(a.sums(r.first, r.second));
+            if (check)
+            {
+                for (size_t k = 0; k + 1 < ranges.size(); ++k)
+                    if (!crossingOk(pts, fitted[k], fitted[k + 1], ranges[k].second))
+                        return false;
+                if (i > 0 && !crossingOk(pts, lines[i - 1], fitted.front(), ranges.front().first))
+                    return false;
+                if (i + cnt < lines.size() && !crossingOk(pts, fitted.back(), lines[i + cnt], ranges.back().second))
+                    return false;
+            }
+            const auto off = static_cast<std::ptrdiff_t>(i);
+            lines.erase(lines.begin() + off, lines.begin() + off + static_cast<std::ptrdiff_t>(cnt));
+            indices.erase(indices.begin() + off, indices.begin() + off + static_cast<std::ptrdiff_t>(cnt));
+            lines.insert(lines.begin() + off, fitted.begin(), fitted.end());
+            indices.insert(indices.begin() + off, ranges.begin(), ranges.end());
+            return true;
+        }
+
+        //! Replaces ranges [r0, r1) by the fewest ranges with breakpoints within +-k of their current internal
+        //! boundaries such that every range fits and every pair passes (including with ranges r0 - 1 and r1).
+        bool repartition(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
+                         std::vector<IndexType> &indices, size_t r0, size_t r1, size_t k) const
+        {
+            const size_t start = indices[r0].first, end = indices[r1 - 1].second;
+            std::vector<size_t> cand{start};
+            for (size_t r = r0; r + 1 < r1; ++r)
+            {
+                const size_t m = indices[r].second;
+                for (size_t c = (m > start + k ? m - k : start + 1); c <= std::min(end - 1, m + k); ++c)
+                    cand.push_back(c);
+            }
+            cand.push_back(end);
+            std::sort(cand.begin(), cand.end());
+            cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+            const size_t p = cand.size();
+            // best[x * p + y]: fewest ranges covering [start, cand[y]) whose last range is [cand[x], cand[y]).
+            const size_t none = std::numeric_limits<size_t>::max();
+            std::vector<size_t> best(p * p, none), from(p * p, none);
+            std::vector<Approximation> fit(p * p);
+            std::vector<char> ok(p * p, 0);
+            for (size_t x = 0; x < p; ++x)
+                for (size_t y = x + 1; y < p; ++y)
+                    if (fits(a, cand[x], cand[y]))
+                    {
+                        ok[x * p + y] = 1;
+                        fit[x * p + y] = Approximation(a.sums(cand[x], cand[y]));
+                    }
+            for (size_t y = 1; y < p; ++y)
+                if (ok[y] && (r0 == 0 || crossingOk(pts, lines[r0 - 1], fit[y], start)))
+                    best[y] = 1;
+            for (size_t x = 1; x < p; ++x)
+                for (size_t y = x + 1; y < p; ++y)
+                {
+                    if (!ok[x * p + y])
+                        continue;
+                    for (size_t w = 0; w < x; ++w)
+                    {
+                        const size_t prev = best[w * p + x];
+                        if (prev == none || prev + 1 >= best[x * p + y])
+                            continue;
+                        if (crossingOk(pts, fit[w * p + x], fit[x * p + y], cand[x]))
+                        {
+                            best[x * p + y] = prev + 1;
+                            from[x * p + y] = w;
+                        }
+                    }
+                }
+            size_t last = none, count = none;
+            for (size_t x = 0; x + 1 < p; ++x)
+            {
+                const size_t c = best[x * p + p - 1];
+                if (c != none && c < count && (r1 == indices.size() || crossingOk(pts, fit[x * p + p - 1], lines[r1], end)))
+                {
+                    count = c;
+                    last = x;
+                }
+            }
+            if (last == none)
+                return false;
+            std::vector<IndexType> ranges;
+            for (size_t x = last, y = p - 1; ; )
+            {
+                ranges.emplace_back(cand[x], cand[y]);
+                if (x == 0)
+                    break;
+                const size_t w = from[x * p + y];
+                y = x;
+                x = w;
+            }
+            std::reverse(ranges.begin(), ranges.end());
+            return tryReplace(pts, a, lines, indices, r0, r1 - r0, ranges, false);
+        }
+
+        bool repair(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
+                    std::vector<IndexType> &indices, size_t i) const
+        {
+            const size_t b = indices[i].first, m = indices[i].second, e = indices[i + 1].second;
+            // 1. Move the boundary.
+            for (size_t s = 1; s <= 3; ++s)
+            {
+                if (m >= b + 2 + s && tryReplace(pts, a, lines, indices, i, 2, {{b, m - s}, {m - s, e}}, true))
+                    return true;
+                if (m + s + 2 <= e && tryReplace(pts, a, lines, indices, i, 2, {{b, m + s}, {m + s, e}}, true))
+                    return true;
+            }
+            // 2. Merge.
+            if (tryReplace(pts, a, lines, indices, i, 2, {{b, e}}, true))
+                return true;
+            // 3. Three equal parts.
+            const size_t len = e - b;
+            if (len >= 6 && tryReplace(pts, a, lines, indices, i, 2, {{b, b + len / 3}, {b + len / 3, b + 2 * len / 3}, {b + 2 * len / 3, e}}, true))
+                return true;
+            // 4. Re-partition a window of ranges around the pair, wider on the second attempt.
+            if (repartition(pts, a, lines, indices, i > 0 ? i - 1 : 0, std::min(indices.size(), i + 3), 6))
+                return true;
+            if (repartition(pts, a, lines, indices, i > 1 ? i - 2 : 0, std::min(indices.size(), i + 4), 12))
+                return true;
+            // Whole chain, if small enough for the cubic programme.
+            if (indices.back().second - indices.front().first <= 160 &&
+                repartition(pts, a, lines, indices, 0, indices.size(), indices.back().second))
+                return true;
+            // 5. Bridge of the two boundary points (re-checked by the caller's loop).
+            if (m >= b + 3 && m + 3 <= e && tryReplace(pts, a, lines, indices, i, 2, {{b, m - 1}, {m - 1, m + 1}, {m + 1, e}}, false))
+                return true;
+            if (m >= b + 3 && tryReplace(pts, a, lines, indices, i, 2, {{b, m - 1}, {m - 1, e}}, false))
+                return true;
+            if (m + 3 <= e && tryReplace(pts, a, lines, indices, i, 2, {{b, m + 1}, {m + 1, e}}, false))
+                return true;
+            return false;
+        }
+    };
+}

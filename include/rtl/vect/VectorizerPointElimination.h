@@ -1,0 +1,234 @@
+// Point-elimination vectorizers in N dimensions: Douglas-Peucker and Reumann-Witkam. Both keep a subset of the
+// input points and return the polyline through them as line segments.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "rtl/core/LineSegmentND.h"
+#include "rtl/core/VectorND.h"
+
+namespace rtl
+{
+    namespace vect_detail
+    {
+        //! Segment a -> b; coincident end points get the first base vector as direction instead of NaN.
+        template<class Segment, class Vector>
+        Segment makeSegment(const Vector &a, const Vector &b)
+        {
+            Vector d = b - a;
+            const auto len = d.length();
+            if (len > 0)
+                d /= len;
+            else
+            {
+                d = Vector::zeros();
+                d[0] = 1;
+            }
+            return Segment(a, b, d);
+        }
+
+        //! Polyline through pts[keys[0]], pts[keys[1]], ... as segments.
+        template<class Segment, class Vector>
+        void polyline(const std::vector<Vector> &pts, const std::vector<size_t> &keys, std::vector<Segment> &out)
+        {
+            out.clear();
+            if (keys.size() < 2)
+                return;
+            out.reserve(keys.size() - 1);
+            for (size_t i = 0; i + 1 < keys.size(); ++i)
+                out.push_back(makeSegment<Segment>(pts[keys[i]], pts[keys[i + 1]]));
+        }
+    }
+
+    //! Douglas-Peucker: keeps the end points, then recursively (with an explicit stack) the point farthest from the
+    //! infinite line through the current end points while that distance exceeds epsilon. Coincident end points
+    //! measure the distance to the point. Ties keep the first farthest point.
+    template<int dimensions, typename Element>
+    class VectorizerDouglasPeuckerND
+    {
+    public:
+        typedef Element ElementType;
+        typedef VectorND<dimensions, Element> VectorType;
+        typedef LineSegmentND<dimensions, Element> LineSegmentType;
+
+        VectorizerDouglasPeuckerND() = default;
+        explicit VectorizerDouglasPeuckerND(ElementType eps) { setEpsilon(eps); }
+        ~VectorizerDouglasPeuckerND() = default;
+
+        void setEpsilon(ElementType eps) { eps2 = eps * eps; }
+        //! Reserves the working buffers for inputs of up to `size` points.
+        void setMaxSize(size_t size) { keep.reserve(size); stack.reserve(size); keys.reserve(size); }
+
+        //! Clears `output` and fills it with the simplified polyline (empty for fewer than 2 points).
+        void operator()(const std::vector<VectorType> &input, std::vector<LineSegmentType> &output)
+        {
+            const size_t n = input.size();
+            keys.clear();
+            if (n < 2) { output.clear(); return; }
+            keep.assign(n, 0);
+            keep[0] = keep[n - 1] = 1;
+            stack.clear();
+            stack.emplace_back(0, n - 1);
+            while (!stack.empty())
+            {
+                const auto [a, b] = stack.back();
+                stack.pop_back();
+                if (b - a < 2)
+                    continue;
+                const size_t far = farthest(input, a, b);
+                if (far != 0)
+                {
+                    keep[far] = 1;
+                    stack.emplace_back(far, b);
+                    stack.emplace_back(a, far);
+                }
+            }
+            for (size_t i = 0; i < n; ++i)
+                if (keep[i]) keys.push_back(i);
+            vect_detail::polyline(input, keys, output);
+        }
+
+        //! Index in (a, b) of the first point farthest from line (pts[a], pts[b]) if that distance exceeds
+        //! epsilon, else 0.
+        size_t farthest(const std::vector<VectorType> &pts, size_t a, size_t b) const
+        {
+            const VectorType &pa = pts[a];
+            const VectorType u = pts[b] - pa;
+            const Element l2 = u.lengthSquared();
+            size_t best = 0;
+            if constexpr (dimensions == 2)
+            {
+                if (l2 > Element(0))
+                {
+                    // Compare cross^2 against eps^2 * |u|^2: no division or root per point. Blocks of 8 points
+                    // first get their maximum without branches (vectorisable); only a block that beats the best so
+                    // far is rescanned for its first maximal index.
+                    Element best_c = eps2 * l2;
+                    const Element ux = u[0], uy = u[1], ax = pa[0], ay = pa[1];
+                    size_t i = a + 1;
+                    constexpr size_t block = 8;
+                    Element c2[block];
+                    for (; i + block <= b; i += block)
+                    {
+                        Element m = 0;
+                        for (size_t k = 0; k < block; ++k)
+                        {
+                            const Element c = (pts[i + k][0] - ax) * uy - (pts[i + k][1] - ay) * ux;
+                            c2[k] = c * c;
+                            m = m > c2[k] ? m : c2[k];
+                        }
+                        if (m > best_c)
+                            for (size_t k = 0; k < block; ++k)
+                                if (c2[k] > best_c) { best_c = c2[k]; best = i + k; }
+                    }
+                    for (; i < b; ++i)
+                    {
+                        const Element c = (pts[i][0] - ax) * uy - (pts[i][1] - ay) * ux;
+                        if (c * c > best_c) { best_c = c * c; best = i; }
+                    }
+                    return best;
+                }
+            }
+            Element best_d = eps2;
+            for (size_t i = a + 1; i < b; ++i)
+            {
+                const VectorType v = pts[i] - pa;
+                Element d2;
+                if (l2 > Element(0))
+                    d2 = (v - u * (v.dot(u) / l2)).lengthSquared();
+                else
+                    d2 = v.lengthSquared();
+                if (d2 > best_d) { best_d = d2; best = i; }
+            }
+            return best;
+        }
+
+    private:
+        Element eps2{static_cast<Element>(1e-6)};
+        std::vector<char> keep;
+        std::vector<std::pair<size_t, size_t>> stack;
+        std::vector<size_t> keys;
+    };
+
+    //! Reumann-Witkam: a strip of half-width epsilon around the line from the current key point through the next
+    //! distinct point; the scan advances while points stay inside, and the last point inside becomes the next key
+    //! (the new strip then runs from it through the first point outside). The polyline runs from the first to the
+    //! last input point.
+    template<int dimensions, typename Element>
+    class VectorizerReumannWitkamND
+    {
+    public:
+        typedef Element ElementType;
+        typedef VectorND<dimensions, Element> VectorType;
+        typedef LineSegmentND<dimensions, Element> LineSegmentType;
+
+        VectorizerReumannWitkamND() = default;
+        explicit VectorizerReumannWitkamND(ElementType eps) { setEpsilon(eps); }
+        ~VectorizerReumannWitkamND() = default;
+
+        void setEpsilon(float eps) { eps2 = static_cast<Element>(eps) * static_cast<Element>(eps); }
+        void setMaxSize(size_t size) { keys.reserve(size); }
+
+        void operator()(const std::vector<VectorType> &input, std::vector<LineSegmentType> &output)
+        {
+            const size_t n = input.size();
+            keys.clear();
+            if (n < 2) { output.clear(); return; }
+            size_t k = 0;
+            keys.push_back(0);
+            size_t j = 1;
+            while (j < n && input[j] == input[k])
+                ++j;
+            if (j < n)
+            {
+                VectorType dir = (input[j] - input[k]).normalized();
+                size_t i = j + 1;
+                constexpr size_t block = 8;
+                while (i < n)
+                {
+                    // Whole blocks of 8 are tested without branches; the first point outside is searched only in
+                    // a block that has one.
+                    if (i + block <= n)
+                    {
+                        bool out = false;
+                        for (size_t q = 0; q < block; ++q)
+                            out |= distance2(input[i + q], input[k], dir) > eps2;
+                        if (!out) { i += block; continue; }
+                    }
+                    if (distance2(input[i], input[k], dir) > eps2)
+                    {
+                        k = i - 1;
+                        keys.push_back(k);
+                        dir = (input[i] - input[k]).normalized();
+                    }
+                    ++i;
+                }
+            }
+            if (keys.back() != n - 1)
+                keys.push_back(n - 1);
+            vect_detail::polyline(input, keys, output);
+        }
+
+        //! Squared distance of p from the line through a with unit direction u.
+        static Element distance2(const VectorType &p, const VectorType &a, const VectorType &u)
+        {
+            if constexpr (dimensions == 2)
+            {
+                const Element c = (p[0] - a[0]) * u[1] - (p[1] - a[1]) * u[0];
+                return c * c;
+            }
+            else
+            {
+                const VectorType v = p - a;
+                return (v - u * v.dot(u)).lengthSquared();
+            }
+        }
+
+    private:
+        Element eps2{static_cast<Element>(1e-6)};
+        std::vector<size_t> keys;
+    };
+}
