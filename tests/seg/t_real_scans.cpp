@@ -106,7 +106,7 @@ namespace
         size_t split_clear = 0;
         segcheck::forEachWindowPair(n, p.step, true, [&](size_t j, size_t i) {
             if (segcheck::isGap(pd[i]) || segcheck::isGap(pd[j])) return;
-            const double tsq = rtl::seg_detail::squaredThreshold((pd[i] - origin).lengthSquared(), scaling, p.lb, p.ub);
+            const double tsq = rtl::seg_detail::SquaredThreshold<double>(scaling, p.lb, p.ub)((pd[i] - origin).lengthSquared());
             const double dsq = (pd[i] - pd[j]).lengthSquared();
             if (dsq <= tsq * (1 + 1e-4)) loose.unite(i, j);
             if (dsq < tsq * (1 - 1e-4) && lf[i] != lf[j]) ++split_clear;

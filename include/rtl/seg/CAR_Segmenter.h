@@ -94,16 +94,27 @@ namespace rtl
         void segmentNeighbours(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
             const size_t n = pts.size();
-            const ElementType *o = ptr(origin);
+            const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
+            ElementType o[D];
+            for (int k = 0; k < D; ++k) o[k] = origin.data()[k];
             flags_.resize(n);
             unsigned char *f = flags_.data();
             f[0] = seg_detail::isFinite<D>(ptr(pts[0])) ? 1 : 0;
+            const VectorType *v = pts.data();
             for (size_t i = 1; i < n; ++i)
             {
-                const ElementType *p = ptr(pts[i]), *q = ptr(pts[i - 1]);
-                const ElementType tsq = seg_detail::squaredThreshold(seg_detail::squaredDistance<D>(p, o), scaling, lower_, upper_);
-                const bool valid = seg_detail::isFinite<D>(p);
-                const bool link = valid & seg_detail::isFinite<D>(q) & (seg_detail::squaredDistance<D>(p, q) <= tsq);
+                // branch-free, so that the compiler vectorises it
+                ElementType rsq = 0, dsq = 0;
+                bool valid = true, valid_prev = true;
+                for (int k = 0; k < D; ++k)
+                {
+                    const ElementType a = v[i][static_cast<size_t>(k)], b = v[i - 1][static_cast<size_t>(k)];
+                    rsq += (a - o[k]) * (a - o[k]);
+                    dsq += (a - b) * (a - b);
+                    valid &= (a - a) == ElementType(0);
+                    valid_prev &= (b - b) == ElementType(0);
+                }
+                const bool link = valid & valid_prev & (dsq <= thr(rsq));
                 f[i] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
             }
 
@@ -143,12 +154,13 @@ namespace rtl
         {
             const size_t n = pts.size(), s = step_;
             const ElementType *o = ptr(origin);
+            const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
             tsq_.resize(n);
             parent_.resize(n);
             for (size_t i = 0; i < n; ++i)
             {
                 const ElementType *p = ptr(pts[i]);
-                tsq_[i] = seg_detail::squaredThreshold(seg_detail::squaredDistance<D>(p, o), scaling, lower_, upper_);
+                tsq_[i] = thr(seg_detail::squaredDistance<D>(p, o));
                 parent_[i] = seg_detail::isFinite<D>(p) ? i : none;
             }
 

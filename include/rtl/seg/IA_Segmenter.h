@@ -50,9 +50,9 @@ namespace rtl
 
         //! Changes the window size; when it shrinks, the oldest window points leave the window first.
         void setStepSize(unsigned int step) { resizeWindow(step == 0 ? 1 : step); }
-        void setLowerBound(ElementType lb) { lower_ = lb; }
-        void setUpperBound(ElementType ub) { upper_ = ub; }
-        void setScaling(ElementType scale) { scaling_ = scale; }
+        void setLowerBound(ElementType lb) { lower_ = lb; checked_ = false; }
+        void setUpperBound(ElementType ub) { upper_ = ub; checked_ = false; }
+        void setScaling(ElementType scale) { scaling_ = scale; checked_ = false; }
 
         [[nodiscard]] size_t closedClustersAvailable() const { return closed_.size(); }
         [[nodiscard]] size_t aliveClustersAvailable() const { return alive_.size(); }
@@ -60,16 +60,28 @@ namespace rtl
 
         void addPoint(const VectorType &pt, const VectorType &origin = VectorType::zeros())
         {
-            const ElementType *p = pt.data().data();
-            if (!(lower_ >= ElementType(0)) || !(upper_ >= lower_) || scaling_ != scaling_ || !seg_detail::isFinite<D>(origin.data().data()))
+            if (!checked_) checkParameters();
+            ElementType rsq = 0;
+            bool valid = true, origin_finite = true;
+            for (int k = 0; k < D; ++k)
             {
-                seg_detail::checkParameters<ElementType>("IA_Segmenter::addPoint", lower_, upper_, seg_detail::isFinite<D>(origin.data().data()));
-                throw std::invalid_argument("IA_Segmenter::addPoint: the scaling must not be NaN");
+                const ElementType a = pt.data()[k], o = origin.data()[k];
+                rsq += (a - o) * (a - o);
+                valid &= (a - a) == ElementType(0);
+                origin_finite &= (o - o) == ElementType(0);
             }
-            size_t rec = none;
-            if (seg_detail::isFinite<D>(p))
+            if (!origin_finite) throw std::invalid_argument("IA_Segmenter::addPoint: the origin must be finite");
+            if (step_ == 1)
             {
-                const ElementType tsq = seg_detail::squaredThreshold(seg_detail::squaredDistance<D>(p, origin.data().data()), scaling_, lower_, upper_);
+                addToPairWindow(pt, valid, rsq);
+                return;
+            }
+
+            size_t rec = none;
+            if (valid)
+            {
+                const ElementType tsq = thr_(rsq);
+                const ElementType *p = pt.data().data();
                 for (size_t w = 0; w < step_; ++w)
                 {
                     const size_t r = wrec_[w];
@@ -125,8 +137,20 @@ namespace rtl
             size_t in_window = 0;
             bool has_alive = false;
             typename AliveMap::iterator alive;      // valid when has_alive
-            std::vector<size_t> alive_index;         // stream index of each alive point, for merges
+            // stream indices of the alive points, needed to merge interleaved clusters in stream order: implicitly
+            // base, base + 1, ... while `contiguous` (always so for step 1), else listed in `index`
+            bool contiguous = true;
+            size_t base = 0;
+            std::vector<size_t> index;
         };
+
+        void checkParameters()
+        {
+            seg_detail::checkParameters<ElementType>("IA_Segmenter::addPoint", lower_, upper_, true);
+            if (scaling_ != scaling_) throw std::invalid_argument("IA_Segmenter::addPoint: the scaling must not be NaN");
+            thr_ = seg_detail::SquaredThreshold<ElementType>(scaling_, lower_, upper_);
+            checked_ = true;
+        }
 
         size_t newRecord()
         {
@@ -145,8 +169,59 @@ namespace rtl
             R.id = next_id_++;
             R.in_window = 0;
             R.has_alive = false;
-            R.alive_index.clear();
             return r;
+        }
+
+        // step 1, the common case: the window is one point, and a point that joins its predecessor's cluster just
+        // pushes the predecessor into the alive list.
+        void addToPairWindow(const VectorType &pt, bool valid, ElementType rsq)
+        {
+            const size_t prev = wrec_[0];
+            if (valid && prev != none && seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
+                pushAlive(recs_[prev], wpts_[0], widx_[0]);
+            else
+            {
+                if (count_ == 1) evict(0);
+                size_t rec = none;
+                if (valid)
+                {
+                    rec = newRecord();
+                    recs_[rec].in_window = 1;
+                }
+                wrec_[0] = rec;
+                count_ = 1;
+            }
+            wpts_[0] = pt;
+            widx_[0] = stream_++;
+        }
+
+        // Appends a point that leaves the window to its cluster's alive list (created on the first point).
+        void pushAlive(Record &R, const VectorType &p, size_t idx)
+        {
+            if (!R.has_alive)
+            {
+                R.alive = alive_.emplace_hint(alive_.end(), R.id, std::vector<VectorType>());
+                R.alive->second.reserve(reserve_);
+                R.has_alive = true;
+                R.contiguous = true;
+                R.base = idx;
+                R.index.clear();
+            }
+            std::vector<VectorType> &v = R.alive->second;
+            if (R.contiguous && idx != R.base + v.size()) listIndices(R);
+            if (!R.contiguous) R.index.push_back(idx);
+            v.push_back(p);
+        }
+
+        static size_t indexAt(const Record &R, size_t k) { return R.contiguous ? R.base + k : R.index[k]; }
+
+        static void listIndices(Record &R)
+        {
+            if (!R.contiguous) return;
+            const size_t n = R.alive->second.size();
+            R.index.resize(n);
+            for (size_t k = 0; k < n; ++k) R.index[k] = R.base + k;
+            R.contiguous = false;
         }
 
         // The window point in `slot` leaves the window for its cluster's alive list; the cluster closes if it was
@@ -157,16 +232,13 @@ namespace rtl
             if (r == none) return;
             wrec_[slot] = none;
             Record &R = recs_[r];
-            if (!R.has_alive)
-            {
-                R.alive = alive_.emplace(R.id, std::vector<VectorType>()).first;
-                R.has_alive = true;
-            }
-            R.alive->second.push_back(wpts_[slot]);
-            R.alive_index.push_back(widx_[slot]);
+            pushAlive(R, wpts_[slot], widx_[slot]);
+            std::vector<VectorType> &v = R.alive->second;
             if (--R.in_window == 0)
             {
-                closed_.push_back(std::move(R.alive->second));
+                // the next alive lists start with room for about as many points as the recent clusters had
+                reserve_ = std::min<size_t>((reserve_ * 3 + v.size()) / 4 + 1, 4096);
+                closed_.push_back(std::move(v));
                 alive_.erase(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
@@ -187,39 +259,57 @@ namespace rtl
                 {
                     K.alive = alive_.emplace(K.id, std::move(G.alive->second)).first;
                     K.has_alive = true;
-                    K.alive_index.swap(G.alive_index);
+                    K.contiguous = G.contiguous;
+                    K.base = G.base;
+                    K.index.swap(G.index);
                 }
-                else
-                {
-                    // both alive lists are in stream order: merge them by stream index
-                    std::vector<VectorType> &kp = K.alive->second, &gp = G.alive->second;
-                    std::vector<VectorType> pts;
-                    std::vector<size_t> idx;
-                    pts.reserve(kp.size() + gp.size());
-                    idx.reserve(kp.size() + gp.size());
-                    size_t i = 0, j = 0;
-                    while (i < kp.size() || j < gp.size())
-                    {
-                        if (j == gp.size() || (i < kp.size() && K.alive_index[i] < G.alive_index[j]))
-                        {
-                            pts.push_back(kp[i]);
-                            idx.push_back(K.alive_index[i++]);
-                        }
-                        else
-                        {
-                            pts.push_back(gp[j]);
-                            idx.push_back(G.alive_index[j++]);
-                        }
-                    }
-                    kp.swap(pts);
-                    K.alive_index.swap(idx);
-                }
+                else mergeAlive(K, G);
                 alive_.erase(G.alive);
                 G.has_alive = false;
             }
             G.in_window = 0;
             free_.push_back(gone);
             return keep;
+        }
+
+        // Moves G's alive points into K's, in stream order. Only the part of K newer than G's oldest point moves:
+        // the cost is O(|G| + that part), not O(|K|).
+        static void mergeAlive(Record &K, Record &G)
+        {
+            std::vector<VectorType> &kp = K.alive->second, &gp = G.alive->second;
+            const size_t nk = kp.size(), ng = gp.size();
+            if (indexAt(G, 0) > indexAt(K, nk - 1))
+            {
+                if (K.contiguous && G.contiguous && G.base == K.base + nk) { /* stays contiguous */ }
+                else
+                {
+                    listIndices(K);
+                    for (size_t j = 0; j < ng; ++j) K.index.push_back(indexAt(G, j));
+                }
+                kp.insert(kp.end(), gp.begin(), gp.end());
+                return;
+            }
+            listIndices(K);
+            listIndices(G);
+            kp.resize(nk + ng);
+            K.index.resize(nk + ng);
+            size_t i = nk, j = ng, w = nk + ng;
+            while (j > 0)
+            {
+                --w;
+                if (i > 0 && K.index[i - 1] > G.index[j - 1])
+                {
+                    --i;
+                    kp[w] = kp[i];
+                    K.index[w] = K.index[i];
+                }
+                else
+                {
+                    --j;
+                    kp[w] = gp[j];
+                    K.index[w] = G.index[j];
+                }
+            }
         }
 
         void resizeWindow(size_t step)
@@ -247,6 +337,8 @@ namespace rtl
 
         ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
         ElementType scaling_ = seg_detail::circularScaling<ElementType>(1, 360);
+        bool checked_ = false;                                    // parameters validated since the last setter
+        seg_detail::SquaredThreshold<ElementType> thr_{0, 0, 0};
 
         // window: a ring of step_ slots, count_ of them used, head_ the oldest; wrec_ is none for gaps and free slots
         size_t step_ = 0, head_ = 0, count_ = 0;
@@ -257,6 +349,6 @@ namespace rtl
         std::vector<size_t> free_;
         AliveMap alive_;
         std::deque<std::vector<VectorType>> closed_;
-        size_t next_id_ = 0, stream_ = 0;
+        size_t next_id_ = 0, stream_ = 0, reserve_ = 0;
     };
 }

@@ -3,6 +3,7 @@
 //
 // A point p joins an earlier point q (at most `step` places back in scan order) when
 //     |p - q|^2 <= t(p)^2,   t(p) = clamp(scaling * |p - origin|, lower_bound, upper_bound),
+// evaluated as |p - q|^2 <= clamp(scaling^2 |p - origin|^2, lower_bound^2, upper_bound^2),
 // i.e. the threshold belongs to the later point of the pair. Points with a non-finite coordinate are gaps.
 #pragma once
 
@@ -26,15 +27,21 @@ namespace rtl::seg_detail
         return s;
     }
 
-    //! Squared threshold of a point from its squared distance to the origin. NaN in, NaN out.
+    //! The squared threshold t(p)^2 = clamp(scaling^2 |p - origin|^2, lower^2, upper^2), from |p - origin|^2: the
+    //! same value as squaring the clamped threshold, without a square root per point (so loops vectorise).
+    //! A negative scaling acts as its absolute value. NaN in, NaN out.
     template<typename E>
-    inline E squaredThreshold(E origin_dist_sq, E scaling, E lower, E upper)
+    struct SquaredThreshold
     {
-        E t = scaling * std::sqrt(origin_dist_sq);
-        t = t < lower ? lower : t;
-        t = t > upper ? upper : t;
-        return t * t;
-    }
+        E scaling_sq, lower_sq, upper_sq;
+        SquaredThreshold(E scaling, E lower, E upper) : scaling_sq(scaling * scaling), lower_sq(lower * lower), upper_sq(upper * upper) {}
+        E operator()(E origin_dist_sq) const
+        {
+            E t = scaling_sq * origin_dist_sq;
+            t = t < lower_sq ? lower_sq : t;
+            return t > upper_sq ? upper_sq : t;
+        }
+    };
 
     //! True when every coordinate is finite (x - x is 0 for finite x, NaN for NaN and infinities).
     template<int D, typename E>
@@ -71,7 +78,7 @@ namespace rtl::seg_detail
         constexpr int D = Vector::dimensionality();
         using E = typename Vector::ElementType;
         const E *p = later.data().data();
-        const E tsq = squaredThreshold<E>(squaredDistance<D, E>(p, origin.data().data()), scaling, lower, upper);
+        const E tsq = SquaredThreshold<E>(scaling, lower, upper)(squaredDistance<D, E>(p, origin.data().data()));
         return squaredDistance<D, E>(p, earlier.data().data()) <= tsq;
     }
 }
