@@ -352,6 +352,39 @@ function wrap(m) {
     return { labels: r.labels, clusters };
   }
 
+  const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
+  function vectorize(points, opts) {
+    const fn = 'vectorize';
+    if (opts === undefined) throw new TypeError(`${fn}: options {method} are required (method: ${METHODS.join(', ')})`);
+    const o = options(opts, fn, ['dim', 'method', 'primitive', 'sigma', 'delta', 'epsilon', 'maxSize', 'simplexShift', 'maxIterations']);
+    const dim = dimOption(o, fn);
+    if (o.method === undefined) throw new TypeError(`${fn}: option method is required (${METHODS.join(', ')})`);
+    if (typeof o.method !== 'string') throw new TypeError(`${fn}: option method must be a string, got ${describe(o.method)}`);
+    const method = o.method;
+    if (!METHODS.includes(method)) throw new RangeError(`${fn}: option method must be one of ${METHODS.join(', ')}, got '${method}'`);
+    // Options a method does not use (e.g. epsilon for 'ftls') are still checked, then ignored, so that one
+    // settings object can drive every method.
+    const primitive = o.primitive ?? 'line';
+    if (primitive !== 'line' && primitive !== 'plane') throw new RangeError(`${fn}: option primitive must be 'line' or 'plane', got ${describe(primitive)}`);
+    if (primitive === 'plane' && (dim !== 3 || method !== 'aftls'))
+      throw new RangeError(`${fn}: primitive 'plane' needs dim 3 and method 'aftls'`);
+    const sigma = num(o, 'sigma', fn, 0.03, { min: 0, exclusiveMin: true });
+    const delta = num(o, 'delta', fn, 0.3, { min: 0, exclusiveMin: true });
+    const epsilon = num(o, 'epsilon', fn, 0.09, { min: 0, exclusiveMin: true });
+    const maxSize = num(o, 'maxSize', fn, 0, { min: 0, integer: true, max: 2 ** 32 - 1 });
+    const simplexShift = num(o, 'simplexShift', fn, 1, { min: 1, integer: true, max: 2 ** 32 - 1 });
+    const maxIterations = num(o, 'maxIterations', fn, 10000, { min: 1, integer: true, max: 2 ** 32 - 1 });
+    const xyz = toF64(points, fn, 'points');
+    const r = withHeap([xyz], (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
+      sigma, delta, epsilon, maxSize, simplexShift, maxIterations));
+    const polygons = [];
+    for (let k = 0; k + 1 < r.polygonOffsets.length; k++) polygons.push(r.polygonPoints.slice(r.polygonOffsets[k], r.polygonOffsets[k + 1]));
+    return {
+      method, dim, primitive, ok: r.ok, count: r.count, segments: r.segments, polygons,
+      indices: r.indices, params: r.params, stride: r.stride, rms: r.rms,
+    };
+  }
+
   // Stateful objects own a C++ object behind an integer handle: dispose() frees it, and if the caller forgets,
   // the FinalizationRegistry frees it after the wrapper is garbage collected (the held value does not reference
   // the wrapper, so it does not keep it alive).
@@ -534,6 +567,7 @@ function wrap(m) {
     version: VERSION,
     fitLine,
     segment,
+    vectorize,
     StreamSegmenter,
     TfTree,
     toSvg,

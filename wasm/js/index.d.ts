@@ -78,6 +78,7 @@ export interface SegmentResult {
 
 // ---------------------------------------------------------------------------------------------- vectorization
 export type VectorizeMethod = 'ftls' | 'aftls' | 'itls' | 'dp' | 'rw';
+/** Options a method does not use are checked and ignored, so one settings object can drive every method. */
 export interface VectorizeOptions {
   dim?: Dim;                   // default 2
   method: VectorizeMethod;

@@ -1,0 +1,219 @@
+// Vectorization on flat arrays, shared by the wasm bindings (vectorize.cpp) and the native comparison tool
+// (tests/tools/rtl_native.cpp): the same C++ on the same numbers. No emscripten here.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <rtl/Vectorization.h>
+
+namespace rtl_ops {
+
+enum class Method { FTLS = 0, AFTLS = 1, ITLS = 2, DP = 3, RW = 4 };
+
+struct VectorizeParams {
+  Method method = Method::FTLS;
+  int dim = 2;
+  bool plane = false;
+  double sigma = 0.03, delta = 0.3, epsilon = 0.09;
+  std::size_t maxSize = 0, simplexShift = 1, maxIterations = 10000;
+};
+
+struct VectorizeOutput {
+  bool ok = false;
+  std::size_t count = 0;
+  std::vector<double> segments;               // count * 2 * dim (lines)
+  std::vector<std::vector<double>> polygons;  // planes: vertices, 3 numbers each
+  std::vector<std::uint32_t> indices;         // 2 * count: half-open point ranges
+  std::vector<double> params;                 // count * stride
+  int stride = 0;
+  std::vector<double> rms;                    // count
+};
+
+namespace detail {
+
+template <int D>
+using Vec = rtl::VectorND<D, double>;
+
+template <int D>
+std::vector<Vec<D>> points(const double* xyz, std::size_t n) {
+  std::vector<Vec<D>> v(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) v[i][static_cast<std::size_t>(k)] = xyz[D * i + static_cast<std::size_t>(k)];
+  return v;
+}
+
+template <int D, class Seg>
+void pushSegment(VectorizeOutput& o, const Seg& s) {
+  for (int k = 0; k < D; ++k) o.segments.push_back(s.beg()[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < D; ++k) o.segments.push_back(s.end()[static_cast<std::size_t>(k)]);
+}
+
+inline double rmsOf(double errSquared) { return std::sqrt(errSquared > 0 ? errSquared : 0.0); }
+
+// Ranges, parameters and residuals of a TLS vectorizer's approximations.
+template <class Vz>
+void tlsRanges(VectorizeOutput& o, const Vz& vz) {
+  for (const auto& r : vz.indices()) {
+    o.indices.push_back(static_cast<std::uint32_t>(r.first));
+    o.indices.push_back(static_cast<std::uint32_t>(r.second));
+  }
+  for (const auto& a : vz.approximations()) {
+    using A = std::decay_t<decltype(a)>;
+    if constexpr (std::is_same_v<A, rtl::ApproximationTlsLine2D<double, double>>) {
+      o.params.insert(o.params.end(), {a.a(), a.b(), a.c()});
+    } else if constexpr (std::is_same_v<A, rtl::ApproximationTlsLine3D<double, double>>) {
+      const auto p = a.point(), d = a.direction();
+      o.params.insert(o.params.end(), {p[0], p[1], p[2], d[0], d[1], d[2]});
+    } else {
+      const auto nrm = a.normal();
+      o.params.insert(o.params.end(), {nrm[0], nrm[1], nrm[2], a.d()});
+    }
+    o.rms.push_back(rmsOf(a.errSquaredCompute()));
+  }
+}
+
+// Douglas-Peucker / Reumann-Witkam keep input points: recover their indices by walking the input forward to each
+// segment end (exact match), then describe each kept span by its chord.
+template <int D, class Seg>
+void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::vector<Seg>& segs) {
+  std::vector<std::size_t> keys{0};
+  std::size_t j = 0;
+  for (const auto& s : segs) {
+    const Vec<D> e = s.end();
+    do ++j;
+    while (j < pts.size() && std::memcmp(pts[j].data().data(), e.data().data(), sizeof(double) * D) != 0);
+    if (j >= pts.size()) throw std::logic_error("vectorize: a simplified vertex is not an input point");
+    keys.push_back(j);
+  }
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    const std::size_t b = keys[i], e = keys[i + 1];
+    o.indices.push_back(static_cast<std::uint32_t>(b));
+    o.indices.push_back(static_cast<std::uint32_t>(e + 1));
+    const Eigen::Matrix<double, D, 1> p0 = pts[b].data(), p1 = pts[e].data();
+    const Eigen::Matrix<double, D, 1> chord = p1 - p0;
+    const double len = chord.norm();
+    const Eigen::Matrix<double, D, 1> dir = len > 0 ? Eigen::Matrix<double, D, 1>(chord / len) : Eigen::Matrix<double, D, 1>::Zero();
+    double ss = 0;
+    for (std::size_t k = b; k <= e; ++k) {
+      const Eigen::Matrix<double, D, 1> q = pts[k].data() - p0;
+      const double along = q.dot(dir);
+      ss += q.squaredNorm() - along * along;
+    }
+    o.rms.push_back(rmsOf(ss / static_cast<double>(e - b + 1)));
+    if constexpr (D == 2) {
+      const double a = -dir.y(), bb = dir.x();
+      o.params.insert(o.params.end(), {a, bb, -(a * p0.x() + bb * p0.y())});
+    } else {
+      o.params.insert(o.params.end(), {p0.x(), p0.y(), p0.z(), dir.x(), dir.y(), dir.z()});
+    }
+  }
+}
+
+}  // namespace detail
+
+template <int D>
+VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParams& p) {
+  using namespace detail;
+  if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
+  const auto pts = points<D>(xyz, n);
+  VectorizeOutput o;
+  o.stride = p.plane ? 4 : (D == 2 ? 3 : 6);
+  auto finishLines = [&](bool ok, const auto& vz, const auto& segs) {
+    o.ok = ok;
+    if (!ok) return;
+    for (const auto& s : segs) pushSegment<D>(o, s);
+    tlsRanges(o, vz);
+    o.count = vz.indices().size();
+  };
+
+  if (p.method == Method::DP || p.method == Method::RW) {
+    std::vector<rtl::LineSegmentND<D, double>> segs;
+    if (p.method == Method::DP) {
+      rtl::VectorizerDouglasPeuckerND<D, double> vz(p.epsilon);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      vz(pts, segs);
+    } else {
+      rtl::VectorizerReumannWitkamND<D, double> vz(p.epsilon);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      vz(pts, segs);
+    }
+    o.ok = n >= 2;
+    for (const auto& s : segs) pushSegment<D>(o, s);
+    keptRanges<D>(o, pts, segs);
+    o.count = segs.size();
+    return o;
+  }
+
+  if constexpr (D == 2) {
+    if (p.method == Method::ITLS) {
+      rtl::VectorizerITLSProjections2D<double, double> vz;
+      vz.setSigma(p.sigma);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      const bool ok = vz(pts);
+      finishLines(ok, vz, vz.lineSegments());
+    } else if (p.method == Method::FTLS) {
+      rtl::VectorizerFTLSPolyline2D<double, double> vz;
+      vz.setSigma(p.sigma);
+      vz.setDelta(p.delta);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      const bool ok = vz(pts);
+      finishLines(ok, vz, vz.lineSegments());
+    } else {
+      rtl::VectorizerAFTLSPolyline2D<double, double> vz;
+      vz.setSigma(p.sigma);
+      vz.setDelta(p.delta);
+      vz.setSimplexShift(p.simplexShift);
+      vz.setMaxIterations(p.maxIterations);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      const bool ok = vz(pts);
+      finishLines(ok, vz, vz.lineSegments());
+    }
+  } else {
+    if (p.plane) {
+      rtl::VectorizerAFTLSPlaneProjections3D<double, double> vz;
+      vz.setSigma(p.sigma);
+      vz.setSimplexShift(p.simplexShift);
+      vz.setMaxIterations(p.maxIterations);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      o.ok = vz(pts);
+      if (o.ok) {
+        for (const auto& poly : vz.polygons()) {
+          std::vector<double> v;
+          for (const auto& q : poly.points()) v.insert(v.end(), {q[0], q[1], q[2]});
+          o.polygons.push_back(std::move(v));
+        }
+        tlsRanges(o, vz);
+        o.count = vz.indices().size();
+      }
+    } else if (p.method == Method::ITLS) {
+      rtl::VectorizerITLSProjections3D<double, double> vz;
+      vz.setSigma(p.sigma);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      const bool ok = vz(pts);
+      finishLines(ok, vz, vz.lineSegments());
+    } else if (p.method == Method::FTLS) {
+      rtl::VectorizerFTLSProjections3D<double, double> vz;
+      vz.setSigma(p.sigma);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      const bool ok = vz(pts);
+      finishLines(ok, vz, vz.lineSegments());
+    } else {
+      rtl::VectorizerAFTLSProjections3D<double, double> vz;
+      vz.setSigma(p.sigma);
+      vz.setSimplexShift(p.simplexShift);
+      vz.setMaxIterations(p.maxIterations);
+      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      const bool ok = vz(pts);
+      finishLines(ok, vz, vz.lineSegments());
+    }
+  }
+  return o;
+}
+
+}  // namespace rtl_ops

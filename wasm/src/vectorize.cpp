@@ -1,0 +1,49 @@
+// vectorize(): the rtl/Vectorization.h vectorizers on an interleaved point array in the wasm heap (see vect_ops.h).
+#include "adapter.h"
+#include "vect_ops.h"
+
+namespace rtl_wasm {
+namespace {
+
+val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool plane, double sigma, double delta,
+              double epsilon, double maxSize, double simplexShift, double maxIterations) {
+  return guarded([&] {
+    if (dim != 2 && dim != 3) throw std::invalid_argument("vectorize: dim must be 2 or 3, got " + std::to_string(dim));
+    if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
+    const double* xyz = doubles(ptr);
+    checkPoints("vectorize", xyz, len, static_cast<std::size_t>(dim), 2, false);
+    rtl_ops::VectorizeParams p;
+    p.method = static_cast<rtl_ops::Method>(method);
+    p.dim = dim;
+    p.plane = plane;
+    p.sigma = sigma;
+    p.delta = delta;
+    p.epsilon = epsilon;
+    p.maxSize = static_cast<std::size_t>(maxSize);
+    p.simplexShift = static_cast<std::size_t>(simplexShift);
+    p.maxIterations = static_cast<std::size_t>(maxIterations);
+    const auto o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p) : rtl_ops::vectorize<3>(xyz, len / 3, p);
+    std::vector<double> polys;
+    std::vector<std::uint32_t> polyOffsets{0};
+    for (const auto& poly : o.polygons) {
+      polys.insert(polys.end(), poly.begin(), poly.end());
+      polyOffsets.push_back(static_cast<std::uint32_t>(polys.size()));
+    }
+    val r = val::object();
+    r.set("ok", o.ok);
+    r.set("count", static_cast<double>(o.count));
+    r.set("segments", f64(o.segments));
+    r.set("polygonPoints", f64(polys));
+    r.set("polygonOffsets", u32(polyOffsets));
+    r.set("indices", u32(o.indices));
+    r.set("params", f64(o.params));
+    r.set("stride", o.stride);
+    r.set("rms", f64(o.rms));
+    return r;
+  });
+}
+
+}  // namespace
+}  // namespace rtl_wasm
+
+EMSCRIPTEN_BINDINGS(rtl_vectorize) { emscripten::function("vectorize", &rtl_wasm::vectorize); }
