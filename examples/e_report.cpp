@@ -13,8 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
+#include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 #include "rtl/io/LaTeXDoc.h"
 #include "rtl/seg/CAR_Segmenter.h"
@@ -27,56 +26,6 @@ namespace
         size_t points;
         double rms;
     };
-
-    //! Total least squares line through pts[b, e), endpoints projected onto it.
-    Segment fit(const std::vector<rtl::Vector2f> &pts, size_t b, size_t e)
-    {
-        Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-        for (size_t i = b; i < e; ++i)
-            mean += pts[i].data().cast<double>();
-        mean /= static_cast<double>(e - b);
-        Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-        for (size_t i = b; i < e; ++i)
-        {
-            Eigen::Vector2d d = pts[i].data().cast<double>() - mean;
-            cov += d * d.transpose();
-        }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(cov);
-        Eigen::Vector2d dir = es.eigenvectors().col(1);
-        auto project = [&](const rtl::Vector2f &p) {
-            Eigen::Vector2d q = mean + dir * dir.dot(p.data().cast<double>() - mean);
-            return rtl::Vector2f(static_cast<float>(q.x()), static_cast<float>(q.y()));
-        };
-        return {project(pts[b]), project(pts[e - 1]), e - b,
-                std::sqrt(std::max(0.0, es.eigenvalues()(0)) / static_cast<double>(e - b))};
-    }
-
-    //! Split a cluster at its farthest point from the chord until every piece is within tol, then fit each piece.
-    void vectorize(const std::vector<rtl::Vector2f> &pts, size_t b, size_t e, float tol, std::vector<Segment> &out)
-    {
-        if (e - b < 2)
-            return;
-        rtl::Vector2f d = pts[e - 1] - pts[b];
-        float len = d.length(), worst_dist = 0;
-        size_t worst = b;
-        for (size_t i = b + 1; i + 1 < e; ++i)
-        {
-            rtl::Vector2f v = pts[i] - pts[b];
-            float dist = len > 0 ? std::abs(d.x() * v.y() - d.y() * v.x()) / len : v.length();
-            if (dist > worst_dist)
-            {
-                worst_dist = dist;
-                worst = i;
-            }
-        }
-        if (worst_dist > tol && e - b > 3)
-        {
-            vectorize(pts, b, worst + 1, tol, out);
-            vectorize(pts, worst, e, tol, out);
-        }
-        else
-            out.push_back(fit(pts, b, e));
-    }
 
     std::string fixed(double v, int digits)
     {
@@ -103,7 +52,7 @@ int main(int argc, char **argv)
         index = std::min(index, scans.size() - 1);
         const auto &scan = scans[index];
 
-        // Clusters (CAR segmenter) and their line segments.
+        // Clusters (CAR segmenter) and their line segments (incremental TLS vectorizer, sigma 3 cm).
         rtl::CAR_Segmenter<rtl::Vector2f> segmenter(2, 0.1f, 0.5f);
         segmenter.loadData(scan.points);
         std::vector<std::vector<rtl::Vector2f>> clusters;
@@ -115,10 +64,21 @@ int main(int argc, char **argv)
         }
         std::vector<Segment> segments;
         std::vector<size_t> segment_cluster;
+        rtl::VectorizerITLSProjections2D<float, double> vectorizer;
+        vectorizer.setSigma(0.03f);
         for (size_t c = 0; c < clusters.size(); ++c)
         {
-            vectorize(clusters[c], 0, clusters[c].size(), 0.05f, segments);
-            segment_cluster.resize(segments.size(), c);
+            if (!vectorizer(clusters[c]))
+                continue;
+            const auto &lines = vectorizer.lineSegments();
+            const auto &idx = vectorizer.indices();
+            const auto &approx = vectorizer.approximations();
+            for (size_t i = 0; i < lines.size() && i < idx.size() && i < approx.size(); ++i)
+            {
+                segments.push_back({lines[i].beg(), lines[i].end(), idx[i].second - idx[i].first,
+                                    std::sqrt(std::max(0.0, static_cast<double>(approx[i].errSquared())))});
+                segment_cluster.push_back(c);
+            }
         }
 
         // 2D figure: grid, axes, coloured clusters, black segments, the robot.

@@ -1,6 +1,5 @@
 // Test helper: a figure of a real CARMEN scan with its clusters in colours and fitted line segments.
-// Clusters come from rtl::CAR_Segmenter; the segments are fitted here (split at the farthest point, then a total
-// least squares line per piece), because the vectorization module had not landed when this was written.
+// Clusters come from rtl::CAR_Segmenter and segments from rtl::VectorizerITLSProjections2D, as in the RTL paper.
 #pragma once
 
 #include <algorithm>
@@ -8,8 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
+#include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 #include "rtl/io/LaTeXTable.h"
 #include "rtl/io/LaTeXTikz2D.h"
@@ -39,56 +37,19 @@ namespace rtl_test_latex
         return out;
     }
 
-    //! TLS line through pts[b, e) with the endpoints projected onto it.
-    inline Segment fit(const std::vector<rtl::Vector2f> &pts, size_t b, size_t e)
+    //! Line segments of one cluster from the library's incremental TLS vectorizer (sigma 3 cm).
+    inline void vectorize(const std::vector<rtl::Vector2f> &pts, std::vector<Segment> &out)
     {
-        Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-        for (size_t i = b; i < e; ++i)
-            mean += pts[i].data().cast<double>();
-        mean /= static_cast<double>(e - b);
-        Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-        for (size_t i = b; i < e; ++i)
-        {
-            Eigen::Vector2d d = pts[i].data().cast<double>() - mean;
-            cov += d * d.transpose();
-        }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(cov);
-        Eigen::Vector2d dir = es.eigenvectors().col(1);
-        auto project = [&](const rtl::Vector2f &p) {
-            Eigen::Vector2d q = mean + dir * dir.dot(p.data().cast<double>() - mean);
-            return rtl::Vector2f(static_cast<float>(q.x()), static_cast<float>(q.y()));
-        };
-        double rms = std::sqrt(std::max(0.0, es.eigenvalues()(0)) / static_cast<double>(e - b));
-        return {project(pts[b]), project(pts[e - 1]), e - b, rms};
-    }
-
-    //! Recursive split at the point farthest from the chord until every piece is within `tol`, then TLS fits.
-    inline void split(const std::vector<rtl::Vector2f> &pts, size_t b, size_t e, float tol, std::vector<Segment> &out)
-    {
-        if (e - b < 2)
+        rtl::VectorizerITLSProjections2D<float, double> vectorizer;
+        vectorizer.setSigma(0.03f);
+        if (!vectorizer(pts))
             return;
-        rtl::Vector2f a = pts[b], c = pts[e - 1];
-        rtl::Vector2f d = c - a;
-        float len = d.length();
-        size_t worst = b;
-        float worst_dist = 0;
-        for (size_t i = b + 1; i + 1 < e; ++i)
-        {
-            rtl::Vector2f v = pts[i] - a;
-            float dist = len > 0 ? std::abs(d.x() * v.y() - d.y() * v.x()) / len : v.length();
-            if (dist > worst_dist)
-            {
-                worst_dist = dist;
-                worst = i;
-            }
-        }
-        if (worst_dist > tol && e - b > 3)
-        {
-            split(pts, b, worst + 1, tol, out);
-            split(pts, worst, e, tol, out);
-            return;
-        }
-        out.push_back(fit(pts, b, e));
+        const auto &segs = vectorizer.lineSegments();
+        const auto &idx = vectorizer.indices();
+        const auto &approx = vectorizer.approximations();
+        for (size_t i = 0; i < segs.size() && i < idx.size() && i < approx.size(); ++i)
+            out.push_back({segs[i].beg(), segs[i].end(), idx[i].second - idx[i].first,
+                           std::sqrt(std::max(0.0, static_cast<double>(approx[i].errSquared())))});
     }
 
     struct ScanResult
@@ -104,7 +65,7 @@ namespace rtl_test_latex
         r.points = scan.points;
         r.clusters = clusters(scan.points);
         for (const auto &c : r.clusters)
-            split(c, 0, c.size(), 0.05f, r.segments);
+            vectorize(c, r.segments);
         return r;
     }
 
