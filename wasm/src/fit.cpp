@@ -1,60 +1,85 @@
-// fitLine: total-least-squares line through interleaved 2D or 3D points (centroid + covariance eigenvectors).
-// TODO(js-api): switch to rtl/vect's ApproximationTlsLine2D/3D once they land (same numbers; this keeps the slice
-// independent of them for now).
+// fitLine: total-least-squares line through interleaved 2D or 3D points, by rtl::ApproximationTlsLine2D/3D.
+// The sums are taken about the centroid (two passes), so that points far from the origin keep full precision;
+// the line is then shifted back.
 #include "adapter.h"
 
-#include <Eigen/Eigenvalues>
+#include <rtl/vect/ApproximationTlsLine2D.h>
+#include <rtl/vect/ApproximationTlsLine3D.h>
+#include <rtl/vect/PrecSums.h>
 
 namespace rtl_wasm {
 namespace {
 
 template <int D>
 val fitLineImpl(const double* xy, std::size_t n) {
-  using Vec = Eigen::Matrix<double, D, 1>;
-  using Mat = Eigen::Matrix<double, D, D>;
-  const Eigen::Map<const Eigen::Matrix<double, D, Eigen::Dynamic>> P(xy, D, static_cast<Eigen::Index>(n));
-  // Two passes (centroid, then centred covariance): no cancellation for points far from the origin.
-  const Vec c = P.rowwise().mean();
-  const Mat cov = (P.colwise() - c) * (P.colwise() - c).transpose() / static_cast<double>(n);
-  Eigen::SelfAdjointEigenSolver<Mat> es(cov);  // eigenvalues ascending
-  if (!(es.eigenvalues()(D - 1) > 0))
-    throw std::invalid_argument("fitLine: all " + str(n) + " points coincide, the line is undefined");
-  Vec dir = es.eigenvectors().col(D - 1).normalized();
+  double c[D] = {};
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) c[k] += xy[D * i + static_cast<std::size_t>(k)];
+  for (int k = 0; k < D; ++k) c[k] /= static_cast<double>(n);
+  // Sums of centred coordinates: s[k] (first order), q[k][l] (second order).
+  double s[D] = {}, q[D][D] = {};
+  for (std::size_t i = 0; i < n; ++i) {
+    double d[D];
+    for (int k = 0; k < D; ++k) d[k] = xy[D * i + static_cast<std::size_t>(k)] - c[k];
+    for (int k = 0; k < D; ++k) {
+      s[k] += d[k];
+      for (int l = k; l < D; ++l) q[k][l] += d[k] * d[l];
+    }
+  }
+  double spread = 0;
+  for (int k = 0; k < D; ++k) spread += q[k][k];
+  if (!(spread > 0)) throw std::invalid_argument("fitLine: all " + str(n) + " points coincide, the line is undefined");
 
   val r = val::object();
   r.set("dim", D);
   r.set("count", static_cast<double>(n));
-  r.set("centroid", f64(c.data(), D));
+  r.set("centroid", f64(c, D));
+  double ms = 0;
   if constexpr (D == 2) {
-    Vec normal(-dir.y(), dir.x());
-    double offset = -normal.dot(c);
+    const rtl::ApproximationTlsLine2D<double, double> line(
+        rtl::PrecSums2D<double>(s[0], s[1], q[0][0], q[1][1], q[0][1], n));
+    double a = line.a(), b = line.b(), off = line.c() - a * c[0] - b * c[1];
     // Convention: offset <= 0, i.e. the normal points from the origin towards the line; through the origin,
-    // the normal's first non-zero component is positive.
-    if (offset > 0 || (offset == 0 && (normal.x() < 0 || (normal.x() == 0 && normal.y() < 0)))) {
-      normal = -normal;
-      offset = -offset;
+    // the normal's first non-zero component is positive. (+ 0.0 turns -0 into 0.)
+    if (off > 0 || (off == 0 && (a < 0 || (a == 0 && b < 0)))) {
+      a = -a;
+      b = -b;
+      off = -off;
     }
-    normal = normal.array() + 0.0;       // no -0 in the output
-    dir = Vec(normal.y() + 0.0, -normal.x() + 0.0);  // normal = (-dir.y, dir.x)
-    offset += 0.0;
-    const double ms = ((normal.transpose() * P).array() + offset).square().mean();
-    r.set("normal", f64(normal.data(), 2));
-    r.set("offset", offset);
-    r.set("direction", f64(dir.data(), 2));
-    r.set("rms", std::sqrt(ms));
+    const double normal[2] = {a + 0.0, b + 0.0}, dir[2] = {b + 0.0, -a + 0.0};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double e = a * xy[2 * i] + b * xy[2 * i + 1] + off;
+      ms += e * e;
+    }
+    r.set("normal", f64(normal, 2));
+    r.set("offset", off + 0.0);
+    r.set("direction", f64(dir, 2));
   } else {
+    const rtl::ApproximationTlsLine3D<double, double> line(
+        rtl::PrecSums3D<double>(s[0], s[1], s[2], q[0][0], q[1][1], q[2][2], q[0][1], q[1][2], q[0][2], n));
+    const auto v = line.direction();
+    double dir[3] = {v[0], v[1], v[2]};
+    const double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     // Direction sign: first non-zero component positive.
-    for (int k = 0; k < D; ++k) {
-      if (dir(k) == 0) continue;
-      if (dir(k) < 0) dir = -dir;
-      break;
+    double sign = 1;
+    for (double x : dir)
+      if (x != 0) {
+        sign = x < 0 ? -1 : 1;
+        break;
+      }
+    for (double& x : dir) x = sign * x / len + 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double d[3], along = 0, sq = 0;
+      for (int k = 0; k < 3; ++k) {
+        d[k] = xy[3 * i + static_cast<std::size_t>(k)] - c[k];
+        along += d[k] * dir[k];
+        sq += d[k] * d[k];
+      }
+      ms += std::max(0.0, sq - along * along);
     }
-    dir = dir.array() + 0.0;
-    const Eigen::Matrix<double, D, Eigen::Dynamic> Q = P.colwise() - c;
-    const double ms = (Q.colwise().squaredNorm().array() - (dir.transpose() * Q).array().square()).max(0.0).mean();
-    r.set("direction", f64(dir.data(), D));
-    r.set("rms", std::sqrt(ms));
+    r.set("direction", f64(dir, 3));
   }
+  r.set("rms", std::sqrt(ms / static_cast<double>(n)));
   return r;
 }
 
