@@ -1,0 +1,103 @@
+// bin/rtl.js with the package's vectorizers: a known L shape into its two sides with every method, per-cluster
+// vectorization of a real scan (the same segments as vectorize() called directly), and SVG/TikZ output.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import init from 'rtl-wasm';
+import { DATA, REPO, isReturn, parseCarmen } from './helpers.js';
+
+const CLI = join(REPO, 'bin', 'rtl.js');
+function rtl(args, input) {
+  const r = spawnSync(process.execPath, [CLI, ...args], { cwd: REPO, encoding: 'utf8', input, timeout: 60000 });
+  return { code: r.status, out: r.stdout, err: r.stderr };
+}
+
+describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
+  let tmp, pkg;
+  before(async () => { tmp = mkdtempSync(join(tmpdir(), 'rtl-cli-')); pkg = await init(); });
+  after(() => rmSync(tmp, { recursive: true, force: true }));
+
+  test('a noise-free L-shaped CSV becomes its two sides, meeting at the corner, with every method', () => {
+    const rows = ['x,y'];
+    for (let i = 0; i <= 20; i++) rows.push(`${(i * 0.1).toFixed(2)},0`);
+    for (let i = 1; i <= 15; i++) rows.push(`2,${(i * 0.1).toFixed(2)}`);
+    const csv = join(tmp, 'l.csv');
+    writeFileSync(csv, rows.join('\n') + '\n');
+    for (const method of ['ftls', 'aftls', 'dp', 'rw']) {
+      const r = rtl([csv, '-m', method, '--sigma', '0.01', '--epsilon', '0.01']);
+      assert.equal(r.code, 0, `${method}: ${r.err}`);
+      const j = JSON.parse(r.out);
+      assert.equal(j.vectorization.method, method);
+      const segs = j.vectorization.segments;
+      assert.equal(segs.length, 2, `${method}: ${JSON.stringify(segs)}`);
+      const near = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]) < 1e-6;
+      assert.ok(near(segs[0].coordinates.slice(0, 2), [0, 0]), `${method} start ${segs[0].coordinates}`);
+      assert.ok(near(segs[0].coordinates.slice(2, 4), [2, 0]), `${method} corner ${segs[0].coordinates}`);
+      assert.ok(near(segs[1].coordinates.slice(0, 2), [2, 0]), `${method} corner ${segs[1].coordinates}`);
+      assert.ok(near(segs[1].coordinates.slice(2, 4), [2, 1.5]), `${method} end ${segs[1].coordinates}`);
+      for (const s of segs) assert.ok(s.rms < 1e-6, `${method}: rms ${s.rms}`);
+      assert.equal(segs[0].cluster, null);
+    }
+  });
+
+  test('-s -m vectorizes each cluster of a real scan exactly as vectorize() does', () => {
+    const r = rtl(['tests/data/intel.log', '--scan', '12', '-s', '-m', 'ftls', '--sigma', '0.02', '--delta', '0.2']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    assert.deepEqual({ ...j.vectorization, segments: undefined }, { method: 'ftls', primitive: 'line', sigma: 0.02, delta: 0.2, segments: undefined });
+    const scan = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'))[12];
+    const points = new Float64Array(2 * scan.n).fill(NaN);
+    scan.ranges.forEach((rr, i) => {
+      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
+    });
+    const expected = [];
+    pkg.segment(points).clusters.forEach((c, k) => {
+      if (c.indices.length < 3) return;
+      const xy = new Float64Array(2 * c.indices.length);
+      c.indices.forEach((i, q) => { xy[2 * q] = points[2 * i]; xy[2 * q + 1] = points[2 * i + 1]; });
+      const v = pkg.vectorize(xy, { method: 'ftls', sigma: 0.02, delta: 0.2 });
+      for (let q = 0; q < v.count; q++) {
+        expected.push({ cluster: k, coordinates: Array.from(v.segments.subarray(4 * q, 4 * q + 4)), rms: v.rms[q] });
+      }
+    });
+    const got = j.vectorization.segments;
+    assert.ok(got.length >= 2);
+    assert.equal(got.length, expected.length);
+    got.forEach((s, q) => {
+      assert.equal(s.cluster, expected[q].cluster);
+      s.coordinates.forEach((x, d) => assert.ok(Math.abs(x - expected[q].coordinates[d]) < 1e-9));
+      assert.ok(Math.abs(s.rms - expected[q].rms) < 1e-9);
+      assert.ok(s.rms <= 0.02 + 1e-9, `sigma bound: ${s.rms}`);
+      const members = j.segmentation.clusters[s.cluster];
+      assert.ok(members.includes(s.indices[0]) && members.includes(s.indices[1]), 'index range inside its cluster');
+    });
+  });
+
+  test('segments drawn as SVG (stdout) and as a standalone TikZ document (-o)', () => {
+    let r = rtl(['tests/data/intel.log', '-s', '-m', 'dp', '--epsilon', '0.05', '-f', 'svg']);
+    assert.equal(r.code, 0, r.err);
+    const n = JSON.parse(rtl(['tests/data/intel.log', '-s', '-m', 'dp', '--epsilon', '0.05']).out).vectorization.segments.length;
+    assert.match(r.out, /^<svg[\s>]/);
+    assert.equal(r.out.match(/<line /g).length, n);
+    const out = join(tmp, 'scan.tex');
+    r = rtl(['tests/data/csail.log', '--scan', '1', '-m', 'itls', '-f', 'tikz', '--standalone', '-o', out]);
+    assert.equal(r.code, 0, r.err);
+    assert.equal(r.out, '');
+    assert.match(readFileSync(out, 'utf8'), /^\\documentclass[\s\S]*\\begin\{tikzpicture\}[\s\S]*\\end\{document\}\s*$/);
+  });
+
+  test('3D: lines through a LiDAR ring, planes need aftls', () => {
+    const r = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '0', '-s', '--upper', '1', '-m', 'ftls', '--sigma', '0.05']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    assert.equal(j.dim, 3);
+    assert.ok(j.vectorization.segments.length >= 1);
+    for (const s of j.vectorization.segments) assert.equal(s.coordinates.length, 6);
+    const bad = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '-m', 'dp', '--primitive', 'plane']);
+    assert.equal(bad.code, 2);
+    assert.match(bad.err, /--primitive plane needs --vectorize aftls/);
+  });
+});
