@@ -257,6 +257,48 @@ function compute() {
   };
 }
 
+// ---- map frame (the package's transformation tree) -----------------------------------------------------------------
+
+// One tree per log: root 'map', a frame 'scan k' per scan. insert() takes the transformation from the parent's
+// coordinates to the child's, i.e. the inverse of the scan's pose (x, y, theta) in the map.
+function treeFor(dataset) {
+  state.trees ??= {};
+  if (!state.trees[dataset]) {
+    const tree = new state.rtl.TfTree('map', { dim: 2 });
+    state.scans[dataset].forEach((s, k) => {
+      const c = Math.cos(s.theta), sn = Math.sin(s.theta);
+      tree.insert(`scan ${k}`, 'map', { angle: -s.theta, translation: [-(c * s.x + sn * s.y), sn * s.x - c * s.y] });
+    });
+    state.trees[dataset] = tree;
+  }
+  return state.trees[dataset];
+}
+
+// A copy of the result with everything drawn moved into the map frame by tree.transformPoints(scan -> map), plus the
+// other scans of the log as background. The numbers shown (fit, clusters) stay those of the robot frame.
+function inMapFrame(r) {
+  const tree = treeFor(r.dataset);
+  const frame = `scan ${r.scanIndex}`;
+  const move = (pts) => tree.transformPoints(frame, 'map', pts);
+  const scan = state.scans[r.dataset][r.scanIndex];
+  const segs = move(r.segments.flatMap((g) => [g.x1, g.y1, g.x2, g.y2]));
+  const out = {
+    ...r,
+    frame: 'map',
+    points: move(r.points),
+    segments: r.segments.map((g, k) => ({ ...g, x1: segs[4 * k], y1: segs[4 * k + 1], x2: segs[4 * k + 2], y2: segs[4 * k + 3] })),
+    sensor: { x: scan.x, y: scan.y, theta: scan.theta },
+    background: new Float64Array(state.scans[r.dataset].flatMap((s, k) => (k === r.scanIndex ? [] : Array.from(tree.transformPoints(`scan ${k}`, 'map', s.points))))),
+  };
+  if (r.fit) {
+    // A line moves with its centroid and normal (rotate the normal: transform the normal's tip and the centroid).
+    const [c0, c1, t0, t1] = move([r.fit.centroid[0], r.fit.centroid[1], r.fit.centroid[0] + r.fit.normal[0], r.fit.centroid[1] + r.fit.normal[1]]);
+    const normal = [t0 - c0, t1 - c1];
+    out.fit = { ...r.fit, centroid: [c0, c1], normal, offset: -(normal[0] * c0 + normal[1] * c1) };
+  }
+  return out;
+}
+
 // ---- drawing ------------------------------------------------------------------------------------------------------
 
 function clusterColour(ci, size, s) {
@@ -273,19 +315,19 @@ function fitCanvas(canvas) {
   return dpr;
 }
 
-function autoExtent(points) {
+function autoExtent(points, cx = 0, cy = 0) {   // (cx, cy): the sensor
   const n = points.length / 2;
   const ranges = [];
   for (let i = 0; i < n; i++) {
     const x = points[2 * i], y = points[2 * i + 1];
-    if (Number.isFinite(x) && Number.isFinite(y)) ranges.push(Math.hypot(x, y));
+    if (Number.isFinite(x) && Number.isFinite(y)) ranges.push(Math.hypot(x - cx, y - cy));
   }
   ranges.sort((a, b) => a - b);
   const limit = ranges.length ? 1.5 * ranges[Math.floor(0.9 * (ranges.length - 1))] : 1;
-  let minX = 0, maxX = 0, minY = 0, maxY = 0;
+  let minX = cx, maxX = cx, minY = cy, maxY = cy;
   for (let i = 0; i < n; i++) {
     const x = points[2 * i], y = points[2 * i + 1];
-    if (!Number.isFinite(x) || !Number.isFinite(y) || Math.hypot(x, y) > limit) continue;
+    if (!Number.isFinite(x) || !Number.isFinite(y) || Math.hypot(x - cx, y - cy) > limit) continue;
     minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
   }
   const pad = 0.06 * Math.max(maxX - minX, maxY - minY, 1);
@@ -304,7 +346,8 @@ function draw(r) {
   // View: by default the bulk of the scan (points up to 1.5x the 90th-percentile range, so a few far returns
   // through a door do not shrink the room to a corner) plus the sensor; the user can zoom (wheel) and pan (drag).
   const n = r.points.length / 2;
-  const view = state.zoom ?? autoExtent(r.points);
+  const sensor = r.sensor ?? { x: 0, y: 0, theta: 0 };
+  const view = state.zoom ?? autoExtent(r.points, sensor.x, sensor.y);
   let { minX, maxX, minY, maxY } = view;
   const scale = Math.min(W / (maxX - minX), H / (maxY - minY));
   const ox = (W - scale * (maxX - minX)) / 2, oy = (H - scale * (maxY - minY)) / 2;
@@ -330,12 +373,21 @@ function draw(r) {
 
   const s = r.settings;
 
+  // Map frame: the other scans of the log, faint, where their poses put them.
+  if (r.background) {
+    ctx.fillStyle = 'rgba(90, 100, 117, 0.35)';
+    const b = r.background, rad = 1.1 * dpr;
+    for (let i = 0; i < b.length; i += 2) {
+      if (Number.isFinite(b[i])) ctx.fillRect(X(b[i]) - rad, Y(b[i + 1]) - rad, 2 * rad, 2 * rad);
+    }
+  }
+
   // Beams of the fitted points, faint, to show which measurements the fit uses.
   if (s.show.fit && r.fit) {
     ctx.strokeStyle = 'rgba(31, 95, 191, 0.10)';
     ctx.lineWidth = 1 * dpr;
     ctx.beginPath();
-    for (const k of r.fitIdx) { ctx.moveTo(X(0), Y(0)); ctx.lineTo(X(r.points[2 * k]), Y(r.points[2 * k + 1])); }
+    for (const k of r.fitIdx) { ctx.moveTo(X(sensor.x), Y(sensor.y)); ctx.lineTo(X(r.points[2 * k]), Y(r.points[2 * k + 1])); }
     ctx.stroke();
   }
 
@@ -405,11 +457,15 @@ function draw(r) {
     ctx.beginPath(); ctx.arc(X(r.fit.centroid[0]), Y(r.fit.centroid[1]), 4.5 * dpr, 0, 2 * Math.PI); ctx.fill();
   }
 
-  // The sensor: a triangle at the origin pointing along +x (the robot's heading).
-  const sz = 9 * dpr;
+  // The sensor: a triangle pointing along the robot's heading (+x in the robot frame).
+  const sz = 9 * dpr, hc = Math.cos(sensor.theta), hs = Math.sin(sensor.theta);
+  const corner = (u, v) => [X(sensor.x) + (u * hc - v * hs) * sz, Y(sensor.y) - (u * hs + v * hc) * sz];
   ctx.fillStyle = '#1c2330';
-  ctx.beginPath(); ctx.moveTo(X(0) + sz, Y(0)); ctx.lineTo(X(0) - sz * 0.6, Y(0) - sz * 0.6); ctx.lineTo(X(0) - sz * 0.6, Y(0) + sz * 0.6); ctx.closePath(); ctx.fill();
+  ctx.beginPath(); ctx.moveTo(...corner(1, 0)); ctx.lineTo(...corner(-0.6, -0.6)); ctx.lineTo(...corner(-0.6, 0.6)); ctx.closePath(); ctx.fill();
 
+  $('frame-text').textContent = r.frame === 'map'
+    ? `Map frame: scan ${r.scanIndex} in colour and the other scans of the log in grey, each placed by its pose through the package's transformation tree; the triangle is the robot, facing its heading.`
+    : 'Robot frame: the sensor is the triangle at the origin, facing +x.';
   canvas.setAttribute('aria-label', `${DATASETS[r.dataset].label} scan ${r.scanIndex}: ${r.validCount} points` +
     (r.labels ? ` in ${r.stats.clusterCount} clusters` : '') +
     (state.features.vectorize ? `, ${r.stats.segmentCount} line segments (${s.method.toUpperCase()})` : '') +
@@ -446,7 +502,7 @@ function showNumbers(r) {
   }
 }
 
-function expose(r) {
+function expose(r, shown = r) {
   state.revision += 1;
   window.__rtl = {
     ready: true,
@@ -470,10 +526,15 @@ function expose(r) {
       labels: Array.from(r.labels),
       timeMs: r.stats.segTimeMs,
     },
+    // What the figure shows: the frame, the sensor pose and the points in that frame.
+    frame: shown.frame ?? 'robot',
+    sensor: shown.sensor ?? { x: 0, y: 0, theta: 0 },
+    shownPoints: Array.from(shown.points),
+    backgroundPoints: shown.background ? shown.background.length / 2 : 0,
     // Client (CSS pixel) coordinates of point i in the figure, for tests that click on the drawing.
     clientPoint(i) {
       const v = state.view, rect = $('canvas').getBoundingClientRect();
-      return { x: rect.left + v.X(r.points[2 * i]) * rect.width / v.W, y: rect.top + v.Y(r.points[2 * i + 1]) * rect.height / v.H };
+      return { x: rect.left + v.X(shown.points[2 * i]) * rect.width / v.W, y: rect.top + v.Y(shown.points[2 * i + 1]) * rect.height / v.H };
     },
     vectorization: state.features.vectorize ? {
       method: r.settings.method,
@@ -504,10 +565,11 @@ function update() {
       $('fit-from').max = $('fit-to').max = String(lastBeam);
       if (state.wholeScan) { $('fit-from').value = '0'; $('fit-to').value = String(lastBeam); state.wholeScan = false; }
       const r = compute();
-      state.result = r;
-      draw(r);
+      const shown = state.features.tfTree && $('map-frame').checked ? inMapFrame(r) : r;
+      state.result = shown;
+      draw(shown);
       showNumbers(r);
-      expose(r);
+      expose(r, shown);
       const f = state.features;
       setStatus(`${DATASETS[r.dataset].label}, scan ${r.scanIndex}: ` + (f.segment
         ? `${r.stats.clusterCount} clusters, ` + (f.vectorize ? `${r.stats.segmentCount} segments by ${r.settings.method.toUpperCase()} ` : '') +
@@ -670,6 +732,7 @@ function applyFeatures() {
     vectorize: has('vectorize'),
     svg: has('toSvg'),
     tikz: has('toTikz'),
+    tfTree: typeof rtl.TfTree === 'function',
   };
   const f = state.features;
   const missing = (fieldset, what) => {
@@ -686,6 +749,7 @@ function applyFeatures() {
   $('show-clusters').disabled = !f.segment;
   $('show-segments').disabled = !f.vectorize;
   $('fit-tip').hidden = !f.segment;
+  $('map-frame-row').hidden = !f.tfTree;
 }
 
 async function main() {
@@ -706,6 +770,7 @@ async function main() {
   }
   $('dataset').addEventListener('change', () => { $('scan').value = '0'; state.zoom = null; resetFitWindow(); update(); });
   $('fit-all').addEventListener('click', () => { resetFitWindow(); update(); });
+  $('map-frame').addEventListener('change', () => { state.zoom = null; });
   wireCanvas($('canvas'));
   $('reset-view').addEventListener('click', resetView);
   $('dl-svg').addEventListener('click', () => {
