@@ -1,6 +1,6 @@
 // A consumer app as a web developer writes it: a bare import of the installed package, bundled by `vite build`.
-// It fits a line to four points with a known answer and triggers one error, then publishes the outcome on
-// window.__result (and in the page) for the browser test.
+// It fits a line to four points with a known answer, triggers one error, segments and vectorizes an L-shaped wall and
+// draws with the SVG exporter, then publishes the outcome on window.__result (and in the page) for the browser test.
 import init from 'rtl-wasm';
 
 // Points at t = -3, -1, 1, 3 along the direction u = (2, 1)/sqrt(5) through (1, 1.5), pushed off the line by
@@ -30,7 +30,16 @@ async function main() {
   const end = (t) => [c[0] + t * dir[0], c[1] + t * dir[1]];
   const svg = rtl.toSvg({ points, segments: [...end(-3), ...end(3)], title: 'TLS line' }, { width: 400, height: 300 });
   document.getElementById('figure').innerHTML = svg;
+  // An L-shaped wall (2 m along x, then 1.5 m along y, 10 cm spacing) and a far point: two clusters, and FTLS
+  // turns the L into its two sides meeting at the corner (2, 0).
+  const wall = [];
+  for (let i = 0; i <= 20; i++) wall.push(i * 0.1, 0);
+  for (let i = 1; i <= 15; i++) wall.push(2, i * 0.1);
+  const seg = rtl.segment(new Float64Array([...wall, 9, 9]), { lowerBound: 0.2, upperBound: 0.5 });
+  const vec = rtl.vectorize(new Float64Array(wall), { method: 'ftls', sigma: 0.01 });
   return {
+    clusterSizes: seg.clusters.map((c) => c.indices.length),
+    segments: Array.from(vec.segments),
     svgCircles: document.querySelectorAll('#figure svg circle').length,
     svgLines: document.querySelectorAll('#figure svg line').length,
     version: rtl.version,

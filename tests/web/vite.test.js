@@ -48,6 +48,11 @@ async function checkApp(browser, url, shot) {
   assert.equal(r.error?.name, 'RangeError');
   assert.match(r.error.message, /fitLine/);
   assert.equal(r.againRms, r.rms);
+  assert.deepEqual(r.clusterSizes, [36, 1]);
+  assert.equal(r.segments.length, 8, `two segments: ${r.segments}`);
+  [[0, 0], [2, 0], [2, 0], [2, 1.5]].forEach(([x, y], k) => {
+    assert.ok(Math.hypot(r.segments[2 * k] - x, r.segments[2 * k + 1] - y) < 1e-9, `end ${k}: ${r.segments}`);
+  });
   assert.equal(r.svgCircles, 4);
   assert.equal(r.svgLines, 1);
   assert.deepEqual(wasmResponses, ['200 application/wasm'], 'one streaming-compilable .wasm request');
