@@ -210,7 +210,7 @@ namespace rtl
         }
 
         //! Two random endpoints, beg first; each element static_cast<Element>(el_rnd_gen()).
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static ChildType random(const ElRndSrc &el_rnd_gen)
         {
             const VectorType b = VectorType::random(el_rnd_gen);

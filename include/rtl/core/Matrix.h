@@ -168,7 +168,7 @@ namespace rtl
         static DistanceType distanceSquared(const Matrix &m1, const Matrix &m2) { return (m1.elements - m2.elements).squaredNorm(); }
 
         //! Every element is static_cast<Element>(el_rnd_gen()), row by row.
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static Matrix random(const ElRndSrc &el_rnd_gen)
         {
             static_assert(rows > 0 && cols > 0, "random() needs a fixed-size matrix.");

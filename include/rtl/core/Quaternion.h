@@ -121,7 +121,7 @@ namespace rtl
         static Quaternion identity() { return Quaternion(ElementType(1), ElementType(0), ElementType(0), ElementType(0)); }
 
         //! Four coefficients static_cast<Element>(el_rnd_gen()), drawn in the order w, x, y, z.
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static Quaternion random(const ElRndSrc &el_rnd_gen)
         {
             const auto w = static_cast<ElementType>(el_rnd_gen());
@@ -131,7 +131,8 @@ namespace rtl
             return Quaternion(w, x, y, z);
         }
         //! Unit rotation quaternion: angle ang(), axis from three el() draws (x, y, z); a zero axis becomes the X axis.
-        template<class AngRndSrc, class ElRndSrc>
+        template<class AngRndSrc, class ElRndSrc,
+                 typename = std::enable_if_t<std::is_invocable_v<const AngRndSrc &> && std::is_invocable_v<const ElRndSrc &>>>
         static Quaternion random(const AngRndSrc &ang_rnd_gen, const ElRndSrc &el_rnd_gen)
         {
             const auto angle = static_cast<ElementType>(ang_rnd_gen());

@@ -186,7 +186,7 @@ namespace rtl
         }
 
         //! Every element is static_cast<Element>(el_rnd_gen()), drawn in index order.
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static ChildType random(const ElRndSrc &el_rnd_gen)
         {
             EigenType e;
