@@ -23,6 +23,8 @@ const GAP_COLOUR = '#c9ced6';
 
 const $ = (id) => document.getElementById(id);
 const fmt = (v, d = 3) => (Number.isFinite(v) ? v.toFixed(d) : '–');
+// Browsers coarsen performance.now() (to 0.1 ms in Chromium without cross-origin isolation): do not print 0.00 ms.
+const fmtMs = (t) => (!Number.isFinite(t) ? '–' : t < 0.1 ? '< 0.1 ms' : `${t.toFixed(1)} ms`);
 
 const state = {
   rtl: null,
@@ -174,27 +176,37 @@ function compute() {
   const t1 = performance.now();
   const clusters = seg ? seg.clusters.map((c) => Array.from(c.indices)) : [];
 
-  // Vectorization of each cluster big enough to be drawn as a cluster.
-  const segments = [];
-  let rmsSum = 0, rmsMax = 0, rmsCount = 0, vecPoints = 0;
-  const t2 = performance.now();
-  if (f.vectorize) clusters.forEach((idx, ci) => {
-    if (idx.length < Math.max(2, s.minPoints)) return;
-    const pts = gather(points, idx);
-    const v = rtl.vectorize(pts, {
-      dim: 2, method: s.method, sigma: s.sigma, delta: s.delta, epsilon: s.epsilon,
-    });
-    vecPoints += idx.length;
-    for (let k = 0; k < v.count; k++) {
-      const seg4 = v.segments.subarray(4 * k, 4 * k + 4);
-      segments.push({ cluster: ci, x1: seg4[0], y1: seg4[1], x2: seg4[2], y2: seg4[3] });
-      if (v.rms) {
+  // Vectorization of each cluster big enough to be drawn as a cluster, by one method.
+  const drawnClusters = clusters.map((idx, ci) => [idx, ci]).filter(([idx]) => idx.length >= Math.max(2, s.minPoints))
+    .map(([idx, ci]) => ({ ci, idx, pts: gather(points, idx) }));
+  const vectorizeAll = (method) => {
+    const out = { method, segments: [], rmsSum: 0, rmsMax: 0, rmsCount: 0, vecPoints: 0, timeMs: 0 };
+    const t = performance.now();
+    for (const { ci, idx, pts } of drawnClusters) {
+      const v = rtl.vectorize(pts, { dim: 2, method, sigma: s.sigma, delta: s.delta, epsilon: s.epsilon });
+      out.vecPoints += idx.length;
+      for (let k = 0; k < v.count; k++) {
+        const seg4 = v.segments.subarray(4 * k, 4 * k + 4);
+        out.segments.push({ cluster: ci, x1: seg4[0], y1: seg4[1], x2: seg4[2], y2: seg4[3] });
         const r = v.rms[k];
-        if (Number.isFinite(r)) { rmsSum += r; rmsMax = Math.max(rmsMax, r); rmsCount++; }
+        if (Number.isFinite(r)) { out.rmsSum += r; out.rmsMax = Math.max(out.rmsMax, r); out.rmsCount++; }
       }
     }
-  });
+    out.timeMs = performance.now() - t;
+    return out;
+  };
+  const t2 = performance.now();
+  const chosen = f.vectorize ? vectorizeAll(s.method) : { segments: [], rmsSum: 0, rmsMax: 0, rmsCount: 0, vecPoints: 0 };
   const t3 = performance.now();
+  const { segments, rmsSum, rmsMax, rmsCount, vecPoints } = chosen;
+  // The same clusters and parameters with every method, for the comparison table.
+  const comparison = f.vectorize
+    ? Object.keys(METHOD_TEXT).map((m) => (m === s.method ? chosen : vectorizeAll(m))).map((v) => ({
+      method: v.method, segmentCount: v.segments.length, rmsMean: v.rmsCount ? v.rmsSum / v.rmsCount : NaN,
+      rmsMax: v.rmsCount ? v.rmsMax : NaN, pointsPerSegment: v.segments.length ? v.vecPoints / v.segments.length : NaN,
+      timeMs: v.timeMs,
+    }))
+    : null;
 
   // The TLS line: either the clicked cluster or the beam window [from, to].
   let fitIdx;
@@ -242,6 +254,7 @@ function compute() {
     fitSource,
     fitError,
     segments,
+    comparison,
     stats: {
       clusterCount: clusters.length,
       drawnClusters: clusters.filter((c) => c.length >= s.minPoints).length,
@@ -492,13 +505,26 @@ function showNumbers(r) {
   if (state.features.segment) {
     $('seg-count').textContent = `${r.stats.clusterCount} (${r.stats.drawnClusters} with ≥ ${r.settings.minPoints} pts)`;
     $('seg-largest').textContent = `${r.stats.largest} points`;
-    $('seg-time').textContent = `${fmt(r.stats.segTimeMs, 2)} ms`;
+    $('seg-time').textContent = fmtMs(r.stats.segTimeMs);
   }
   if (state.features.vectorize) {
     $('vec-count').textContent = String(r.stats.segmentCount);
     $('vec-ratio').textContent = r.stats.segmentCount ? fmt(r.stats.vecPoints / r.stats.segmentCount, 1) : '–';
     $('vec-rms').textContent = Number.isFinite(r.stats.rmsMean) ? `${fmt(r.stats.rmsMean * 1000, 1)} / ${fmt(r.stats.rmsMax * 1000, 1)} mm` : '–';
-    $('vec-time').textContent = `${fmt(r.stats.vecTimeMs, 2)} ms`;
+    $('vec-time').textContent = fmtMs(r.stats.vecTimeMs);
+  }
+  $('compare').hidden = !r.comparison;
+  if (r.comparison) {
+    $('compare-rows').replaceChildren(...r.comparison.map((c) => {
+      const tr = document.createElement('tr');
+      tr.dataset.method = c.method;
+      tr.tabIndex = 0;
+      if (c.method === r.settings.method) { tr.className = 'current'; tr.setAttribute('aria-current', 'true'); }
+      const cells = [c.method.toUpperCase(), String(c.segmentCount), fmt(c.pointsPerSegment, 1),
+        `${fmt(c.rmsMean * 1000, 1)} mm`, `${fmt(c.rmsMax * 1000, 1)} mm`, fmtMs(c.timeMs)];
+      for (const text of cells) { const td = document.createElement('td'); td.textContent = text; tr.append(td); }
+      return tr;
+    }));
   }
 }
 
@@ -543,6 +569,7 @@ function expose(r, shown = r) {
       rmsMean: r.stats.rmsMean,
       rmsMax: r.stats.rmsMax,
       timeMs: r.stats.vecTimeMs,
+      comparison: r.comparison.map(({ timeMs, ...c }) => c),
     } : null,
   };
 }
@@ -573,7 +600,7 @@ function update() {
       const f = state.features;
       setStatus(`${DATASETS[r.dataset].label}, scan ${r.scanIndex}: ` + (f.segment
         ? `${r.stats.clusterCount} clusters, ` + (f.vectorize ? `${r.stats.segmentCount} segments by ${r.settings.method.toUpperCase()} ` : '') +
-          `in ${fmt(r.stats.segTimeMs + r.stats.vecTimeMs, 1)} ms.`
+          `in ${fmtMs(r.stats.segTimeMs + r.stats.vecTimeMs)}.`
         : `${r.validCount} returns` + (r.fit ? `, TLS line through ${r.fit.n} points, RMS ${fmt(r.fit.rms * 1000, 1)} mm.` : '.')));
     } catch (e) {
       // Bad settings (ours, or a RangeError from the package naming the option) are the user's to fix.
@@ -770,6 +797,15 @@ async function main() {
   }
   $('dataset').addEventListener('change', () => { $('scan').value = '0'; state.zoom = null; resetFitWindow(); update(); });
   $('fit-all').addEventListener('click', () => { resetFitWindow(); update(); });
+  // A row of the comparison table selects its method (mouse or Enter/Space).
+  const pickRow = (ev) => {
+    const tr = ev.target.closest('tr[data-method]');
+    if (!tr || tr.dataset.method === $('method').value) return;
+    $('method').value = tr.dataset.method;
+    update();
+  };
+  $('compare-rows').addEventListener('click', pickRow);
+  $('compare-rows').addEventListener('keydown', (ev) => { if (ev.key === 'Enter' || ev.key === ' ') { ev.preventDefault(); pickRow(ev); } });
   $('map-frame').addEventListener('change', () => { state.zoom = null; });
   wireCanvas($('canvas'));
   $('reset-view').addEventListener('click', resetView);

@@ -95,6 +95,27 @@ describe('demo page (web/index.html) in Chromium: vectorization', { timeout: 240
     }
   });
 
+  test('the comparison table runs all five methods on the same clusters; a row click selects its method', async () => {
+    const r = await state();
+    const table = r.vectorization.comparison;
+    assert.deepEqual(table.map((c) => c.method), ['ftls', 'aftls', 'itls', 'dp', 'rw']);
+    const mine = table.find((c) => c.method === r.vectorization.method);
+    assert.equal(mine.segmentCount, r.vectorization.segmentCount);
+    assert.equal(mine.rmsMax, r.vectorization.rmsMax);
+    for (const c of table) assert.ok(c.segmentCount >= 1, c.method);
+    const rows = await page.$$eval('#compare-rows tr', (trs) => trs.map((tr) => [tr.dataset.method, tr.className, tr.children[1].textContent]));
+    assert.deepEqual(rows.map(([m]) => m), table.map((c) => c.method));
+    assert.deepEqual(rows.filter(([, cls]) => cls === 'current').map(([m]) => m), [r.vectorization.method]);
+    rows.forEach(([, , count], k) => assert.equal(count, String(table[k].segmentCount)));
+    const rev = await revision();
+    await page.click('#compare-rows tr[data-method="itls"]');
+    const after = await settled(rev);
+    assert.equal(after.vectorization.method, 'itls');
+    assert.equal(await page.inputValue('#method'), 'itls');
+    assert.equal(after.vectorization.segmentCount, table.find((c) => c.method === 'itls').segmentCount);
+    await page.screenshot({ path: join(resultsDir(), 'page-compare.png'), fullPage: true });
+  });
+
   test('a smaller epsilon (DP) or sigma (FTLS) gives more segments; FTLS keeps every RMS under sigma', async () => {
     await page.selectOption('#method', 'dp');
     await page.fill('#epsilon', '0.3');
