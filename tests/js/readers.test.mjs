@@ -92,3 +92,66 @@ test('readOrganizedLidar: 20,000 failing reads leave the heap and stack where th
   assert.equal(rtl.memoryBytes(), mem);
   assert.equal(rtl.stackPointer(), sp);
 });
+
+// ---- CARMEN logs
+function parseCarmen(text) {
+  const scans = [];
+  text.split('\n').forEach((l, li) => {
+    const t = l.trim().split(/\s+/);
+    if (t[0] !== 'FLASER') return;
+    const n = Number(t[1]), res = n % 2 ? Math.PI / (n - 1) : Math.PI / n;
+    const ranges = t.slice(2, 2 + n).map(Number);
+    scans.push({ line: li + 1, n, ranges, res, x: Number(t[2 + n]), y: Number(t[3 + n]), theta: Number(t[4 + n]), ts: Number(t[8 + n]) });
+  });
+  return scans;
+}
+
+test('readCarmenLog: intel (180 beams) and csail (361 beams) against an independent parse', () => {
+  for (const [name, beams] of [['intel.log', 180], ['csail.log', 361]]) {
+    const text = readFileSync(new URL(name, DATA), 'utf8');
+    const ref = parseCarmen(text);
+    const scans = rtl.readCarmenLog(text);
+    assert.equal(scans.length, 30, name);
+    assert.equal(ref.length, 30);
+    scans.forEach((s, k) => {
+      const r = ref[k];
+      assert.equal(s.line, r.line);
+      assert.equal(s.x, r.x);
+      assert.equal(s.y, r.y);
+      assert.equal(s.theta, r.theta);
+      assert.equal(s.timestamp, r.ts);
+      assert.ok(s.points instanceof Float64Array && s.ranges instanceof Float64Array);
+      assert.equal(s.ranges.length, beams);
+      assert.deepEqual(Array.from(s.ranges), r.ranges);
+      for (let i = 0; i < beams; i++) {
+        const range = r.ranges[i], a = -Math.PI / 2 + i * r.res;
+        if (range > 0 && range < 80) {
+          assert.ok(Math.abs(s.points[2 * i] - range * Math.cos(a)) < 1e-12 && Math.abs(s.points[2 * i + 1] - range * Math.sin(a)) < 1e-12, `${name} scan ${k} beam ${i}`);
+        } else {
+          assert.ok(Number.isNaN(s.points[2 * i]) && Number.isNaN(s.points[2 * i + 1]), `${name} scan ${k} beam ${i} is a gap`);
+        }
+      }
+    });
+    // The bytes of the file give the same scans; readCarmen is the same function.
+    const fromBytes = rtl.readCarmen(readFileSync(new URL(name, DATA)));
+    assert.deepEqual(fromBytes[29].points, scans[29].points);
+    // maxRange: with 5 m every return beyond 5 m becomes a gap.
+    const near5 = rtl.readCarmenLog(text, { maxRange: 5 })[0];
+    for (let i = 0; i < beams; i++) if (ref[0].ranges[i] >= 5) assert.ok(Number.isNaN(near5.points[2 * i]));
+  }
+});
+
+const CARMEN_ERRORS = [
+  ['not text', () => rtl.readCarmenLog(42), TypeError, /readCarmenLog: text must be a string, an ArrayBuffer or a typed array/],
+  ['bad number', () => rtl.readCarmenLog('# c\nFLASER 2 1.0 x1 0 0 0 0 0 0 1 h 2\n'), RangeError, /CARMEN log, line 2: bad range 2 'x1'/],
+  ['short line', () => rtl.readCarmenLog('FLASER 3 1 2 3 0 0\n'), RangeError, /line 1: FLASER with 3 beams needs 14 fields, found 7/],
+  ['bad beam count', () => rtl.readCarmenLog('FLASER -2 1\n'), RangeError, /line 1: bad beam count '-2'/],
+  ['unknown record', () => rtl.readCarmenLog('ODOM 1 2 3\nhello world\n'), RangeError, /line 2: unknown record 'hello'/],
+  ['maxRange 0', () => rtl.readCarmenLog('', { maxRange: 0 }), RangeError, /option maxRange must be > 0/],
+];
+for (const [name, f, type, re] of CARMEN_ERRORS) {
+  test(`readCarmenLog error: ${name}`, () => {
+    throwsWith(f, type, re);
+    assert.equal(rtl.readCarmenLog('FLASER 2 1 1 0 0 0 0 0 0 1 h 2\n')[0].ranges.length, 2, 'works afterwards');
+  });
+}

@@ -528,6 +528,29 @@ function wrap(m) {
     [DISPOSE]() { this.dispose(); }
   }
 
+  // CARMEN logs: every FLASER line is a scan; beams without a return (range <= 0, non-finite or >= maxRange) are NaN
+  // points. Text as a string (UTF-8 encoded here) or the file's bytes.
+  function readCarmenLog(text, opts) {
+    const fn = 'readCarmenLog';
+    let u8;
+    if (typeof text === 'string') u8 = new TextEncoder().encode(text);
+    else if (text instanceof ArrayBuffer) u8 = new Uint8Array(text);
+    else if (ArrayBuffer.isView(text)) u8 = new Uint8Array(text.buffer, text.byteOffset, text.byteLength);
+    else throw new TypeError(`${fn}: text must be a string, an ArrayBuffer or a typed array of the file, got ${describe(text)}`);
+    const o = options(opts, fn, ['maxRange']);
+    const maxRange = num(o, 'maxRange', fn, 80, { min: 0, exclusiveMin: true });
+    const r = withHeap([u8], (p, n) => m.readCarmenLog(p, n, maxRange));
+    const scans = [];
+    for (let k = 0; k + 1 < r.offsets.length; k++) {
+      const b = r.offsets[k], e = r.offsets[k + 1];
+      scans.push({
+        points: r.points.slice(2 * b, 2 * e), ranges: r.ranges.slice(b, e),
+        x: r.x[k], y: r.y[k], theta: r.theta[k], timestamp: r.timestamp[k], line: r.line[k],
+      });
+    }
+    return scans;
+  }
+
   // Organised LiDAR: 16-byte little-endian float32 records x, y, z, intensity; (0,0,0) = no return (NaN point).
   // The cloud is stored column-major whatever the file layout: beam b of column c is point c * beams + b.
   function readOrganizedLidar(data, opts) {
@@ -572,6 +595,8 @@ function wrap(m) {
     TfTree,
     toSvg,
     toTikz,
+    readCarmenLog,
+    readCarmen: readCarmenLog,
     readOrganizedLidar,
     heapInUse: () => m.heapInUse(),
     memoryBytes: () => m.memoryBytes(),

@@ -159,7 +159,8 @@ export interface SvgOptions {
 
 // ---------------------------------------------------------------------------------------------- readers
 export interface CarmenScan {
-  /** robot-frame points, one per beam in beam order; no-return beams are NaN points (gaps) */
+  /** robot-frame points, one per beam in beam order (beam i at -pi/2 + i*pi/n, or i*pi/(n-1) for odd n);
+   *  no-return beams are NaN points (gaps) */
   points: Float64Array;
   ranges: Float64Array;
   /** corrected pose in the map frame */
@@ -277,9 +278,11 @@ export interface RTL {
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
   toTikz(drawing: Drawing, options?: TikzOptions): string;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
-  readCarmen(text: string): CarmenScan[];
-  /** alias of readCarmen */
-  readCarmenLog(text: string): CarmenScan[];
+  /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0,
+   *  not finite, or >= maxRange, default 80 m) are NaN points. RangeError naming the line for a malformed line. */
+  readCarmenLog(text: string | ArrayBuffer | ArrayBufferView, options?: { maxRange?: number }): CarmenScan[];
+  /** alias of readCarmenLog */
+  readCarmen(text: string | ArrayBuffer | ArrayBufferView, options?: { maxRange?: number }): CarmenScan[];
   readOrganizedLidar(data: ArrayBuffer | ArrayBufferView, options: OrganizedLidarOptions): OrganizedCloud;
   StreamSegmenter: new (options?: StreamSegmenterOptions) => StreamSegmenter;
   TfTree: new (root: string, options?: { dim?: Dim }) => TfTree;

@@ -1,8 +1,11 @@
-// Readers: organised LiDAR binaries (rtl/io/OrganizedLidar.h) from bytes in the wasm heap.
+// Readers: CARMEN logs (rtl/io/CarmenLog.h) and organised LiDAR binaries (rtl/io/OrganizedLidar.h), from bytes
+// in the wasm heap.
 #include "adapter.h"
+#include "charconv_shim.h"  // before CarmenLog.h: floating-point from_chars for libc++ 14
 
 #include <istream>
 
+#include <rtl/io/CarmenLog.h>
 #include <rtl/io/OrganizedLidar.h>
 
 namespace rtl_wasm {
@@ -27,7 +30,41 @@ val readOrganizedLidar(std::uintptr_t ptr, std::size_t len, std::size_t beams, i
   });
 }
 
+// All scans flat: points/ranges concatenated, scan k = beams offsets[k]..offsets[k+1]; per-scan pose and line.
+val readCarmenLog(std::uintptr_t ptr, std::size_t len, double maxRange) {
+  return guarded([&] {
+    MemoryBuffer buf(bytes(ptr), len);
+    std::istream in(&buf);
+    const auto scans = rtl::readCarmenLog<double>(in, maxRange);
+    std::vector<double> pts, ranges, x, y, theta, stamp, line;
+    std::vector<std::uint32_t> offsets{0};
+    for (const auto& s : scans) {
+      for (const auto& p : s.points) pts.insert(pts.end(), {p.x(), p.y()});
+      ranges.insert(ranges.end(), s.ranges.begin(), s.ranges.end());
+      offsets.push_back(static_cast<std::uint32_t>(ranges.size()));
+      x.push_back(s.x);
+      y.push_back(s.y);
+      theta.push_back(s.theta);
+      stamp.push_back(s.timestamp);
+      line.push_back(static_cast<double>(s.line));
+    }
+    val r = val::object();
+    r.set("points", f64(pts));
+    r.set("ranges", f64(ranges));
+    r.set("offsets", u32(offsets));
+    r.set("x", f64(x));
+    r.set("y", f64(y));
+    r.set("theta", f64(theta));
+    r.set("timestamp", f64(stamp));
+    r.set("line", f64(line));
+    return r;
+  });
+}
+
 }  // namespace
 }  // namespace rtl_wasm
 
-EMSCRIPTEN_BINDINGS(rtl_readers) { emscripten::function("readOrganizedLidar", &rtl_wasm::readOrganizedLidar); }
+EMSCRIPTEN_BINDINGS(rtl_readers) {
+  emscripten::function("readOrganizedLidar", &rtl_wasm::readOrganizedLidar);
+  emscripten::function("readCarmenLog", &rtl_wasm::readCarmenLog);
+}
