@@ -44,6 +44,8 @@ Vectorization
       --max-iterations N AFTLS optimizer iteration cap (default 10000)
       --primitive P      line | plane, for 3D points (default line; plane needs aftls)
       --min-points N     clusters with fewer points are not vectorized (default 3)
+                         Clusters the vectorizer reports failure on (ok = false) are listed
+                         in the JSON as "failed" (cluster numbers; null = all points).
 
 Output
   -f, --format FMT       json | svg | tikz (default json)
@@ -366,8 +368,11 @@ function run(rtl, opts, input) {
       simplexShift: opts.simplexShift, maxIterations: opts.maxIterations, primitive: opts.primitive,
     };
     const out = [];
+    const failed = [];
     for (const g of big) {
       const v = vectorize(gather(points, dim, g.idx), params);
+      // The C++ vectorizer can report failure (ok = false, no segments); say so instead of dropping it silently.
+      if (!v.ok) { failed.push(g.cluster); continue; }
       if (v.primitive === 'plane') {
         v.polygons.forEach((poly, k) => out.push({
           cluster: g.cluster, polygon: plain(poly),
@@ -393,7 +398,12 @@ function run(rtl, opts, input) {
       ...(['dp', 'rw'].includes(opts.method) ? { epsilon: opts.epsilon } : { sigma: opts.sigma }),
       ...(['ftls', 'aftls'].includes(opts.method) ? { delta: opts.delta } : {}),
       segments: out,
+      failed,
     };
+    if (failed.length) {
+      const what = failed.length === 1 && failed[0] === null ? 'the points' : `${failed.length} cluster(s)`;
+      process.stderr.write(`rtl: warning: ${opts.method} reported failure on ${what}; no segments for them ("failed" in the JSON)\n`);
+    }
   }
   return result;
 }

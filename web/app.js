@@ -180,10 +180,11 @@ function compute() {
   const drawnClusters = clusters.map((idx, ci) => [idx, ci]).filter(([idx]) => idx.length >= Math.max(2, s.minPoints))
     .map(([idx, ci]) => ({ ci, idx, pts: gather(points, idx) }));
   const vectorizeAll = (method) => {
-    const out = { method, segments: [], rmsSum: 0, rmsMax: 0, rmsCount: 0, vecPoints: 0, timeMs: 0 };
+    const out = { method, segments: [], rmsSum: 0, rmsMax: 0, rmsCount: 0, vecPoints: 0, timeMs: 0, failed: [] };
     const t = performance.now();
     for (const { ci, idx, pts } of drawnClusters) {
       const v = rtl.vectorize(pts, { dim: 2, method, sigma: s.sigma, delta: s.delta, epsilon: s.epsilon });
+      if (!v.ok) { out.failed.push(ci); continue; }   // the C++ vectorizer reported failure: no segments
       out.vecPoints += idx.length;
       for (let k = 0; k < v.count; k++) {
         const seg4 = v.segments.subarray(4 * k, 4 * k + 4);
@@ -196,7 +197,7 @@ function compute() {
     return out;
   };
   const t2 = performance.now();
-  const chosen = f.vectorize ? vectorizeAll(s.method) : { segments: [], rmsSum: 0, rmsMax: 0, rmsCount: 0, vecPoints: 0 };
+  const chosen = f.vectorize ? vectorizeAll(s.method) : { segments: [], rmsSum: 0, rmsMax: 0, rmsCount: 0, vecPoints: 0, failed: [] };
   const t3 = performance.now();
   const { segments, rmsSum, rmsMax, rmsCount, vecPoints } = chosen;
   // The same clusters and parameters with every method, for the comparison table.
@@ -204,7 +205,7 @@ function compute() {
     ? Object.keys(METHOD_TEXT).map((m) => (m === s.method ? chosen : vectorizeAll(m))).map((v) => ({
       method: v.method, segmentCount: v.segments.length, rmsMean: v.rmsCount ? v.rmsSum / v.rmsCount : NaN,
       rmsMax: v.rmsCount ? v.rmsMax : NaN, pointsPerSegment: v.segments.length ? v.vecPoints / v.segments.length : NaN,
-      timeMs: v.timeMs,
+      failed: v.failed.length, timeMs: v.timeMs,
     }))
     : null;
 
@@ -263,6 +264,7 @@ function compute() {
       segTimeMs: t1 - t0,
       vecTimeMs: t3 - t2,
       segmentCount: segments.length,
+      failedClusters: chosen.failed,
       vecPoints,
       rmsMean: rmsCount ? rmsSum / rmsCount : NaN,
       rmsMax: rmsCount ? rmsMax : NaN,
@@ -509,6 +511,7 @@ function showNumbers(r) {
   }
   if (state.features.vectorize) {
     $('vec-count').textContent = String(r.stats.segmentCount);
+    $('vec-failed').textContent = r.stats.failedClusters.length ? `${r.stats.failedClusters.length} (no segments)` : 'none';
     $('vec-ratio').textContent = r.stats.segmentCount ? fmt(r.stats.vecPoints / r.stats.segmentCount, 1) : '–';
     $('vec-rms').textContent = Number.isFinite(r.stats.rmsMean) ? `${fmt(r.stats.rmsMean * 1000, 1)} / ${fmt(r.stats.rmsMax * 1000, 1)} mm` : '–';
     $('vec-time').textContent = fmtMs(r.stats.vecTimeMs);
@@ -521,7 +524,7 @@ function showNumbers(r) {
       tr.tabIndex = 0;
       if (c.method === r.settings.method) { tr.className = 'current'; tr.setAttribute('aria-current', 'true'); }
       const cells = [c.method.toUpperCase(), String(c.segmentCount), fmt(c.pointsPerSegment, 1),
-        `${fmt(c.rmsMean * 1000, 1)} mm`, `${fmt(c.rmsMax * 1000, 1)} mm`, fmtMs(c.timeMs)];
+        `${fmt(c.rmsMean * 1000, 1)} mm`, `${fmt(c.rmsMax * 1000, 1)} mm`, String(c.failed), fmtMs(c.timeMs)];
       for (const text of cells) { const td = document.createElement('td'); td.textContent = text; tr.append(td); }
       return tr;
     }));
@@ -565,6 +568,7 @@ function expose(r, shown = r) {
     vectorization: state.features.vectorize ? {
       method: r.settings.method,
       segmentCount: r.stats.segmentCount,
+      failedClusters: r.stats.failedClusters.slice(),
       segments: r.segments.map((s) => [s.x1, s.y1, s.x2, s.y2, s.cluster]),
       rmsMean: r.stats.rmsMean,
       rmsMax: r.stats.rmsMax,

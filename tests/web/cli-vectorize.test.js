@@ -47,23 +47,25 @@ describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
     const r = rtl(['tests/data/intel.log', '--scan', '12', '-s', '-m', 'ftls', '--sigma', '0.02', '--delta', '0.2']);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
-    assert.deepEqual({ ...j.vectorization, segments: undefined }, { method: 'ftls', primitive: 'line', sigma: 0.02, delta: 0.2, segments: undefined });
+    const { segments: got, failed: gotFailed, ...meta } = j.vectorization;
+    assert.deepEqual(meta, { method: 'ftls', primitive: 'line', sigma: 0.02, delta: 0.2 });
     const scan = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'))[12];
     const points = new Float64Array(2 * scan.n).fill(NaN);
     scan.ranges.forEach((rr, i) => {
       if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
     });
-    const expected = [];
+    const expected = [], failed = [];
     pkg.segment(points).clusters.forEach((c, k) => {
       if (c.indices.length < 3) return;
       const xy = new Float64Array(2 * c.indices.length);
       c.indices.forEach((i, q) => { xy[2 * q] = points[2 * i]; xy[2 * q + 1] = points[2 * i + 1]; });
       const v = pkg.vectorize(xy, { method: 'ftls', sigma: 0.02, delta: 0.2 });
+      if (!v.ok) failed.push(k);
       for (let q = 0; q < v.count; q++) {
         expected.push({ cluster: k, coordinates: Array.from(v.segments.subarray(4 * q, 4 * q + 4)), rms: v.rms[q] });
       }
     });
-    const got = j.vectorization.segments;
+    assert.deepEqual(gotFailed, failed);
     assert.ok(got.length >= 2);
     assert.equal(got.length, expected.length);
     got.forEach((s, q) => {
@@ -74,6 +76,28 @@ describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
       const members = j.segmentation.clusters[s.cluster];
       assert.ok(members.includes(s.indices[0]) && members.includes(s.indices[1]), 'index range inside its cluster');
     });
+  });
+
+  test('clusters the vectorizer reports failure on are listed, with a warning, not dropped silently', () => {
+    const r = rtl(['tests/data/csail.log', '--scan', '12', '-s', '-m', 'aftls']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    const scan = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'))[12];
+    const points = new Float64Array(2 * scan.n).fill(NaN);
+    scan.ranges.forEach((rr, i) => {
+      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
+    });
+    const failed = [];
+    pkg.segment(points).clusters.forEach((c, k) => {
+      if (c.indices.length < 3) return;
+      const xy = new Float64Array(2 * c.indices.length);
+      c.indices.forEach((i, q) => { xy[2 * q] = points[2 * i]; xy[2 * q + 1] = points[2 * i + 1]; });
+      if (!pkg.vectorize(xy, { method: 'aftls' }).ok) failed.push(k);
+    });
+    assert.deepEqual(j.vectorization.failed, failed);
+    for (const s of j.vectorization.segments) assert.ok(!failed.includes(s.cluster));
+    if (failed.length) assert.match(r.err, new RegExp(`warning: aftls reported failure on ${failed.length} cluster\\(s\\)`));
+    else assert.equal(r.err, '');
   });
 
   test('segments drawn as SVG (stdout) and as a standalone TikZ document (-o)', () => {

@@ -82,15 +82,17 @@ describe('demo page (web/index.html) in Chromium: vectorization', { timeout: 240
       const rev = await revision();
       await page.selectOption('#method', method);
       const r = await settled(rev);
-      const expected = [];
+      const expected = [], failed = [];
       seg.clusters.forEach((c, k) => {
         if (c.indices.length < 3) return;                    // the page's default smallest cluster drawn
         const xy = new Float64Array(2 * c.indices.length);
         c.indices.forEach((i, j) => { xy[2 * j] = points[2 * i]; xy[2 * j + 1] = points[2 * i + 1]; });
         const v = rtl.vectorize(xy, { method, sigma: 0.03, delta: 0.3, epsilon: 0.09 });
+        if (!v.ok) failed.push(k);
         for (let q = 0; q < v.count; q++) expected.push([...v.segments.subarray(4 * q, 4 * q + 4), k]);
       });
       assert.equal(r.vectorization.segments.length, expected.length, method);
+      assert.deepEqual(r.vectorization.failedClusters, failed, `${method}: clusters the vectorizer failed on`);
       r.vectorization.segments.forEach((sg, q) => sg.forEach((x, d) => assert.ok(Math.abs(x - expected[q][d]) < 1e-9, `${method} segment ${q}`)));
     }
   });
