@@ -397,7 +397,7 @@ function run(rtl, opts, input) {
       method: opts.method, primitive: opts.primitive,
       ...(['dp', 'rw'].includes(opts.method) ? { epsilon: opts.epsilon } : { sigma: opts.sigma }),
       ...(['ftls', 'aftls'].includes(opts.method) ? { delta: opts.delta } : {}),
-      segments: out,
+      [opts.primitive === 'plane' ? 'planes' : 'segments']: out,
       failed,
     };
     if (failed.length) {

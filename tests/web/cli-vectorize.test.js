@@ -113,13 +113,32 @@ describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
     assert.match(readFileSync(out, 'utf8'), /^\\documentclass[\s\S]*\\begin\{tikzpicture\}[\s\S]*\\end\{document\}\s*$/);
   });
 
-  test('3D: lines through a LiDAR ring, planes need aftls', () => {
+  test('3D: lines and planes through a LiDAR ring; planes need aftls', () => {
     const r = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '0', '-s', '--upper', '1', '-m', 'ftls', '--sigma', '0.05']);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
     assert.equal(j.dim, 3);
     assert.ok(j.vectorization.segments.length >= 1);
     for (const s of j.vectorization.segments) assert.equal(s.coordinates.length, 6);
+    // Planes (AFTLS) through one ring: unit normals, polygon vertices on their plane, ranges covering the ring in order.
+    const p = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '0', '-m', 'aftls', '--primitive', 'plane']);
+    assert.equal(p.code, 0, p.err);
+    const pj = JSON.parse(p.out);
+    assert.equal(pj.vectorization.primitive, 'plane');
+    const planes = pj.vectorization.planes;
+    assert.ok(planes.length >= 1);
+    let next = 0;
+    for (const pl of planes) {
+      const [a, b, c, d] = pl.params;
+      assert.ok(Math.abs(Math.hypot(a, b, c) - 1) < 1e-9, 'unit normal');
+      assert.ok(pl.polygon.length >= 9 && pl.polygon.length % 3 === 0);
+      for (let i = 0; i < pl.polygon.length; i += 3) {
+        assert.ok(Math.abs(a * pl.polygon[i] + b * pl.polygon[i + 1] + c * pl.polygon[i + 2] - d) < 1e-6, 'vertex on its plane');
+      }
+      assert.ok(pl.indices[0] >= next && pl.indices[1] >= pl.indices[0], `ranges in order: ${pl.indices}`);
+      next = pl.indices[1];
+      assert.ok(Number.isFinite(pl.rms) && pl.rms >= 0);
+    }
     const bad = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '-m', 'dp', '--primitive', 'plane']);
     assert.equal(bad.code, 2);
     assert.match(bad.err, /--primitive plane needs --vectorize aftls/);
