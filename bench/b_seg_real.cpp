@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "b_seg_timing.h"
 #include "bench_util.h"
 #include "rtl/io/CarmenLog.h"
 #include "rtl/io/OrganizedLidar.h"
@@ -57,7 +58,7 @@ namespace
         const size_t total = points * repeat;
 
         std::vector<float> d2;
-        const double t_floor = rtl::bench::medianSeconds([&] {
+        const auto t_floor = rtl::bench::seg::measure([&] {
             for (size_t r = 0; r < repeat; ++r)
                 for (const auto &s : scans)
                 {
@@ -69,7 +70,7 @@ namespace
 
         size_t car_clusters = 0;
         rtl::CAR_Segmenter<V> car(1, lb, ub);
-        const double t_car = rtl::bench::medianSeconds([&] {
+        const auto t_car = rtl::bench::seg::measure([&] {
             car_clusters = 0;
             for (size_t r = 0; r < repeat; ++r)
                 for (const auto &s : scans)
@@ -85,7 +86,7 @@ namespace
 
         size_t ia_clusters = 0;
         rtl::IA_Segmenter<V> ia(1, lb, ub, 0);
-        const double t_ia = rtl::bench::medianSeconds([&] {
+        const auto t_ia = rtl::bench::seg::measure([&] {
             ia_clusters = 0;
             for (size_t r = 0; r < repeat; ++r)
                 for (const auto &s : scans)
@@ -111,9 +112,9 @@ namespace
 
         const std::string per = " (" + std::to_string(scans.size()) + " scans, " + std::to_string(car_clusters / repeat) + " CAR / " +
                                 std::to_string(ia_clusters / repeat) + " IA clusters)";
-        rtl::bench::printRow("floor " + name, total, t_floor, t_floor);
-        rtl::bench::printRow("CAR batch " + name, total, t_car, t_floor, per);
-        rtl::bench::printRow("IA stream " + name, total, t_ia, t_floor);
+        rtl::bench::seg::row("floor " + name, total, t_floor, t_floor);
+        rtl::bench::seg::row("CAR batch " + name, total, t_car, t_floor, per);
+        rtl::bench::seg::row("IA stream " + name, total, t_ia, t_floor);
     }
 }
 

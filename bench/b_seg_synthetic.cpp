@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "b_seg_timing.h"
 #include "bench_util.h"
 #include "rtl/seg/CAR_Segmenter.h"
 #include "rtl/seg/IA_Segmenter.h"
@@ -40,9 +41,9 @@ namespace
     }
 
     template<class V>
-    double floorSeconds(const std::vector<V> &pts, std::vector<typename V::ElementType> &out, int reps)
+    rtl::bench::seg::Timing floorSeconds(const std::vector<V> &pts, std::vector<typename V::ElementType> &out, int reps)
     {
-        return rtl::bench::medianSeconds([&] {
+        return rtl::bench::seg::measure([&] {
             for (size_t i = 1; i < pts.size(); ++i) out[i] = V::distanceSquared(pts[i], pts[i - 1]);
             rtl::bench::doNotOptimize(out.data());
         }, reps);
@@ -54,11 +55,11 @@ namespace
         using E = typename V::ElementType;
         const auto pts = scan<V>(n, k, 7);
         std::vector<E> d2(n);
-        const double t_floor = floorSeconds(pts, d2, opt.repetitions);
+        const auto t_floor = floorSeconds(pts, d2, opt.repetitions);
 
         size_t car_clusters = 0, car_points = 0;
         rtl::CAR_Segmenter<V> car(step, E(0.05), E(0.5));
-        const double t_car = rtl::bench::medianSeconds([&] {
+        const auto t_car = rtl::bench::seg::measure([&] {
             car.loadData(pts);
             car_clusters = car_points = 0;
             while (car.clustersAvailable() > 0)
@@ -69,7 +70,7 @@ namespace
         }, opt.repetitions);
 
         size_t ia_clusters = 0, ia_points = 0;
-        const double t_ia = rtl::bench::medianSeconds([&] {
+        const auto t_ia = rtl::bench::seg::measure([&] {
             rtl::IA_Segmenter<V> ia(step, E(0.05), E(0.5), rtl::seg_detail::circularScaling<E>(step, n));
             ia_clusters = ia_points = 0;
             for (const auto &p : pts)
@@ -98,9 +99,9 @@ namespace
         }
         const std::string tag = std::string(dim) + " " + (sizeof(E) == 4 ? "float" : "double") + " k=" + std::to_string(k) +
                                 " step " + std::to_string(step);
-        rtl::bench::printRow("floor (consecutive d^2) " + tag, n, t_floor, t_floor);
-        rtl::bench::printRow("CAR batch " + tag, n, t_car, t_floor);
-        rtl::bench::printRow("IA stream " + tag, n, t_ia, t_floor);
+        rtl::bench::seg::row("floor (consecutive d^2) " + tag, n, t_floor, t_floor);
+        rtl::bench::seg::row("CAR batch " + tag, n, t_car, t_floor);
+        rtl::bench::seg::row("IA stream " + tag, n, t_ia, t_floor);
     }
 }
 

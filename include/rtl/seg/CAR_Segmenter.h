@@ -171,8 +171,9 @@ namespace rtl
                 size_t root = none;
                 for (size_t k = 1, kmax = std::min(s, i); k <= kmax; ++k)
                 {
-                    const size_t j = i - k;
-                    if (parent_[j] == none || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tsq_[i])) continue;
+                    const size_t j = i - k, pj = parent_[j];
+                    // pj == root: j is already in i's cluster (the usual case inside a cluster), no need to look
+                    if (pj == none || pj == root || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tsq_[i])) continue;
                     const size_t r = find(j);
                     if (root == none) root = r;
                     else if (r < root) { parent_[root] = r; root = r; }
@@ -207,7 +208,7 @@ namespace rtl
                     continue;
                 }
                 const size_t r = find(i), b = i++;
-                while (i < n && parent_[i] != none && find(i) == r) ++i;
+                while (i < n && parent_[i] != none && (parent_[i] == r || find(i) == r)) ++i;
                 size_t c;
                 if (r == b)
                 {

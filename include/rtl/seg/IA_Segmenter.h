@@ -200,8 +200,7 @@ namespace rtl
         {
             if (!R.has_alive)
             {
-                R.alive = alive_.emplace_hint(alive_.end(), R.id, std::vector<VectorType>());
-                R.alive->second.reserve(reserve_);
+                R.alive = alive_.emplace_hint(alive_.end(), R.id, takeVector());
                 R.has_alive = true;
                 R.contiguous = true;
                 R.base = idx;
@@ -211,6 +210,21 @@ namespace rtl
             if (R.contiguous && idx != R.base + v.size()) listIndices(R);
             if (!R.contiguous) R.index.push_back(idx);
             v.push_back(p);
+        }
+
+        std::vector<VectorType> takeVector()
+        {
+            if (pool_.empty()) return {};
+            std::vector<VectorType> v = std::move(pool_.back());
+            pool_.pop_back();
+            return v;
+        }
+
+        // Keeps at most step + 2 spare lists: never more than step + 1 clusters are alive at once.
+        void recycle(std::vector<VectorType> &&v)
+        {
+            v.clear();
+            if (pool_.size() < step_ + 2) pool_.push_back(std::move(v));
         }
 
         static size_t indexAt(const Record &R, size_t k) { return R.contiguous ? R.base + k : R.index[k]; }
@@ -236,9 +250,10 @@ namespace rtl
             std::vector<VectorType> &v = R.alive->second;
             if (--R.in_window == 0)
             {
-                // the next alive lists start with room for about as many points as the recent clusters had
-                reserve_ = std::min<size_t>((reserve_ * 3 + v.size()) / 4 + 1, 4096);
-                closed_.push_back(std::move(v));
+                // hand out an exact-size copy and keep the alive list's capacity for the next cluster: growing
+                // vectors from scratch (and faulting in their pages) would cost more than the copy
+                closed_.emplace_back(v.begin(), v.end());
+                recycle(std::move(v));
                 alive_.erase(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
@@ -263,7 +278,11 @@ namespace rtl
                     K.base = G.base;
                     K.index.swap(G.index);
                 }
-                else mergeAlive(K, G);
+                else
+                {
+                    mergeAlive(K, G);
+                    recycle(std::move(G.alive->second));
+                }
                 alive_.erase(G.alive);
                 G.has_alive = false;
             }
@@ -349,6 +368,7 @@ namespace rtl
         std::vector<size_t> free_;
         AliveMap alive_;
         std::deque<std::vector<VectorType>> closed_;
-        size_t next_id_ = 0, stream_ = 0, reserve_ = 0;
+        std::vector<std::vector<VectorType>> pool_;             // emptied alive lists, capacity kept
+        size_t next_id_ = 0, stream_ = 0;
     };
 }
