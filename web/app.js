@@ -4,8 +4,10 @@
 import init from 'rtl-wasm';
 
 const DATASETS = {
-  intel: { url: '/tests/data/intel.log', label: 'Intel Research Lab' },
-  csail: { url: '/tests/data/csail.log', label: 'MIT CSAIL' },
+  intel: { url: '/tests/data/intel.log', label: 'Intel Research Lab', unit: 'scan' },
+  csail: { url: '/tests/data/csail.log', label: 'MIT CSAIL', unit: 'scan' },
+  // 4 beams of an Ouster OS1 scan; each ring (one beam over 2048 columns) is shown from above (x, y) as a 360° scan.
+  rellis: { url: '/tests/data/rellis3d-os1-4x2048.bin', label: 'RELLIS-3D Ouster OS1', unit: 'ring', beams: 4 },
 };
 
 const METHOD_TEXT = {
@@ -95,6 +97,11 @@ function readSettingsValues() {
 
 function syncOutputs() {
   $('scan-out').textContent = $('scan').value;
+  const ring = DATASETS[$('dataset').value].unit === 'ring';
+  $('scan-label').textContent = ring ? 'Ring' : 'Scan';
+  // Poses exist only in the CARMEN logs: the map frame is offered for them.
+  $('map-frame-row').hidden = ring || !state.features?.tfTree;
+  if (ring) $('map-frame').checked = false;
   $('seg-step-out').textContent = $('seg-step').value;
   $('sigma-out').textContent = Number($('sigma').value).toFixed(3);
   $('delta-out').textContent = Number($('delta').value).toFixed(2);
@@ -110,6 +117,17 @@ async function loadDataset(name) {
   if (state.scans[name]) return state.scans[name];
   const res = await fetch(DATASETS[name].url);
   if (!res.ok) throw new Error(`cannot load ${DATASETS[name].url}: HTTP ${res.status}`);
+  if (DATASETS[name].beams) {
+    // Organised LiDAR binary through the package's reader; ring b becomes a "scan" of x, y points (gaps stay NaN).
+    const cloud = state.rtl.readOrganizedLidar(await res.arrayBuffer(), { beams: DATASETS[name].beams, layout: 'column-major' });
+    state.scans[name] = Array.from({ length: cloud.beams }, (_, b) => {
+      const ring = cloud.ring(b);
+      const points = new Float64Array(2 * cloud.columns);
+      for (let c = 0; c < cloud.columns; c++) { points[2 * c] = ring[3 * c]; points[2 * c + 1] = ring[3 * c + 1]; }
+      return { points, x: 0, y: 0, theta: 0, ring: b, columns: cloud.columns };
+    });
+    return state.scans[name];
+  }
   const text = await res.text();
   state.texts[name] = text;
   const rtl = state.rtl;
@@ -372,18 +390,22 @@ function draw(r) {
   state.view = { X, Y, scale, dpr, minX, maxX, minY, maxY, W, H };
 
   // Metre grid with labels every metre (every 5 m when zoomed out).
-  const stepM = scale / dpr < 12 ? 5 : 1;
+  // Grid spacing: the smallest 1-2-5 step that leaves at least 45 CSS pixels between lines.
+  const stepM = [0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100].find((m) => (m * scale) / dpr >= 45) ?? 100;
   ctx.lineWidth = 1;
   ctx.strokeStyle = '#e6e9ee';
   ctx.fillStyle = '#8a94a3';
   ctx.font = `${11 * dpr}px system-ui, sans-serif`;
-  for (let gx = Math.ceil(minX / stepM) * stepM; gx <= maxX; gx += stepM) {
+  const label = (v) => `${Number(v.toFixed(1))} m`;
+  for (let k = Math.ceil(minX / stepM); k * stepM <= maxX; k++) {   // integer counter: no accumulated rounding
+    const gx = k * stepM;
     ctx.beginPath(); ctx.moveTo(X(gx), 0); ctx.lineTo(X(gx), H); ctx.stroke();
-    ctx.fillText(`${gx} m`, X(gx) + 3 * dpr, H - 4 * dpr);
+    ctx.fillText(label(gx), X(gx) + 3 * dpr, H - 4 * dpr);
   }
-  for (let gy = Math.ceil(minY / stepM) * stepM; gy <= maxY; gy += stepM) {
+  for (let k = Math.ceil(minY / stepM); k * stepM <= maxY; k++) {
+    const gy = k * stepM;
     ctx.beginPath(); ctx.moveTo(0, Y(gy)); ctx.lineTo(W, Y(gy)); ctx.stroke();
-    ctx.fillText(`${gy} m`, 3 * dpr, Y(gy) - 3 * dpr);
+    ctx.fillText(label(gy), 3 * dpr, Y(gy) - 3 * dpr);
   }
 
   const s = r.settings;
@@ -479,9 +501,9 @@ function draw(r) {
   ctx.beginPath(); ctx.moveTo(...corner(1, 0)); ctx.lineTo(...corner(-0.6, -0.6)); ctx.lineTo(...corner(-0.6, 0.6)); ctx.closePath(); ctx.fill();
 
   $('frame-text').textContent = r.frame === 'map'
-    ? `Map frame: scan ${r.scanIndex} in colour and the other scans of the log in grey, each placed by its pose through the package's transformation tree; the triangle is the robot, facing its heading.`
+    ? `Map frame: ${DATASETS[r.dataset].unit} ${r.scanIndex} in colour and the other ${DATASETS[r.dataset].unit}s in grey, each placed by its pose through the package's transformation tree; the triangle is the robot, facing its heading.`
     : 'Robot frame: the sensor is the triangle at the origin, facing +x.';
-  canvas.setAttribute('aria-label', `${DATASETS[r.dataset].label} scan ${r.scanIndex}: ${r.validCount} points` +
+  canvas.setAttribute('aria-label', `${DATASETS[r.dataset].label} ${DATASETS[r.dataset].unit} ${r.scanIndex}: ${r.validCount} points` +
     (r.labels ? ` in ${r.stats.clusterCount} clusters` : '') +
     (state.features.vectorize ? `, ${r.stats.segmentCount} line segments (${s.method.toUpperCase()})` : '') +
     (r.fit ? `, fitted line RMS ${fmt(r.fit.rms * 1000, 1)} mm` : ''));
@@ -491,8 +513,10 @@ function draw(r) {
 
 function showNumbers(r) {
   const scan = state.scans[r.dataset][r.scanIndex];
-  $('scan-info').textContent = `${r.beams} beams, ${r.validCount} returns, pose (${fmt(scan.x, 2)}, ${fmt(scan.y, 2)}) m, ` +
-    `${fmt(scan.theta * 180 / Math.PI, 1)}° · log line ${scan.line ?? '–'}`;
+  $('scan-info').textContent = scan.ring !== undefined
+    ? `ring ${scan.ring}: ${scan.columns} columns (360°), ${r.validCount} returns, seen from above (x, y)`
+    : `${r.beams} beams, ${r.validCount} returns, pose (${fmt(scan.x, 2)}, ${fmt(scan.y, 2)}) m, ` +
+      `${fmt(scan.theta * 180 / Math.PI, 1)}° · log line ${scan.line ?? '–'}`;
   if (r.fit) {
     $('fit-n').textContent = `${r.fit.n} (${r.fitSource})`;
     $('fit-normal').textContent = `(${fmt(r.fit.normal[0], 4)}, ${fmt(r.fit.normal[1], 4)})`;
@@ -602,7 +626,7 @@ function update() {
       showNumbers(r);
       expose(r, shown);
       const f = state.features;
-      setStatus(`${DATASETS[r.dataset].label}, scan ${r.scanIndex}: ` + (f.segment
+      setStatus(`${DATASETS[r.dataset].label}, ${DATASETS[r.dataset].unit} ${r.scanIndex}: ` + (f.segment
         ? `${r.stats.clusterCount} clusters, ` + (f.vectorize ? `${r.stats.segmentCount} segments by ${r.settings.method.toUpperCase()} ` : '') +
           `in ${fmtMs(r.stats.segTimeMs + r.stats.vecTimeMs)}.`
         : `${r.validCount} returns` + (r.fit ? `, TLS line through ${r.fit.n} points, RMS ${fmt(r.fit.rms * 1000, 1)} mm.` : '.')));
@@ -635,7 +659,7 @@ function drawing(r) {
     }
     segs.push(cx + tMin * dx, cy + tMin * dy, cx + tMax * dx, cy + tMax * dy);
   }
-  const parts = [`${DATASETS[r.dataset].label} scan ${r.scanIndex}`];
+  const parts = [`${DATASETS[r.dataset].label} ${DATASETS[r.dataset].unit} ${r.scanIndex}`];
   if (r.labels) parts.push(`${r.clusters.filter((c) => c.length >= s.minPoints).length} clusters`);
   if (state.features.vectorize) parts.push(`${r.segments.length} segments (${s.method.toUpperCase()})`);
   if (r.fit && s.show.fit) parts.push(`TLS line through ${r.fit.n} points, RMS ${fmt(r.fit.rms * 1000, 1)} mm`);
@@ -781,6 +805,7 @@ function applyFeatures() {
   $('show-segments').disabled = !f.vectorize;
   $('fit-tip').hidden = !f.segment;
   $('map-frame-row').hidden = !f.tfTree;
+  if (typeof rtl.readOrganizedLidar !== 'function') $('dataset').querySelector('option[value=rellis]').remove();
 }
 
 async function main() {

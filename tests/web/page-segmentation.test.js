@@ -140,6 +140,30 @@ describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 2400
     assert.equal(svg.match(/<circle /g).length, r.validCount);
   });
 
+  test('a LiDAR ring (RELLIS-3D, 360°) read by the package is segmented like segment() in Node on its x, y', async () => {
+    await page.selectOption('#dataset', 'rellis');
+    await page.waitForFunction(() => window.__rtl.dataset === 'rellis', null, { timeout: TIMEOUT });
+    await page.fill('#scan', '2');
+    await page.waitForFunction(() => window.__rtl.dataset === 'rellis' && window.__rtl.scanIndex === 2, null, { timeout: TIMEOUT });
+    const r = await state();
+    // Independent read of the binary: float32 x, y, z, intensity records, column-major, 4 beams; (0,0,0) = no return.
+    const buf = readFileSync(join(DATA, 'rellis3d-os1-4x2048.bin'));
+    const xy = new Float64Array(2 * 2048).fill(NaN);
+    let returns = 0;
+    for (let c = 0; c < 2048; c++) {
+      const k = 16 * (c * 4 + 2);
+      const [x, y, z] = [buf.readFloatLE(k), buf.readFloatLE(k + 4), buf.readFloatLE(k + 8)];
+      if (x !== 0 || y !== 0 || z !== 0) { xy[2 * c] = x; xy[2 * c + 1] = y; returns++; }
+    }
+    assert.equal(r.beams, 2048);
+    assert.equal(r.validCount, returns);
+    assert.equal(await page.isVisible('#map-frame'), false, 'no poses, no map frame');
+    const rtl = await init();
+    assert.deepEqual(r.segmentation.labels, Array.from(rtl.segment(xy).labels));
+    assert.match(await page.textContent('#status'), /^RELLIS-3D Ouster OS1, ring 2: \d+ clusters/);
+    await page.screenshot({ path: join(resultsDir(), 'page-rellis-ring-2.png') });
+  });
+
   test('no console errors, failed requests or page errors during the session', async () => {
     assert.deepEqual((await state()).errors, []);
     assert.deepEqual(problems, []);
