@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <regex>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,22 +60,50 @@ namespace
                 v.push_back(l);
         return v;
     }
-    //! All "(x,y)" coordinates in a text.
+    //! Parses "(x,y)" at s[pos]; false if the text there is not a plain numeric coordinate.
+    bool coordAt(const std::string &s, size_t pos, double &x, double &y)
+    {
+        if (pos >= s.size() || s[pos] != '(')
+            return false;
+        const char *b = s.c_str() + pos + 1;
+        char *e = nullptr;
+        x = std::strtod(b, &e);
+        if (e == b || *e != ',')
+            return false;
+        b = e + 1;
+        y = std::strtod(b, &e);
+        return e != b && *e == ')';
+    }
+    //! All "(x,y)" coordinates in a text, with whether each is joined to the previous one by " -- ".
+    struct Coord
+    {
+        double x, y;
+        bool joined;
+    };
+    std::vector<Coord> coordList(const std::string &s)
+    {
+        std::vector<Coord> v;
+        for (size_t p = s.find('('); p != std::string::npos; p = s.find('(', p + 1))
+        {
+            double x, y;
+            if (coordAt(s, p, x, y))
+                v.push_back({x, y, p >= 3 && s.compare(p - 3, 3, "-- ") == 0});
+        }
+        return v;
+    }
     std::vector<std::pair<double, double>> coords(const std::string &s)
     {
-        static const std::regex re(R"(\((-?[0-9.]+(?:e-?[0-9]+)?),(-?[0-9.]+(?:e-?[0-9]+)?)\))");
         std::vector<std::pair<double, double>> v;
-        for (auto it = std::sregex_iterator(s.begin(), s.end(), re); it != std::sregex_iterator(); ++it)
-            v.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+        for (const auto &c : coordList(s))
+            v.emplace_back(c.x, c.y);
         return v;
     }
     double optionValue(const std::string &doc, const std::string &key)
     {
-        std::smatch m;
-        std::regex re(key + "=(-?[0-9.e-]+)");
-        if (!std::regex_search(doc, m, re))
+        size_t p = doc.find(key + "=");
+        if (p == std::string::npos)
             return NAN;
-        return std::stod(m[1]);
+        return std::strtod(doc.c_str() + p + key.size() + 1, nullptr);
     }
     size_t count(const std::string &s, const std::string &what)
     {
@@ -415,18 +443,10 @@ TEST(LaTeXTikz3D, CrossingFacesAreSplitWithoutDrawingTheCuts)
         if (line.rfind("\\draw[StyleC]", 0) != 0)
             continue;
         // Sum the "--" connections only; "(a) -- (b) (c) -- (d)" moves from b to c without drawing.
-        static const std::regex re(R"((\s--\s)?\((-?[0-9.]+(?:e-?[0-9]+)?),(-?[0-9.]+(?:e-?[0-9]+)?)\))");
-        bool first = true;
-        double px = 0, py = 0;
-        for (auto it = std::sregex_iterator(line.begin(), line.end(), re); it != std::sregex_iterator(); ++it)
-        {
-            double x = std::stod((*it)[2]), y = std::stod((*it)[3]);
-            if (!first && (*it)[1].matched)
-                drawn += std::hypot(x - px, y - py);
-            first = false;
-            px = x;
-            py = y;
-        }
+        auto c = coordList(line);
+        for (size_t i = 1; i < c.size(); ++i)
+            if (c[i].joined)
+                drawn += std::hypot(c[i].x - c[i - 1].x, c[i].y - c[i - 1].y);
     }
     LaTeXTikz3D whole;   // the same outlines as plain lines
     whole.setView(60, Vector3f(-1, -0.5f, -0.7f));
@@ -477,12 +497,13 @@ TEST(LaTeXTikz3D, AutoFitCentresTheRegionAndFillsTheView)
     auto l = lines(body3(tex(le)));
     ASSERT_EQ(l.size(), 9u);
     double min_x = 1e9, max_x = -1e9, min_y = 1e9, max_y = -1e9;
-    std::regex re(R"(\\MarkA\{(-?[0-9.e-]+)\}\{(-?[0-9.e-]+)\})");
     for (size_t i = 0; i < 8; ++i)
     {
-        std::smatch m;
-        ASSERT_TRUE(std::regex_search(l[i], m, re)) << l[i];
-        double x = std::stod(m[1]), y = std::stod(m[2]);
+        ASSERT_EQ(l[i].rfind("\\MarkA{", 0), 0u) << l[i];
+        char *e = nullptr;
+        double x = std::strtod(l[i].c_str() + 7, &e);
+        ASSERT_EQ(std::string(e, 2), "}{") << l[i];
+        double y = std::strtod(e + 2, nullptr);
         min_x = std::min(min_x, x);
         max_x = std::max(max_x, x);
         min_y = std::min(min_y, y);
