@@ -28,12 +28,13 @@ namespace
     const char *kMissing = "pdflatex is not on PATH: the LaTeX tests need it (install texlive-latex-base "
                            "texlive-pictures texlive-latex-extra poppler-utils; ./run test does)";
 
-    //! A fresh output folder <RTL_TEST_OUTPUT_DIR>/latex/<sub>, without the temporary folder of a previous run.
-    fs::path outDir(const std::string &sub)
+    //! A fresh output folder <RTL_TEST_OUTPUT_DIR>/latex/<sub>, without the temporary folder that a previous run's
+    //! LaTeXDoc named `doc` left there.
+    fs::path outDir(const std::string &sub, const std::string &doc)
     {
         fs::path p = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / sub;
         fs::remove_all(p);
-        fs::remove_all(p.string() + "_tmp_" + sub);
+        fs::remove_all(p.string() + "_tmp_" + doc);
         fs::create_directories(p);
         return p;
     }
@@ -69,7 +70,8 @@ namespace
     double inkFraction(const fs::path &pdf)
     {
         fs::path prefix = pdf.parent_path() / (pdf.stem().string() + "-page1");
-        std::string cmd = "pdftoppm -r 30 -gray -f 1 -l 1 -singlefile '" + pdf.string() + "' '" + prefix.string() + "'";
+        std::string cmd = "pdftoppm -r 30 -gray -f 1 -l 1 -singlefile " + rtl::latex_detail::shellQuote(pdf.string()) +
+                          " " + rtl::latex_detail::shellQuote(prefix.string());
         if (std::system(cmd.c_str()) != 0)
             return -1;
         std::string img = readFile(prefix.string() + ".pgm");
@@ -189,7 +191,7 @@ namespace
 TEST(LaTeXPdf, EveryFigureAndTableCompilesInOneBatchedDocument)
 {
     ASSERT_TRUE(LaTeXDoc::pdflatexAvailable()) << kMissing;
-    fs::path dir = outDir("batch");
+    fs::path dir = outDir("batch dir 'quoted'", "batch");   // the shell commands must quote paths
     LaTeXTikz2D all = figureAllPrimitives(), log = figureLogAxes();
     LaTeXTikz3D cube;
     cube.setView(60, Vector3f(-1, -2, -1));
@@ -242,7 +244,7 @@ TEST(LaTeXPdf, EveryFigureAndTableCompilesInOneBatchedDocument)
 TEST(LaTeXPdf, DocumentWithSeparatelyCompiledFiguresAndTheScanFigure)
 {
     ASSERT_TRUE(LaTeXDoc::pdflatexAvailable()) << kMissing;
-    fs::path dir = outDir("report");
+    fs::path dir = outDir("report", "report");
     auto r = rtl_test_latex::process(intelScan());
     ASSERT_GE(r.clusters.size(), 8u);
     ASSERT_GE(r.segments.size(), 15u);
@@ -323,12 +325,13 @@ TEST(LaTeXPdf, MissingPdflatexIsReportedNotFatal)
         EXPECT_TRUE(fs::exists(fs::path(doc.tmpDir()) / "nolatex_0.tex"));
         return;
     }
-    fs::path dir = outDir("nolatex");
+    fs::path dir = outDir("nolatex", "nolatex");
     fs::path self = fs::read_symlink("/proc/self/exe");
     fs::path err = dir / "stderr.txt";
-    std::string cmd = "env PATH=/nonexistent RTL_LATEX_CHILD='" + (dir / "out").string() + "' '" + self.string() +
-                      "' --gtest_filter=LaTeXPdf.MissingPdflatexIsReportedNotFatal > '" + (dir / "stdout.txt").string() +
-                      "' 2> '" + err.string() + "'";
+    using rtl::latex_detail::shellQuote;
+    std::string cmd = "env PATH=/nonexistent RTL_LATEX_CHILD=" + shellQuote((dir / "out").string()) + " " +
+                      shellQuote(self.string()) + " --gtest_filter=LaTeXPdf.MissingPdflatexIsReportedNotFatal > " +
+                      shellQuote((dir / "stdout.txt").string()) + " 2> " + shellQuote(err.string());
     int rc = std::system(cmd.c_str());
     EXPECT_EQ(rc, 0) << readFile(dir / "stdout.txt");
     std::string msg = readFile(err);
