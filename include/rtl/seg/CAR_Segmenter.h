@@ -100,22 +100,54 @@ namespace rtl
             flags_.resize(n);
             unsigned char *f = flags_.data();
             f[0] = seg_detail::isFinite<D>(ptr(pts[0])) ? 1 : 0;
-            const VectorType *v = pts.data();
-            for (size_t i = 1; i < n; ++i)
+            // Branch-free loops, so that the compiler vectorises them. 2D points are loaded as they are; other
+            // dimensions are transposed block-wise to one array per coordinate first (the compiler does not
+            // vectorise loads with a 3-element stride).
+            if constexpr (D == 2)
             {
-                // branch-free, so that the compiler vectorises it
-                ElementType rsq = 0, dsq = 0;
-                bool valid = true, valid_prev = true;
-                for (int k = 0; k < D; ++k)
+                const VectorType *v = pts.data();
+                for (size_t i = 1; i < n; ++i)
                 {
-                    const ElementType a = v[i][static_cast<size_t>(k)], b = v[i - 1][static_cast<size_t>(k)];
-                    rsq += (a - o[k]) * (a - o[k]);
-                    dsq += (a - b) * (a - b);
-                    valid &= (a - a) == ElementType(0);
-                    valid_prev &= (b - b) == ElementType(0);
+                    ElementType rsq = 0, dsq = 0;
+                    bool valid = true, valid_prev = true;
+                    for (int k = 0; k < D; ++k)
+                    {
+                        const ElementType a = v[i][static_cast<size_t>(k)], b = v[i - 1][static_cast<size_t>(k)];
+                        rsq += (a - o[k]) * (a - o[k]);
+                        dsq += (a - b) * (a - b);
+                        valid &= (a - a) == ElementType(0);
+                        valid_prev &= (b - b) == ElementType(0);
+                    }
+                    const bool link = valid & valid_prev & (dsq <= thr(rsq));
+                    f[i] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
                 }
-                const bool link = valid & valid_prev & (dsq <= thr(rsq));
-                f[i] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
+            }
+            else
+            {
+                constexpr size_t block = 256;
+                ElementType c[D][block + 1];
+                for (size_t i0 = 1; i0 < n; i0 += block)
+                {
+                    const size_t m = std::min(block, n - i0);
+                    for (size_t j = 0; j <= m; ++j)
+                        for (int k = 0; k < D; ++k) c[k][j] = pts[i0 - 1 + j].data()[k];
+                    unsigned char *fb = f + i0;
+                    for (size_t j = 0; j < m; ++j)
+                    {
+                        ElementType rsq = 0, dsq = 0;
+                        bool valid = true, valid_prev = true;
+                        for (int k = 0; k < D; ++k)
+                        {
+                            const ElementType a = c[k][j + 1], b = c[k][j];
+                            rsq += (a - o[k]) * (a - o[k]);
+                            dsq += (a - b) * (a - b);
+                            valid &= (a - a) == ElementType(0);
+                            valid_prev &= (b - b) == ElementType(0);
+                        }
+                        const bool link = valid & valid_prev & (dsq <= thr(rsq));
+                        fb[j] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
+                    }
+                }
             }
 
             constexpr std::uint64_t all_linked = 0x0202020202020202ull;
