@@ -223,51 +223,6 @@ function parseCsv(text, name = 'input') {
   rows.forEach((r, i) => out.set(r, i * dim));
   return { points: out, dim };
 }
-// Only used while the package build has no CARMEN reader (its first slices): the conversion the reader documents.
-// FLASER n r_1..r_n x y theta ...: beam i at -pi/2 + i*pi/n (n odd: pi/(n-1), so the last beam is at +pi/2);
-// ranges at the sensor's maximum (>= 80 m in these logs) or <= 0 are gaps (NaN points).
-function parseCarmenFallback(text, name) {
-  const scans = [];
-  text.split(/\r?\n/).forEach((raw, li) => {
-    const t = raw.trim().split(/\s+/);
-    if (t[0] !== 'FLASER') return;
-    const n = Number(t[1]);
-    const fields = t.slice(2).map(Number);
-    if (!Number.isInteger(n) || n < 1 || t.length < 2 + n + 3 || fields.slice(0, n + 3).some((x) => !Number.isFinite(x))) {
-      throw new InputError(`${name}: line ${li + 1}: malformed FLASER record`);
-    }
-    const step = n % 2 === 1 ? Math.PI / (n - 1) : Math.PI / n;
-    const points = new Float64Array(2 * n);
-    for (let i = 0; i < n; i++) {
-      const r = fields[i], a = -Math.PI / 2 + i * step, ok = r > 0 && r < 80;
-      points[2 * i] = ok ? r * Math.cos(a) : NaN;
-      points[2 * i + 1] = ok ? r * Math.sin(a) : NaN;
-    }
-    scans.push({ points, x: fields[n], y: fields[n + 1], theta: fields[n + 2], line: li + 1 });
-  });
-  return scans;
-}
-
-// Only used while the package build has no organised-LiDAR reader: little-endian float32 x,y,z,intensity records;
-// (0,0,0) is no return (NaN). Column-major: record k is beam k % beams of column k / beams.
-function readOrganizedFallback(buf, beams, layout, name) {
-  if (buf.length % 16 !== 0) throw new InputError(`${name}: ${buf.length} bytes is not a whole number of 16-byte records (x, y, z, intensity as float32)`);
-  const count = buf.length / 16;
-  if (count % beams !== 0) throw new InputError(`${name}: ${count} points do not divide into ${beams} beams`);
-  const columns = count / beams;
-  const view = new DataView(buf.buffer, buf.byteOffset, buf.byteLength);
-  const point = (k) => {
-    const x = view.getFloat32(16 * k, true), y = view.getFloat32(16 * k + 4, true), z = view.getFloat32(16 * k + 8, true);
-    return x === 0 && y === 0 && z === 0 ? [NaN, NaN, NaN] : [x, y, z];
-  };
-  const index = (b, c) => (layout === 'row-major' ? b * columns + c : c * beams + b);
-  return {
-    beams, columns,
-    ring(b) { const out = new Float64Array(3 * columns); for (let c = 0; c < columns; c++) out.set(point(index(b, c)), 3 * c); return out; },
-    column(c) { const out = new Float64Array(3 * beams); for (let b = 0; b < beams; b++) out.set(point(index(b, c)), 3 * b); return out; },
-  };
-}
-
 async function loadPoints(rtl, opts) {
   const name = opts.file === '-' ? 'stdin' : opts.file;
   if (opts.type === 'csv') {
@@ -276,12 +231,12 @@ async function loadPoints(rtl, opts) {
   }
   if (opts.type === 'carmen') {
     const text = readInput(opts.file, false);
-    const reader = rtl.readCarmenLog ?? rtl.readCarmen;
     let scans;
     try {
-      scans = typeof reader === 'function' ? reader.call(rtl, text) : parseCarmenFallback(text, name);
+      scans = need(rtl, 'readCarmenLog', 'a CARMEN log')(text);
     } catch (e) {
-      throw new InputError(e instanceof InputError ? e.message : `${name}: ${e.message}`);
+      if (e instanceof MissingFeature) throw e;
+      throw new InputError(`${name}: ${e.message}`);
     }
     if (scans.length === 0) throw new InputError(`${name}: no laser scans (FLASER lines) found`);
     if (opts.scan >= scans.length) throw new InputError(`${name}: --scan ${opts.scan} is out of range, the log has ${scans.length} scans (0..${scans.length - 1})`);
@@ -293,13 +248,12 @@ async function loadPoints(rtl, opts) {
   }
   const buf = readInput(opts.file, true);
   const layout = opts.layout === 'row' ? 'row-major' : 'column-major';
+  const read = need(rtl, 'readOrganizedLidar', 'a binary scan');
   let cloud;
   try {
-    cloud = typeof rtl.readOrganizedLidar === 'function'
-      ? rtl.readOrganizedLidar(buf.buffer.slice(buf.byteOffset, buf.byteOffset + buf.byteLength), { beams: opts.beams, layout })
-      : readOrganizedFallback(buf, opts.beams, layout, name);
+    cloud = read(buf, { beams: opts.beams, layout });
   } catch (e) {
-    throw new InputError(e instanceof InputError ? e.message : `${name}: ${e.message}`);
+    throw new InputError(`${name}: ${e.message}`);
   }
   let points, what;
   if (opts.column !== undefined) {

@@ -130,32 +130,8 @@ async function loadDataset(name) {
   }
   const text = await res.text();
   state.texts[name] = text;
-  const rtl = state.rtl;
-  const reader = rtl.readCarmenLog ?? rtl.readCarmen;
-  state.scans[name] = typeof reader === 'function' ? reader.call(rtl, text) : parseCarmenFallback(text);
+  state.scans[name] = state.rtl.readCarmenLog(text);
   return state.scans[name];
-}
-
-// Only used when the package build has no CARMEN reader yet (the fitLine-only first slice): the same conversion the
-// reader documents, FLASER beam i at -pi/2 + i*pi/n (n odd: pi/(n-1), so the last beam is at +pi/2); max-range
-// returns (>= 80 m in these logs) are gaps (NaN).
-function parseCarmenFallback(text) {
-  const scans = [];
-  text.split('\n').forEach((line, li) => {
-    const t = line.trim().split(/\s+/);
-    if (t[0] !== 'FLASER') return;
-    const n = Number(t[1]);
-    const step = n % 2 === 1 ? Math.PI / (n - 1) : Math.PI / n;
-    const ranges = new Float64Array(t.slice(2, 2 + n).map(Number));
-    const points = new Float64Array(2 * n);
-    ranges.forEach((r, i) => {
-      const a = -Math.PI / 2 + i * step, ok = r > 0 && r < 80;
-      points[2 * i] = ok ? r * Math.cos(a) : NaN;
-      points[2 * i + 1] = ok ? r * Math.sin(a) : NaN;
-    });
-    scans.push({ points, ranges, x: Number(t[2 + n]), y: Number(t[3 + n]), theta: Number(t[4 + n]), line: li + 1 });
-  });
-  return scans;
 }
 
 // Interleaved x,y of the non-gap points, and the beam index of each.
