@@ -66,7 +66,7 @@ function run(cmd, args, cwd) {
   return r.stdout;
 }
 
-describe('Vite consumer app (tests/vite-app) built with vite build, run in Chromium', { timeout: 300000 }, () => {
+describe('packed tarball in a consumer folder: the rtl command, and tests/vite-app built by Vite and run in Chromium', { timeout: 300000 }, () => {
   let tmp, app, server, browser;
 
   before(() => {
@@ -97,6 +97,20 @@ describe('Vite consumer app (tests/vite-app) built with vite build, run in Chrom
     const js = assets.filter((f) => f.endsWith('.js'));
     assert.ok(js.length >= 1);
     assert.ok(js.some((f) => readFileSync(join(app, 'dist', 'assets', f), 'utf8').includes(wasm[0])), 'the bundle refers to the hashed .wasm');
+  });
+
+  test('the installed tarball provides the rtl command (package bin), which runs from the consumer folder', () => {
+    const bin = join(app, 'node_modules', '.bin', 'rtl');
+    let r = spawnSync(bin, ['--version'], { cwd: app, encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    assert.equal(r.stdout.trim(), JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
+    writeFileSync(join(app, 'wall.csv'), '0,1\n1,1\n2,1\n3,1\n');
+    r = spawnSync(bin, ['wall.csv', '--fit', '-f', 'svg'], { cwd: app, encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    assert.match(r.stdout, /^<svg[\s>][\s\S]*<line [\s\S]*<\/svg>\s*$/);
+    r = spawnSync(bin, ['wall.csv', '-m', 'magic'], { cwd: app, encoding: 'utf8' });
+    assert.equal(r.status, 2);
+    assert.match(r.stderr, /^rtl: --vectorize must be one of/);
   });
 
   test('the built app loads the module in Chromium and fits the known line', async () => {
