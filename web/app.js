@@ -560,6 +560,11 @@ function expose(r, shown = r) {
     sensor: shown.sensor ?? { x: 0, y: 0, theta: 0 },
     shownPoints: Array.from(shown.points),
     backgroundPoints: shown.background ? shown.background.length / 2 : 0,
+    // The world rectangle the figure shows now (zoom and pan change it without recomputing).
+    viewExtent() {
+      const v = state.view;
+      return { minX: v.minX, maxX: v.maxX, minY: v.minY, maxY: v.maxY };
+    },
     // Client (CSS pixel) coordinates of point i in the figure, for tests that click on the drawing.
     clientPoint(i) {
       const v = state.view, rect = $('canvas').getBoundingClientRect();

@@ -100,6 +100,27 @@ describe('demo page (web/index.html) in Chromium: scans and the TLS line fit', {
     assert.ok(sameLine(r2.fit, whole, 1e-12));
   });
 
+  test('the figure zooms and pans with the keyboard and the wheel, and resets', async () => {
+    const extent = () => page.evaluate(() => window.__rtl.viewExtent());
+    const width = (e) => e.maxX - e.minX;
+    const start = await extent();
+    await page.focus('#canvas');
+    await page.keyboard.press('+');
+    const zoomed = await extent();
+    assert.ok(Math.abs(width(zoomed) / width(start) - 0.8) < 1e-9, `zoom in: ${width(zoomed)} vs ${width(start)}`);
+    await page.keyboard.press('ArrowLeft');
+    const panned = await extent();
+    assert.ok(panned.minX < zoomed.minX && Math.abs(width(panned) - width(zoomed)) < 1e-9, 'pan keeps the size');
+    await page.keyboard.press('0');
+    assert.deepEqual(await extent(), start);
+    const box = await page.locator('#canvas').boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.wheel(0, 200);                               // wheel down: zoom out around the cursor
+    await page.waitForFunction((w) => { const e = window.__rtl.viewExtent(); return e.maxX - e.minX > w; }, width(start), { timeout: TIMEOUT });
+    await page.click('#reset-view');
+    assert.deepEqual(await extent(), start);
+  });
+
   test('switching to CSAIL (361 beams) and moving the scan slider recomputes', async () => {
     await page.selectOption('#dataset', 'csail');
     await page.waitForFunction(() => window.__rtl.dataset === 'csail', null, { timeout: TIMEOUT });
