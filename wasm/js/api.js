@@ -304,6 +304,7 @@ function toTikz(drawing, opts) {
 
 // ------------------------------------------------------------------------------------------------ the module
 function wrap(m) {
+  let lastComputeMs = NaN;  // time spent in the C++ library by the last segment()/vectorize() call
   // Copies `arrays` (Float64Array or Uint8Array) into the wasm heap, calls f(ptr0, len0, ptr1, len1, ...) with lengths
   // in elements, frees them again. HEAP* views are read after every _malloc: memory growth replaces the buffer and
   // detaches older views.
@@ -344,6 +345,7 @@ function wrap(m) {
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
     const r = withHeap([xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2]));
+    lastComputeMs = r.computeMs;
     const clusters = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
       const indices = r.indices.subarray(r.offsets[k], r.offsets[k + 1]);
@@ -377,6 +379,7 @@ function wrap(m) {
     const xyz = toF64(points, fn, 'points');
     const r = withHeap([xyz], (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
       sigma, delta, epsilon, maxSize, simplexShift, maxIterations));
+    lastComputeMs = r.computeMs;
     const polygons = [];
     for (let k = 0; k + 1 < r.polygonOffsets.length; k++) polygons.push(r.polygonPoints.slice(r.polygonOffsets[k], r.polygonOffsets[k + 1]));
     return {
@@ -586,7 +589,7 @@ function wrap(m) {
     };
   }
 
-  return {
+  const api = {
     version: VERSION,
     fitLine,
     segment,
@@ -602,6 +605,8 @@ function wrap(m) {
     memoryBytes: () => m.memoryBytes(),
     stackPointer: () => m.stackPointer(),
   };
+  Object.defineProperty(api, 'lastComputeMs', { get: () => lastComputeMs, enumerable: false });
+  return api;
 }
 
 // Checks init()'s options and returns the ones handed to the Emscripten factory.

@@ -290,6 +290,9 @@ export interface RTL {
   heapInUse(): number;
   /** bytes of wasm linear memory */
   memoryBytes(): number;
+  /** milliseconds the last segment()/vectorize() call spent inside the C++ library (the rest of the call's time
+   *  is argument checks and array transfer); diagnostics for benchmarks */
+  readonly lastComputeMs: number;
   /** the wasm shadow-stack pointer (diagnostics: it is the same before and after every call, failing or not) */
   stackPointer(): number;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <emscripten/bind.h>
+#include <emscripten/emscripten.h>
 #include <emscripten/val.h>
 
 #include <cmath>
@@ -80,6 +81,10 @@ inline val u32(const std::vector<std::uint32_t>& v) { return typedArray("Uint32A
 inline val i32(const std::vector<std::int32_t>& v) { return typedArray("Int32Array", v.data(), v.size()); }
 
 inline std::string str(std::size_t v) { return std::to_string(v); }
+
+// Milliseconds since an arbitrary start (performance.now()): the bindings report the time spent in the library
+// itself as `computeMs`, so that benchmarks can split a call into compute and array transfer.
+inline double nowMs() { return emscripten_get_now(); }
 
 // Checks an interleaved point array: a whole number of points, at least `minPoints`, all finite (unless gaps are
 // allowed, where a point with any NaN coordinate is a gap; +-Infinity is always rejected).

@@ -18,11 +18,14 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
     p.origin[0] = ox;
     p.origin[1] = oy;
     p.origin[2] = oz;
+    const double t0 = nowMs();
     const auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p) : rtl_ops::segment<3>(xyz, len / 3, p);
+    const double computeMs = nowMs() - t0;
     val r = val::object();
     r.set("labels", i32(out.labels));
     r.set("indices", u32(out.indices));
     r.set("offsets", u32(out.offsets));
+    r.set("computeMs", computeMs);
     return r;
   });
 }

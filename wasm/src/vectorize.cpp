@@ -22,7 +22,9 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     p.maxSize = static_cast<std::size_t>(maxSize);
     p.simplexShift = static_cast<std::size_t>(simplexShift);
     p.maxIterations = static_cast<std::size_t>(maxIterations);
+    const double t0 = nowMs();
     const auto o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p) : rtl_ops::vectorize<3>(xyz, len / 3, p);
+    const double computeMs = nowMs() - t0;
     std::vector<double> polys;
     std::vector<std::uint32_t> polyOffsets{0};
     for (const auto& poly : o.polygons) {
@@ -39,6 +41,7 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     r.set("params", f64(o.params));
     r.set("stride", o.stride);
     r.set("rms", f64(o.rms));
+    r.set("computeMs", computeMs);
     return r;
   });
 }
