@@ -1,7 +1,10 @@
 // Extractors, optimizers, postprocessors and the Vectorizer classes on synthetic chains: semicircles, polygons
 // with known corners, staircases, helices and box faces; bad input; the known defects of rtl-api 6.10.
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <new>
 #include <random>
 #include <vector>
 
@@ -11,6 +14,22 @@
 #include "vect_reference.h"
 
 using namespace vect_test;
+
+// Counts heap allocations through operator new (std::vector and friends), to check buffer reuse. GCC cannot see
+// that the replaced operator new and delete pair malloc with free.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+static std::atomic<size_t> g_allocations{0};
+void *operator new(std::size_t n)
+{
+    ++g_allocations;
+    if (void *p = std::malloc(n ? n : 1))
+        return p;
+    throw std::bad_alloc();
+}
+void operator delete(void *p) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t) noexcept { std::free(p); }
 
 namespace
 {
@@ -472,4 +491,36 @@ TEST(Vectorizers3D, BoxFacePlanes)
         EXPECT_EQ(planes.polygons()[i].points().size(), r.second - r.first);
     }
     EXPECT_GT(covered, pts.size() * 9 / 10);
+}
+
+// setMaxSize (or one earlier call on a chain at least as long) makes later calls allocation-free.
+TEST(Vectorizers, NoAllocationWhenBuffersAreReused)
+{
+    const auto big = semicircle(20000, 0.01, 1), small = semicircle(3000, 0.01, 2);
+    const auto hbig = helix(20000, 2, 3, 0.01, 3), hsmall = helix(3000, 2, 3, 0.01, 4);
+    rtl::VectorizerFTLSPolyline2D<float, double> f;
+    rtl::VectorizerAFTLSPolyline2D<float, double> af;
+    rtl::VectorizerITLSProjections2D<float, double> it;
+    rtl::VectorizerFTLSProjections3D<float, double> f3;
+    rtl::VectorizerAFTLSProjections3D<float, double> a3;
+    rtl::VectorizerITLSProjections3D<float, double> i3;
+    rtl::VectorizerDouglasPeucker2f dp(0.09f);
+    rtl::VectorizerReumannWitkam2f rw(0.09f);
+    std::vector<rtl::LineSegment2f> out;
+    f.setMaxSize(20000); af.setMaxSize(20000); it.setMaxSize(20000);
+    f3.setMaxSize(20000); a3.setMaxSize(20000); i3.setMaxSize(20000);
+    dp.setMaxSize(20000); rw.setMaxSize(20000);
+    // One warm-up call each sizes the output vectors.
+    ASSERT_TRUE(f(big) && af(big) && it(big) && f3(hbig) && a3(hbig) && i3(hbig));
+    dp(big, out);
+    rw(big, out);
+    const size_t before = g_allocations.load();
+    for (int rep = 0; rep < 2; ++rep)
+    {
+        ASSERT_TRUE(f(small) && af(small) && it(small) && f3(hsmall) && a3(hsmall) && i3(hsmall));
+        ASSERT_TRUE(f(big) && af(big) && it(big) && f3(hbig) && a3(hbig) && i3(hbig));
+        dp(small, out);
+        rw(big, out);
+    }
+    EXPECT_EQ(g_allocations.load() - before, 0u);
 }

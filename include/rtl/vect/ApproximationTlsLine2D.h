@@ -121,11 +121,12 @@ namespace rtl
         }
         //! errorSquared(ps) < sigma2, decided without square roots (the minor eigenvalue is below sigma2 iff
         //! cov - sigma2 I is not positive semidefinite). False for NaN sums.
-        static bool errorBelow(const PrecSumsType &ps, ComputeType sigma2)
+        static bool errorBelow(const PrecSumsType &ps, ComputeType sigma2) { return errorBelowRaw(ps.sums.data(), ps.cnt(), sigma2); }
+        //! errorBelow on raw sums s[0..4] (PrecSums2D order) of n points.
+        static bool errorBelowRaw(const ComputeType *s, ComputeType n, ComputeType sigma2)
         {
-            const ComputeType n = ps.cnt(), t = n * n * sigma2;
-            const ComputeType a = n * ps.sx2() - ps.sx() * ps.sx() - t, b = n * ps.sy2() - ps.sy() * ps.sy() - t,
-                              c = n * ps.sxy() - ps.sx() * ps.sy();
+            const ComputeType t = n * n * sigma2;
+            const ComputeType a = n * s[2] - s[0] * s[0] - t, b = n * s[3] - s[1] * s[1] - t, c = n * s[4] - s[0] * s[1];
             if (!std::isfinite(a + b + c))
                 return false;
             return a < 0 || b < 0 || a * b < c * c;

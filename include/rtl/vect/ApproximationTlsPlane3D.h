@@ -95,13 +95,13 @@ namespace rtl
             return std::max(ComputeType(0), es.eigenvalues()(0));
         }
         //! errorSquared(ps) < sigma2 without an eigen-decomposition (cov - sigma2 I is not positive semidefinite).
-        static bool errorBelow(const PrecSumsType &ps, ComputeType sigma2)
+        static bool errorBelow(const PrecSumsType &ps, ComputeType sigma2) { return errorBelowRaw(ps.sums.data(), ps.cnt(), sigma2); }
+        //! errorBelow on raw sums s[0..8] (PrecSums3D order) of n points.
+        static bool errorBelowRaw(const ComputeType *s, ComputeType n, ComputeType sigma2)
         {
-            const ComputeType n = ps.cnt(), t = n * n * sigma2;
-            const ComputeType a = n * ps.sx2() - ps.sx() * ps.sx(), b = n * ps.sy2() - ps.sy() * ps.sy(),
-                              c = n * ps.sz2() - ps.sz() * ps.sz();
-            const ComputeType ab = n * ps.sxy() - ps.sx() * ps.sy(), bc = n * ps.syz() - ps.sy() * ps.sz(),
-                              ca = n * ps.szx() - ps.sz() * ps.sx();
+            const ComputeType t = n * n * sigma2;
+            const ComputeType a = n * s[3] - s[0] * s[0], b = n * s[4] - s[1] * s[1], c = n * s[5] - s[2] * s[2];
+            const ComputeType ab = n * s[6] - s[0] * s[1], bc = n * s[7] - s[1] * s[2], ca = n * s[8] - s[2] * s[0];
             return vect_detail::notPsd3(a - t, b - t, c - t, ab, bc, ca);
         }
 

@@ -55,7 +55,7 @@ namespace rtl
                 for (int k = 0; k < dim; ++k)
                     d[k] = static_cast<ComputeType>(pts[i][k]) - origin[k];
                 add(s, d, ComputeType(1));
-                if (i - beg >= 2 && !Approximation::errorBelow(makeSums(s, i + 1 - beg), sigma2))
+                if (i - beg >= 2 && !Approximation::errorBelowRaw(s, static_cast<ComputeType>(i + 1 - beg), sigma2))
                 {
                     add(s, d, ComputeType(-1));
                     emit(approximations, indices, makeSums(s, i - beg), origin, beg, i);

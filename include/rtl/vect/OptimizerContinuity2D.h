@@ -11,7 +11,9 @@
 //   4. re-partition a window of neighbouring ranges: a small dynamic programme over candidate breakpoints near
 //      the window's boundaries finds the fewest ranges that fit sigma and whose every pair (including the two
 //      pairs with the ranges outside the window) passes (e.g. a 2-point "bridge" range across a step);
-//   5. as a last resort, bridge the two boundary points without checking and let the loop re-check.
+//   5. for chains of <= 160 points, the same programme over the whole chain (exhaustive: if it fails, no valid
+//      result exists and operator() returns false); for longer chains, bridge the two boundary points without
+//      checking and let the loop re-check.
 // The repaired pairs are re-checked; a work budget proportional to the input bounds the total effort.
 #pragma once
 
@@ -216,10 +218,10 @@ namespace rtl
                 return true;
             if (repartition(pts, a, lines, indices, i > 1 ? i - 2 : 0, std::min(indices.size(), i + 4), 12))
                 return true;
-            // Whole chain, if small enough for the cubic programme.
-            if (indices.back().second - indices.front().first <= 160 &&
-                repartition(pts, a, lines, indices, 0, indices.size(), indices.back().second))
-                return true;
+            // Whole chain, if small enough for the cubic programme; it considers every partition, so if it finds
+            // none, no valid result exists and bridging is pointless.
+            if (indices.back().second - indices.front().first <= 160)
+                return repartition(pts, a, lines, indices, 0, indices.size(), indices.back().second);
             // 5. Bridge of the two boundary points (re-checked by the caller's loop).
             if (m >= b + 3 && m + 3 <= e && tryReplace(pts, a, lines, indices, i, 2, {{b, m - 1}, {m - 1, m + 1}, {m + 1, e}}, false))
                 return true;
