@@ -246,6 +246,14 @@ namespace rtl
             if (r == none) return;
             wrec_[slot] = none;
             Record &R = recs_[r];
+            if (!R.has_alive && R.in_window == 1)
+            {
+                // the cluster closes with this point and never had an alive list: skip the alive map
+                closed_.emplace_back(1, wpts_[slot]);
+                R.in_window = 0;
+                free_.push_back(r);
+                return;
+            }
             pushAlive(R, wpts_[slot], widx_[slot]);
             std::vector<VectorType> &v = R.alive->second;
             if (--R.in_window == 0)
