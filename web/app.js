@@ -75,6 +75,8 @@ function readSettings() {
 
 function readSettingsValues() {
   return {
+    segmenter: $('segmenter').value,
+    scaling: Math.max(0, numberInput('seg-scaling', 0.05)),
     step: Math.max(1, Math.round(numberInput('seg-step', 3))),
     lowerBound: Math.max(0, numberInput('seg-lower', 0.1)),
     upperBound: Math.max(0, numberInput('seg-upper', 0.5)),
@@ -103,6 +105,7 @@ function syncOutputs() {
   $('map-frame-row').hidden = ring || !state.features?.tfTree;
   if (ring) $('map-frame').checked = false;
   $('seg-step-out').textContent = $('seg-step').value;
+  $('ia-params').hidden = $('segmenter').value !== 'ia';
   $('sigma-out').textContent = Number($('sigma').value).toFixed(3);
   $('delta-out').textContent = Number($('delta').value).toFixed(2);
   $('epsilon-out').textContent = Number($('epsilon').value).toFixed(3);
@@ -132,6 +135,36 @@ async function loadDataset(name) {
   state.texts[name] = text;
   state.scans[name] = state.rtl.readCarmenLog(text);
   return state.scans[name];
+}
+
+// The streaming (IA) segmenter fed with the scan in beam order, then flushed. It hands clusters back as points, so
+// they are mapped to beam indices by their exact coordinates (the package returns the doubles it was given).
+function streamSegment(points, s) {
+  const seg = new state.rtl.StreamSegmenter({ dim: 2, step: s.step, lowerBound: s.lowerBound, upperBound: s.upperBound, scaling: s.scaling });
+  try {
+    seg.addPoints(points);
+    seg.flush();
+    const where = new Map();
+    for (let i = 0; i < points.length / 2; i++) {
+      if (!Number.isFinite(points[2 * i]) || !Number.isFinite(points[2 * i + 1])) continue;
+      const key = `${points[2 * i]},${points[2 * i + 1]}`;
+      if (!where.has(key)) where.set(key, []);
+      where.get(key).push(i);
+    }
+    const labels = new Int32Array(points.length / 2).fill(-1);
+    const clusters = seg.takeClosedClusters().map((xy, k) => {
+      const indices = [];
+      for (let j = 0; j < xy.length; j += 2) {
+        const i = where.get(`${xy[j]},${xy[j + 1]}`).shift();
+        labels[i] = k;
+        indices.push(i);
+      }
+      return { indices: Uint32Array.from(indices) };
+    });
+    return { labels, clusters };
+  } finally {
+    seg.dispose();
+  }
 }
 
 // Interleaved x,y of the non-gap points, and the beam index of each.
@@ -165,7 +198,8 @@ function compute() {
   // Segmentation of the whole scan (gaps are marked by the segmenter).
   const t0 = performance.now();
   const seg = f.segment
-    ? rtl.segment(points, { dim: 2, step: s.step, lowerBound: s.lowerBound, upperBound: s.upperBound })
+    ? (s.segmenter === 'ia' && f.stream ? streamSegment(points, s)
+      : rtl.segment(points, { dim: 2, step: s.step, lowerBound: s.lowerBound, upperBound: s.upperBound }))
     : null;
   const t1 = performance.now();
   const clusters = seg ? seg.clusters.map((c) => Array.from(c.indices)) : [];
@@ -769,6 +803,7 @@ function applyFeatures() {
     svg: has('toSvg'),
     tikz: has('toTikz'),
     tfTree: typeof rtl.TfTree === 'function',
+    stream: typeof rtl.StreamSegmenter === 'function',
   };
   const f = state.features;
   const missing = (fieldset, what) => {
@@ -785,6 +820,7 @@ function applyFeatures() {
   $('show-clusters').disabled = !f.segment;
   $('show-segments').disabled = !f.vectorize;
   $('fit-tip').hidden = !f.segment;
+  if (!f.stream) $('segmenter').closest('fieldset').querySelector('option[value=ia]').remove();
   $('map-frame-row').hidden = !f.tfTree;
   if (typeof rtl.readOrganizedLidar !== 'function') $('dataset').querySelector('option[value=rellis]').remove();
 }
@@ -801,7 +837,11 @@ async function main() {
   applyFeatures();
   for (const el of $('controls').querySelectorAll('input, select')) {
     el.addEventListener('input', () => {
-      if (el.id === 'fit-from' || el.id === 'fit-to') state.fitCluster = null;
+      // A clicked cluster is a cluster of this segmentation: new clusters or another scan forget it (the beam window
+      // still holds its first and last beam).
+      if (['fit-from', 'fit-to', 'segmenter', 'seg-step', 'seg-lower', 'seg-upper', 'seg-scaling', 'scan', 'dataset'].includes(el.id)) {
+        state.fitCluster = null;
+      }
       update();
     });
   }

@@ -140,6 +140,35 @@ describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 2400
     assert.equal(svg.match(/<circle /g).length, r.validCount);
   });
 
+  test('the streaming (IA) segmenter gives the clusters StreamSegmenter gives in Node, as beam index sets', async () => {
+    await page.selectOption('#segmenter', 'ia');
+    await page.fill('#seg-scaling', '0.1');
+    const r = await settledWith({ segmenter: 'ia', scaling: 0.1 });
+    assert.equal(await page.isVisible('#seg-scaling'), true);
+    const rtl = await init();
+    const points = new Float64Array(2 * scan.n).fill(NaN);
+    scan.ranges.forEach((range, i) => {
+      if (isReturn(range)) { points[2 * i] = range * Math.cos(scan.angles[i]); points[2 * i + 1] = range * Math.sin(scan.angles[i]); }
+    });
+    const seg = new rtl.StreamSegmenter({ step: 3, lowerBound: 0.1, upperBound: 0.5, scaling: 0.1 });
+    seg.addPoints(points);
+    seg.flush();
+    const clusters = seg.takeClosedClusters();
+    seg.dispose();
+    assert.deepEqual(r.segmentation.clusterSizes, clusters.map((c) => c.length / 2));
+    clusters.forEach((xy, k) => {
+      const members = r.segmentation.labels.flatMap((l, i) => (l === k ? [i] : []));
+      members.forEach((i, j) => {
+        assert.ok(Math.abs(points[2 * i] - xy[2 * j]) < 1e-9 && Math.abs(points[2 * i + 1] - xy[2 * j + 1]) < 1e-9, `cluster ${k} point ${j}`);
+      });
+    });
+    r.segmentation.labels.forEach((l, i) => assert.equal(l >= 0, isReturn(scan.ranges[i]), `beam ${i}`));
+    await page.screenshot({ path: join(resultsDir(), 'page-ia-segmenter.png') });
+    await page.selectOption('#segmenter', 'car');
+    await settledWith({ segmenter: 'car' });
+    assert.equal(await page.isVisible('#seg-scaling'), false);
+  });
+
   test('a LiDAR ring (RELLIS-3D, 360°) read by the package is segmented like segment() in Node on its x, y', async () => {
     await page.selectOption('#dataset', 'rellis');
     await page.waitForFunction(() => window.__rtl.dataset === 'rellis', null, { timeout: TIMEOUT });
