@@ -163,7 +163,7 @@ describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 2400
       });
     });
     r.segmentation.labels.forEach((l, i) => assert.equal(l >= 0, isReturn(scan.ranges[i]), `beam ${i}`));
-    await page.screenshot({ path: join(resultsDir(), 'page-ia-segmenter.png') });
+    await page.screenshot({ path: join(resultsDir(), 'page-ia-segmenter.png'), fullPage: true });
     await page.selectOption('#segmenter', 'car');
     await settledWith({ segmenter: 'car' });
     assert.equal(await page.isVisible('#seg-scaling'), false);
