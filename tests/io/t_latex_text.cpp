@@ -422,6 +422,29 @@ TEST(LaTeXTikz3D, FacesArePaintedBackToFrontWithTheVisibleSideStyle)
     EXPECT_EQ(c[0], "\\draw[StyleB] (-0.5,-0.5) -- (0.5,-0.5) -- (0.5,0.5) -- (-0.5,0.5) -- (-0.5,-0.5);");
 }
 
+TEST(LaTeXTikz3D, ManyParallelFacesInRandomOrderArePaintedFarToNear)
+{
+    LaTeXTikz3D le;
+    le.setView(90, rtl::RigidTf3f(0.0f, Vector3f(0, 0, 1), Vector3f(0, 0, -1000)));
+    std::vector<int> order(3000);
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = static_cast<int>((i * 1237) % order.size());   // a permutation (gcd(1237, 3000) = 1)
+    for (int z : order)
+        le.addFace(square(-0.25f * static_cast<float>(z), 400), "style={fill=red}", "style={fill=blue}", "");
+    auto l = lines(body3(tex(le)));
+    ASSERT_EQ(l.size(), order.size() + 1);
+    // Each square's half size on paper is 5 * 400 / (1000 + 0.25 z): it must grow from line to line.
+    double prev = 0;
+    for (size_t i = 0; i < order.size(); ++i)
+    {
+        auto c = coords(l[i]);
+        ASSERT_EQ(c.size(), 4u) << l[i];
+        EXPECT_GT(c[1].first, prev) << "line " << i;
+        prev = c[1].first;
+    }
+    EXPECT_NEAR(prev, 2.0, 1e-4);   // the nearest square (z = 0)
+}
+
 TEST(LaTeXTikz3D, CrossingFacesAreSplitWithoutDrawingTheCuts)
 {
     LaTeXTikz3D le;

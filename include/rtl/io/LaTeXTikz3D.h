@@ -547,17 +547,55 @@ namespace rtl
             if (polys.empty())
                 return nullptr;
             auto node = std::make_unique<Node>();
+            auto planeOf = [](const Poly &p, V3 &n, double &d) {
+                n = newell(p.v);
+                if (n.dot(p.normal) < 0)
+                    n = -n;
+                n.normalize();
+                V3 centroid = V3::Zero();
+                for (const auto &v : p.v)
+                    centroid += v;
+                d = n.dot(centroid / static_cast<double>(p.v.size()));
+            };
+            // Splitter: the best of up to 5 evenly spaced candidates (balanced sides, few splits), so that e.g. a
+            // stack of parallel faces gives a tree of logarithmic depth instead of a list.
+            size_t best = 0;
+            if (polys.size() > 8)
+            {
+                double best_cost = std::numeric_limits<double>::infinity();
+                for (size_t k = 0; k < 5; ++k)
+                {
+                    size_t c = k * (polys.size() - 1) / 4;
+                    V3 n;
+                    double d;
+                    planeOf(polys[c], n, d);
+                    size_t nf = 0, nb = 0, ns = 0;
+                    for (const auto &p : polys)
+                    {
+                        bool f = false, b = false;
+                        for (const auto &v : p.v)
+                        {
+                            double sd = n.dot(v) - d;
+                            f |= sd > eps;
+                            b |= sd < -eps;
+                        }
+                        nf += f && !b;
+                        nb += b && !f;
+                        ns += f && b;
+                    }
+                    double cost = std::abs(static_cast<double>(nf) - static_cast<double>(nb)) + 3.0 * static_cast<double>(ns);
+                    if (cost < best_cost)
+                    {
+                        best_cost = cost;
+                        best = c;
+                    }
+                }
+            }
+            std::swap(polys[0], polys[best]);
             const Poly &sp = polys.front();
-            V3 n = newell(sp.v);
-            if (n.dot(sp.normal) < 0)
-                n = -n;
-            n.normalize();
-            V3 centroid = V3::Zero();
-            for (const auto &v : sp.v)
-                centroid += v;
-            centroid /= static_cast<double>(sp.v.size());
+            V3 n;
+            planeOf(sp, n, node->d);
             node->n = n;
-            node->d = n.dot(centroid);
             std::vector<Poly> front, back;
             node->polys.push_back(sp);
             for (size_t i = 1; i < polys.size(); ++i)
