@@ -31,9 +31,11 @@ Line fit
 Segmentation
   -s, --segment          run the batch segmenter (the default when neither --vectorize
                          nor --fit is given)
+      --segmenter S      car (batch, the scan as a closed loop; default) | ia (streaming)
       --step N           neighbours compared, >= 1 (default 3)
       --lower M          lower bound of the distance threshold in metres (default 0.1)
       --upper M          upper bound in metres (default 0.5)
+      --scaling K        ia: threshold = K * range, clamped to the bounds (default 0.05)
 
 Vectorization
   -m, --vectorize METHOD ftls | aftls | itls | dp | rw (with --segment: each cluster)
@@ -96,6 +98,8 @@ function parseCommandLine(argv) {
         column: { type: 'string' },
         fit: { type: 'boolean' },
         segment: { type: 'boolean', short: 's' },
+        segmenter: { type: 'string' },
+        scaling: { type: 'string' },
         step: { type: 'string' },
         lower: { type: 'string' },
         upper: { type: 'string' },
@@ -159,6 +163,8 @@ function parseCommandLine(argv) {
     column: num('column', undefined, { min: 0, integer: true }),
     fit: Boolean(v.fit),
     segment: Boolean(v.segment),
+    segmenter: oneOf('segmenter', ['car', 'ia'], 'car'),
+    scaling: num('scaling', 0.05, { min: 0 }),
     step: num('step', 3, { min: 1, integer: true }),
     lower: num('lower', 0.1, { min: 0 }),
     upper: num('upper', 0.5, { min: 0 }),
@@ -184,6 +190,7 @@ function parseCommandLine(argv) {
     if (opts.ring !== undefined && opts.column !== undefined) throw new UsageError('pass either --ring or --column, not both');
   }
   if (opts.type !== 'carmen' && v.scan !== undefined) throw new UsageError('--scan applies to CARMEN logs only');
+  if (v.scaling !== undefined && opts.segmenter !== 'ia') throw new UsageError('--scaling applies to --segmenter ia only');
   if (opts.primitive === 'plane' && opts.method !== 'aftls') throw new UsageError('--primitive plane needs --vectorize aftls');
   if (opts.standalone && opts.format !== 'tikz') throw new UsageError('--standalone applies to --format tikz only');
   return opts;
@@ -273,6 +280,38 @@ function gather(points, dim, indices) {
   return out;
 }
 
+// The streaming (IA) segmenter fed in point order and flushed; its clusters come back as points, mapped to point
+// indices by their exact coordinates (the package returns the doubles it was given).
+function streamSegment(rtl, points, dim, opts) {
+  if (typeof rtl.StreamSegmenter !== 'function') {
+    throw new MissingFeature(`--segmenter ia needs StreamSegmenter, which this build of rtl-wasm (${rtl.version}) does not have`);
+  }
+  const seg = new rtl.StreamSegmenter({ dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper, scaling: opts.scaling });
+  try {
+    seg.addPoints(points);
+    seg.flush();
+    const where = new Map();
+    for (const i of validIndices(points, dim)) {
+      const key = Array.from(points.subarray(i * dim, (i + 1) * dim)).join(',');
+      if (!where.has(key)) where.set(key, []);
+      where.get(key).push(i);
+    }
+    const labels = new Int32Array(points.length / dim).fill(-1);
+    const clusters = seg.takeClosedClusters().map((xyz, k) => {
+      const indices = [];
+      for (let j = 0; j < xyz.length; j += dim) {
+        const i = where.get(Array.from(xyz.subarray(j, j + dim)).join(',')).shift();
+        labels[i] = k;
+        indices.push(i);
+      }
+      return { indices };
+    });
+    return { labels, clusters };
+  } finally {
+    seg.dispose();
+  }
+}
+
 function validIndices(points, dim) {
   const idx = [];
   for (let i = 0; i < points.length / dim; i++) {
@@ -291,10 +330,12 @@ function run(rtl, opts, input) {
   const result = { source: input.source, dim, points: points.length / dim, returns: validIndices(points, dim).length };
   let groups = [{ cluster: null, idx: validIndices(points, dim) }];
   if (opts.segment) {
-    const segment = need(rtl, 'segment', '--segment');
-    const seg = segment(points, { dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper });
+    const seg = opts.segmenter === 'ia'
+      ? streamSegment(rtl, points, dim, opts)
+      : need(rtl, 'segment', '--segment')(points, { dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper });
     result.segmentation = {
-      step: opts.step, lowerBound: opts.lower, upperBound: opts.upper,
+      segmenter: opts.segmenter, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper,
+      ...(opts.segmenter === 'ia' ? { scaling: opts.scaling } : {}),
       labels: Array.from(seg.labels),
       clusters: seg.clusters.map((c) => Array.from(c.indices)),
     };

@@ -28,7 +28,7 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     const scan = scans[2];
     assert.equal(j.points, 180);
     const { labels, clusters, ...params } = j.segmentation;
-    assert.deepEqual(params, { step: 3, lowerBound: 0.1, upperBound: 0.5 });
+    assert.deepEqual(params, { segmenter: 'car', step: 3, lowerBound: 0.1, upperBound: 0.5 });
     assert.equal(labels.length, 180);
     assert.equal(clusters.flat().length, j.returns);
     labels.forEach((l, i) => assert.equal(l >= 0, isReturn(scan.ranges[i]), `beam ${i}`));
@@ -42,6 +42,33 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
       if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
     });
     assert.deepEqual(labels, Array.from(pkg.segment(points).labels));
+  });
+
+  test('--segmenter ia: the clusters of StreamSegmenter fed with the scan, as point index sets', () => {
+    const r = rtl(['tests/data/csail.log', '--scan', '6', '--segmenter', 'ia', '--scaling', '0.08', '--step', '4']);
+    assert.equal(r.code, 0, r.err);
+    const j = JSON.parse(r.out);
+    const { labels, clusters, ...params } = j.segmentation;
+    assert.deepEqual(params, { segmenter: 'ia', step: 4, lowerBound: 0.1, upperBound: 0.5, scaling: 0.08 });
+    const scan = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'))[6];
+    const points = new Float64Array(2 * scan.n).fill(NaN);
+    scan.ranges.forEach((rr, i) => {
+      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
+    });
+    const seg = new pkg.StreamSegmenter({ step: 4, lowerBound: 0.1, upperBound: 0.5, scaling: 0.08 });
+    seg.addPoints(points);
+    seg.flush();
+    const ref = seg.takeClosedClusters();
+    seg.dispose();
+    assert.deepEqual(clusters.map((c) => c.length), ref.map((c) => c.length / 2));
+    clusters.forEach((c, k) => c.forEach((i, q) => {
+      assert.equal(labels[i], k);
+      assert.ok(Math.abs(points[2 * i] - ref[k][2 * q]) < 1e-9 && Math.abs(points[2 * i + 1] - ref[k][2 * q + 1]) < 1e-9, `cluster ${k} point ${q}`);
+    }));
+    assert.equal(clusters.flat().length, j.returns, 'after the flush every return is in a closed cluster');
+    const bad = rtl(['tests/data/csail.log', '--scaling', '0.1']);
+    assert.equal(bad.code, 2);
+    assert.match(bad.err, /--scaling applies to --segmenter ia only/);
   });
 
   test('tighter bounds and a step of 1 cut more clusters', () => {
