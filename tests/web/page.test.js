@@ -20,7 +20,7 @@ describe('demo page (web/index.html) in Chromium: scans and the TLS line fit', {
     browser = await launchBrowser();
     page = browser.context.pages()[0] ?? await browser.context.newPage();
     problems = watchConsole(page);
-    await page.goto(server.pageUrl);
+    await page.goto(`${server.origin}/web/index.html`);   // the file itself, as issue 2 asks (/web/ serves it too)
     await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
   });
 
