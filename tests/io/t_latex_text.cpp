@@ -573,6 +573,26 @@ TEST(LaTeXTikz3D, AxesAreCroppedToTheRegionAndLabelled)
     EXPECT_EQ(body3(tex(empty)), "\\end{scope}\n");
 }
 
+TEST(LaTeXTikz3D, RepeatedWritesAreIdenticalAndFollowTheView)
+{
+    LaTeXTikz3D le;
+    le.addFace(square(0, 1), "style={fill=green}", "style={fill=gray}", "style={draw=black}");
+    le.addMark(Vector3f(0, 0, 1), "style={fill=red}", LaTeXTikz3D::latex_mark_dot);
+    le.setView(40, Vector3f(1, 1, -1));
+    std::string first = tex(le);
+    EXPECT_EQ(tex(le), first);   // writing does not change the scene (LaTeXDoc grids write one object many times)
+    le.setView(40, Vector3f(-1, 1, -1));
+    std::string other = tex(le);
+    EXPECT_NE(other, first);
+    le.setView(40, Vector3f(1, 1, -1));
+    EXPECT_EQ(tex(le), first);
+    LaTeXTikz2D le2;
+    le2.addPlot(std::vector<Vector2f>{{0, 0}, {1, 2}}, "style={draw=black}", "style={fill=red}",
+                LaTeXTikz2D::latex_mark_dot);
+    std::string f2 = tex(le2);
+    EXPECT_EQ(tex(le2), f2);
+}
+
 TEST(LaTeXTable, WritesTheDocumentedLayout)
 {
     LaTeXTable t;
