@@ -31,7 +31,6 @@ const fmtMs = (t) => (!Number.isFinite(t) ? '–' : t < 0.1 ? '< 0.1 ms' : `${t.
 const state = {
   rtl: null,
   scans: {},          // dataset -> parsed scans (from the package's CARMEN reader)
-  texts: {},          // dataset -> raw log text (kept for the tests' independent check)
   dataset: 'intel',
   scanIndex: 0,
   fitCluster: null,   // index of the clicked cluster, or null for the beam window
@@ -132,7 +131,6 @@ async function loadDataset(name) {
     return state.scans[name];
   }
   const text = await res.text();
-  state.texts[name] = text;
   state.scans[name] = state.rtl.readCarmenLog(text);
   return state.scans[name];
 }
