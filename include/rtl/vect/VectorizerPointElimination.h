@@ -99,15 +99,27 @@ namespace rtl
             const VectorType u = pts[b] - pa;
             const Element l2 = u.lengthSquared();
             size_t best = 0;
-            if constexpr (dimensions == 2)
+            if constexpr (dimensions == 2 || dimensions == 3)
             {
                 if (l2 > Element(0))
                 {
-                    // Compare cross^2 against eps^2 * |u|^2: no division or root per point. Blocks of 8 points
-                    // first get their maximum without branches (vectorisable); only a block that beats the best so
-                    // far is rescanned for its first maximal index.
+                    // Compare |(p - a) x u|^2 against eps^2 * |u|^2: no division or root per point. Blocks of 8
+                    // points first get their maximum without branches (vectorisable); only a block that beats the
+                    // best so far is rescanned for its first maximal index.
                     Element best_c = eps2 * l2;
-                    const Element ux = u[0], uy = u[1], ax = pa[0], ay = pa[1];
+                    const auto cross2 = [&](const VectorType &p) {
+                        if constexpr (dimensions == 2)
+                        {
+                            const Element c = (p[0] - pa[0]) * u[1] - (p[1] - pa[1]) * u[0];
+                            return c * c;
+                        }
+                        else
+                        {
+                            const Element vx = p[0] - pa[0], vy = p[1] - pa[1], vz = p[2] - pa[2];
+                            const Element cx = vy * u[2] - vz * u[1], cy = vz * u[0] - vx * u[2], cz = vx * u[1] - vy * u[0];
+                            return cx * cx + cy * cy + cz * cz;
+                        }
+                    };
                     size_t i = a + 1;
                     constexpr size_t block = 8;
                     Element c2[block];
@@ -116,8 +128,7 @@ namespace rtl
                         Element m = 0;
                         for (size_t k = 0; k < block; ++k)
                         {
-                            const Element c = (pts[i + k][0] - ax) * uy - (pts[i + k][1] - ay) * ux;
-                            c2[k] = c * c;
+                            c2[k] = cross2(pts[i + k]);
                             m = m > c2[k] ? m : c2[k];
                         }
                         if (m > best_c)
@@ -126,8 +137,8 @@ namespace rtl
                     }
                     for (; i < b; ++i)
                     {
-                        const Element c = (pts[i][0] - ax) * uy - (pts[i][1] - ay) * ux;
-                        if (c * c > best_c) { best_c = c * c; best = i; }
+                        const Element c = cross2(pts[i]);
+                        if (c > best_c) { best_c = c; best = i; }
                     }
                     return best;
                 }
@@ -219,6 +230,12 @@ namespace rtl
             {
                 const Element c = (p[0] - a[0]) * u[1] - (p[1] - a[1]) * u[0];
                 return c * c;
+            }
+            else if constexpr (dimensions == 3)
+            {
+                const Element vx = p[0] - a[0], vy = p[1] - a[1], vz = p[2] - a[2];
+                const Element cx = vy * u[2] - vz * u[1], cy = vz * u[0] - vx * u[2], cz = vx * u[1] - vy * u[0];
+                return cx * cx + cy * cy + cz * cz;
             }
             else
             {
