@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,7 +86,7 @@ void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::v
   for (const auto& s : segs) {
     const Vec<D> e = s.end();
     do ++j;
-    while (j < pts.size() && std::memcmp(pts[j].data().data(), e.data().data(), sizeof(double) * D) != 0);
+    while (j < pts.size() && pts[j].data() != e.data());  // inputs are finite: == is exact equality
     if (j >= pts.size()) throw std::logic_error("vectorize: a simplified vertex is not an input point");
     keys.push_back(j);
   }
