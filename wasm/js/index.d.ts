@@ -109,7 +109,9 @@ export interface VectorizeResult {
   segments: Float64Array;
   /** planes: polygon k's vertices (3 numbers each); lines: empty array */
   polygons: Float64Array[];
-  /** half-open point-index range of each segment: [first0, end0, first1, end1, ...] (2*count) */
+  /** half-open point-index range of each segment: [first0, end0, first1, end1, ...] (2*count). TLS methods: the
+   *  ranges their lines were fitted to (consecutive, covering the chain). dp/rw: [key_k, key_k+1 + 1), the span between
+   *  two kept points, both included (neighbouring spans share their kept point). */
   indices: Uint32Array;
   /**
    * fitted primitive of each range, `stride` numbers each:
