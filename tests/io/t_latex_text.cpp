@@ -2,7 +2,10 @@
 // depth order, tables. (t_io_latex_pdf compiles such output with the real pdflatex.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -18,16 +21,35 @@ using rtl::Vector3f;
 
 namespace
 {
+    //! Every distinct document and table the tests below write; the last test compiles them all with pdflatex.
+    std::vector<std::string> &written()
+    {
+        static std::vector<std::string> docs;
+        return docs;
+    }
+    std::vector<std::pair<LaTeXTable, std::string>> &writtenTables()
+    {
+        static std::vector<std::pair<LaTeXTable, std::string>> tables;
+        return tables;
+    }
+    void remember(std::vector<std::string> &list, const std::string &text)
+    {
+        if (std::find(list.begin(), list.end(), text) == list.end())
+            list.push_back(text);
+    }
+
     std::string tex(LaTeXTikz2D &le)
     {
         std::ostringstream os;
         le.writeTEX(os);
+        remember(written(), os.str());
         return os.str();
     }
     std::string tex(LaTeXTikz3D &le)
     {
         std::ostringstream os;
         le.writeTEX(os);
+        remember(written(), os.str());
         return os.str();
     }
     //! The primitives: the text between the last setup line and \end{tikzpicture}.
@@ -168,7 +190,7 @@ TEST(LaTeXTikz2D, DocumentFrameAndScale)
     EXPECT_EQ(doc.rfind("\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
                         "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
                         "\\setlength\\PreviewBorder{0.5cm}\n", 0), 0u);
-    EXPECT_NE(doc.find("\\begin{tikzpicture}[xscale=2, yscale=2,\n\tStyleA/.style={draw=red}]"), std::string::npos);
+    EXPECT_NE(doc.find("\\begin{tikzpicture}[x=2cm, y=2cm,\n\tStyleA/.style={draw=red}]"), std::string::npos);
     EXPECT_NE(doc.find("\\pgfmathsetmacro{\\MaxX}{3}\n\\pgfmathsetmacro{\\MinX}{-1}\n\\pgfmathsetmacro{\\MaxY}{2}\n"
                        "\\pgfmathsetmacro{\\MinY}{0}\n\\pgfmathsetmacro{\\MarkGlobalScaleX}{0.5}\n"
                        "\\pgfmathsetmacro{\\MarkGlobalScaleY}{0.5}\n"), std::string::npos);
@@ -246,8 +268,8 @@ TEST(LaTeXTikz2D, PlotLinesBreakAtNaNAndMarksFollowTheDirection)
     std::vector<float> x = {0, 1, 2, NAN, 3, 4}, y = {0, 1, 1, 5, 2, 2};
     le.addPlot(x, y, "style={draw=black}", "style={fill=red}", LaTeXTikz2D::latex_mark_robot, 2.0f);
     std::string doc = tex(le);
-    EXPECT_NE(doc.find("\\newcommand{\\MarkA}[3]{\\begin{scope}[shift={(#1,#2)}, xscale=\\MarkGlobalScaleX, "
-                       "yscale=\\MarkGlobalScaleY, rotate=#3, scale=2] \\filldraw[StyleB] (0,0) circle (\\MarkRadius); "
+    EXPECT_NE(doc.find("\\newcommand{\\MarkA}[3]{\\begin{scope}[shift={(#1,#2)}, x=1cm, "
+                       "y=1cm, rotate=#3, scale=2] \\filldraw[StyleB] (0,0) circle (\\MarkRadius); "
                        "\\draw[StyleB] (0,0) -- (2*\\MarkRadius,0); \\end{scope}}"),
               std::string::npos);
     auto l = lines(body2(doc));
@@ -292,8 +314,8 @@ TEST(LaTeXTikz2D, MarkTemplatesAndPaperAngles)
     le.addPlot(std::vector<Vector2f>{{0, 0}}, "", "style={draw=blue}", LaTeXTikz2D::latex_mark_cross);   // reused
     std::string doc = tex(le);
     EXPECT_NE(doc.find("\\draw[StyleA] (-\\MarkRadius,-\\MarkRadius) -- (\\MarkRadius,\\MarkRadius)"), std::string::npos);
-    EXPECT_NE(doc.find("\\newcommand{\\MarkB}[3]{\\begin{scope}[shift={(#1,#2)}, xscale=\\MarkGlobalScaleX, "
-                       "yscale=\\MarkGlobalScaleY, rotate=#3, scale=1] \\draw[StyleA] (0,-\\MarkRadius) -- "
+    EXPECT_NE(doc.find("\\newcommand{\\MarkB}[3]{\\begin{scope}[shift={(#1,#2)}, x=1cm, y=1cm, rotate=#3, "
+                       "scale=1] \\draw[StyleA] (0,-\\MarkRadius) -- "
                        "(0,\\MarkRadius); \\end{scope}}"), std::string::npos);
     EXPECT_NE(doc.find("\\filldraw[StyleA] (0,0) circle (\\MarkRadius);"), std::string::npos);
     EXPECT_EQ(count(doc, "\\newcommand"), 3u);
@@ -301,8 +323,8 @@ TEST(LaTeXTikz2D, MarkTemplatesAndPaperAngles)
     ASSERT_EQ(l.size(), 5u);
     EXPECT_EQ(l[0], "\\MarkA{0}{0}{26.5651}");
     EXPECT_EQ(l[4], "\\MarkA{0}{0}{0}");
-    EXPECT_EQ(optionValue(doc, "xscale"), 10);
-    EXPECT_EQ(optionValue(doc, "yscale"), 5);
+    EXPECT_EQ(optionValue(doc, "[x"), 10);
+    EXPECT_EQ(optionValue(doc, " y"), 5);
 }
 
 TEST(LaTeXTikz2D, GridsAxesAndDescriptions)
@@ -342,8 +364,8 @@ TEST(LaTeXTikz2D, LogAxesAndClipping)
     le.setClipRegion(1, -1, 1000, 3);
     std::string doc = tex(le);
     EXPECT_NE(doc.find("\\clip (0,-1) rectangle (3,3);"), std::string::npos);
-    EXPECT_EQ(optionValue(doc, "xscale"), 10.0 / 3.0 > 3.33332 ? optionValue(doc, "xscale") : -1);
-    EXPECT_NEAR(optionValue(doc, "xscale"), 10.0 / 3.0, 1e-4);   // fitted to the clip region
+    EXPECT_EQ(optionValue(doc, "[x"), 10.0 / 3.0 > 3.33332 ? optionValue(doc, "[x") : -1);
+    EXPECT_NEAR(optionValue(doc, "[x"), 10.0 / 3.0, 1e-4);   // fitted to the clip region
     EXPECT_NE(doc.find("\\draw[StyleA] (0,0) -- (1,1) -- (2,2);"), std::string::npos);
     EXPECT_NE(doc.find("node[anchor=north] {$10^{2}$}"), std::string::npos);
     EXPECT_NE(doc.find("node[anchor=north] {$10^{0}$}"), std::string::npos);
@@ -361,10 +383,10 @@ TEST(LaTeXTikz2D, ClearDataAndClearAll)
     std::string doc = tex(le);
     EXPECT_EQ(doc.find("ColorA"), std::string::npos);
     EXPECT_NE(doc.find("StyleA/.style={draw=blue}"), std::string::npos);
-    EXPECT_EQ(optionValue(doc, "xscale"), 2);   // size 4 kept
+    EXPECT_EQ(optionValue(doc, "[x"), 2);   // size 4 kept
     le.clearAll();
     le.addLine(Vector2f(0, 0), Vector2f(2, 2), "style={draw=blue}");
-    EXPECT_EQ(optionValue(tex(le), "xscale"), 5);   // size back to 10
+    EXPECT_EQ(optionValue(tex(le), "[x"), 5);   // size back to 10
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -426,9 +448,9 @@ TEST(LaTeXTikz3D, ManyParallelFacesInRandomOrderArePaintedFarToNear)
 {
     LaTeXTikz3D le;
     le.setView(90, rtl::RigidTf3f(0.0f, Vector3f(0, 0, 1), Vector3f(0, 0, -1000)));
-    std::vector<int> order(3000);
+    std::vector<int> order(400);
     for (size_t i = 0; i < order.size(); ++i)
-        order[i] = static_cast<int>((i * 1237) % order.size());   // a permutation (gcd(1237, 3000) = 1)
+        order[i] = static_cast<int>((i * 1237) % order.size());   // a permutation (gcd(1237, 400) = 1)
     for (int z : order)
         le.addFace(square(-0.25f * static_cast<float>(z), 400), "style={fill=red}", "style={fill=blue}", "");
     auto l = lines(body3(tex(le)));
@@ -606,6 +628,7 @@ TEST(LaTeXTable, WritesTheDocumentedLayout)
     t.addRowRaw({"$10^{3}$", "1"});
     std::ostringstream os;
     t.writeTable(os, "segments & stats");
+    writtenTables().emplace_back(t, "segments & stats");
     EXPECT_EQ(os.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{c|c}\n"
                         "\tname\\_1 & 50\\% \\\\\n\t\\hline\n\ta\\&b & \\{x\\} \\\\\n\t$10^{3}$ & 1 \\\\\n"
                         "\\end{tabular}\n\\end{center}\n\\caption{segments \\& stats}\n\\end{table}\n\n");
@@ -613,6 +636,60 @@ TEST(LaTeXTable, WritesTheDocumentedLayout)
     u.addRow({"1", "2", "3"});
     std::ostringstream os2;
     u.writeTable(os2, "");
+    writtenTables().emplace_back(u, "");
     EXPECT_EQ(os2.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{ccc}\n\t1 & 2 & 3 \\\\\n"
                          "\\end{tabular}\n\\end{center}\n\\end{table}\n\n");
+}
+
+// Keep this test last: it compiles what the tests above wrote (one pdflatex run, figures \input into one document).
+namespace
+{
+    //! A figure for LaTeXDoc::addLE that is already written text.
+    struct WrittenFigure
+    {
+        std::string text;
+        void writeTEX(const std::string &file) const { std::ofstream(file) << text; }
+    };
+}
+
+TEST(LaTeXTextCompiles, EveryDocumentAndTableWrittenAboveCompilesWithPdflatex)
+{
+    ASSERT_TRUE(rtl::LaTeXDoc::pdflatexAvailable())
+            << "pdflatex is not on PATH: the LaTeX tests need it (install texlive-latex-base texlive-pictures "
+               "texlive-latex-extra poppler-utils; ./run test does)";
+    ASSERT_GE(written().size(), 20u) << "run the whole test program: this test compiles what the others wrote";
+    ASSERT_EQ(writtenTables().size(), 2u);
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / "text";
+    fs::remove_all(dir);
+    fs::remove_all(dir.string() + "_tmp_text");
+    bool ok;
+    std::string tmp;
+    {
+        rtl::LaTeXDoc doc(dir.string(), "text");
+        doc.setInlineFigures(true);
+        doc.setRemoveTmpDir([](const std::string &) { return true; });
+        for (const auto &d : written())
+        {
+            WrittenFigure f{d};
+            doc.addLE(f, "a figure of t_latex_text");
+        }
+        for (const auto &t : writtenTables())
+            doc.addTable(t.first, t.second);
+        tmp = doc.tmpDir();
+        ok = doc.finish();
+        EXPECT_TRUE(doc.problems().empty()) << doc.problems().front();
+    }
+    EXPECT_TRUE(ok);
+    std::ifstream log(fs::path(tmp) / "text.log");
+    std::string line, errors;
+    int context = 0;
+    while (std::getline(log, line))
+    {
+        if (!line.empty() && line[0] == '!')
+            context = 3;
+        if (context-- > 0)
+            errors += line + "\n";
+    }
+    EXPECT_EQ(errors, "");
 }

@@ -21,18 +21,19 @@ namespace rtl
 {
     //! Collects 2D primitives in data coordinates and writes them as one standalone tikzpicture.
     //!
-    //! TikZ conventions (kept from the published RTL so that figures look the same):
+    //! TikZ conventions (those of the published RTL, so figures look the same; deviations are marked "rather than"):
     //! - The document is `minimal` with xcolor[rgb], tikz and preview[active,tightpage] (\PreviewBorder = border), so
     //!   the PDF page is cropped to the picture.
-    //! - The picture works in data units: `xscale`/`yscale` map the data range (or the clip region) to the requested
-    //!   size in cm, times the user scales. TeX limits dimensions to about 16000 pt, so data coordinates must stay
-    //!   within roughly +-500 units; rescale the data beforehand for larger ranges.
-    //! - Style arguments are TikZ key/value text starting with "style=", e.g. "style={draw=gray,dotted}". Each distinct
-    //!   string is defined once as `StyleA/.style={...}` in the picture options and used as `\draw[StyleA]`. Colours
-    //!   from saveColor become `\definecolor{ColorA}{...}`. Names count A, B, ..., J, BA, BB, ... (digits as letters).
-    //! - Marks are `\newcommand{\MarkA}[3]{...}` (x, y, rotation in degrees) drawn in a scope shifted to (x, y) and
-    //!   scaled by \MarkGlobalScaleX/Y = 1/xscale, 1/yscale, so marks are \MarkRadius cm in size whatever the axis
-    //!   scaling. Along a polyline each mark is rotated to the local direction (as seen on paper).
+    //! - The picture works in data units: the unit vectors `x=<sx>cm, y=<sy>cm` map the data range (or the clip
+    //!   region) to the requested size, times the user scales (scaleX()/scaleY() report sx, sy). Unit vectors rather
+    //!   than xscale/yscale, because TikZ multiplies a coordinate by the unit vector before any transformation: with
+    //!   xscale, a coordinate above ~575 (x 1 cm) overflows TeX's 16384 pt, with x=<sx>cm only the paper position
+    //!   counts. Remaining TeX limit: sx, sy <= ~575 cm per unit, i.e. a 10 cm axis needs a data range >= ~0.02.
+    //! - The picture always contains the data frame (\MinX,\MinY)-(\MaxX,\MaxY) as an invisible path.
+    //! - Marks are `\newcommand{\MarkA}[3]{...}` (x, y, rotation in degrees) drawn in a scope shifted to (x, y) that
+    //!   resets the unit vectors to 1 cm, so marks are \MarkRadius cm in size whatever the axis scaling.
+    //!   \MarkGlobalScaleX/Y (= 1/sx, 1/sy: cm to data units) stay defined for hand-written TikZ. Along a polyline
+    //!   each mark is rotated to the local direction (as seen on paper).
     //! - On log10 axes every coordinate is replaced by its log10 before it is tracked or drawn (non-positive values
     //!   are dropped); grid and axis ticks are then given in decades. Non-finite points are skipped and break lines.
     //! - User text (addText, descriptions) is escaped; number labels come from numberToLatexString.
@@ -162,8 +163,8 @@ namespace rtl
         {
             Frame f = frame();
             std::string out;
-            out += "\\begin{tikzpicture}[xscale=" + latex_detail::number(f.sx) + ", yscale=" +
-                   latex_detail::number(f.sy);
+            out += "\\begin{tikzpicture}[x=" + latex_detail::number(f.sx) + "cm, y=" + latex_detail::number(f.sy) +
+                   "cm";
             for (const auto &name_style : style_order)
                 out += ",\n\t" + name_style.first + "/." + name_style.second;
             out += "]\n";
@@ -175,6 +176,9 @@ namespace rtl
             out += "\\pgfmathsetmacro{\\MinY}{" + latex_detail::number(f.min_y) + "}\n";
             out += "\\pgfmathsetmacro{\\MarkGlobalScaleX}{" + latex_detail::number(1.0 / f.sx) + "}\n";
             out += "\\pgfmathsetmacro{\\MarkGlobalScaleY}{" + latex_detail::number(1.0 / f.sy) + "}\n";
+            // The data frame as an invisible path: the picture is never empty (an empty one has zero size, which
+            // \resizebox cannot scale) and always covers the plot region.
+            out += "\\path (\\MinX,\\MinY) rectangle (\\MaxX,\\MaxY);\n";
             out += "\\pgfmathsetmacro{\\MarkRadius}{" + latex_detail::number(mark_radius) + "}\n";
             for (const auto &m : mark_order)
                 out += m;
@@ -482,8 +486,8 @@ namespace rtl
             for (size_t p = body.find(var); p != std::string::npos; p = body.find(var, p + style_name.size()))
                 body.replace(p, var.size(), style_name);
             mark_order.push_back("\\newcommand{" + name +
-                                 "}[3]{\\begin{scope}[shift={(#1,#2)}, xscale=\\MarkGlobalScaleX, "
-                                 "yscale=\\MarkGlobalScaleY, rotate=#3, scale=" + latex_detail::number(scale) + "] " +
+                                 "}[3]{\\begin{scope}[shift={(#1,#2)}, x=1cm, y=1cm, rotate=#3, scale=" +
+                                 latex_detail::number(scale) + "] " +
                                  body + " \\end{scope}}\n");
             return name;
         }
