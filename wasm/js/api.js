@@ -87,15 +87,6 @@ function boundsOptions(o, fn, lowerDefault, upperDefault) {
   return [lower, upper];
 }
 
-// Half-open runs [b0, e0, b1, e1, ...] of consecutive values in an index list.
-function runs(idx) {
-  const r = [];
-  for (let i = 0; i < idx.length; i++) {
-    if (i === 0 || idx[i] !== idx[i - 1] + 1) r.push(idx[i], idx[i] + 1);
-    else r[r.length - 1] = idx[i] + 1;
-  }
-  return Uint32Array.from(r);
-}
 
 const ERRORS = { TypeError, RangeError, Error };
 const DISPOSE = Symbol.dispose ?? Symbol.for('Symbol.dispose');
@@ -349,7 +340,7 @@ function wrap(m) {
     const clusters = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
       const indices = r.indices.subarray(r.offsets[k], r.offsets[k + 1]);
-      clusters.push({ indices, ranges: runs(indices) });
+      clusters.push({ indices, ranges: r.runs.subarray(r.runOffsets[k], r.runOffsets[k + 1]) });
     }
     return { labels: r.labels, clusters };
   }

@@ -33,6 +33,8 @@ struct SegmentOutput {
   std::vector<std::int32_t> labels;        // per point, -1 for gaps
   std::vector<std::uint32_t> indices;      // all clusters' point indices, cluster after cluster
   std::vector<std::uint32_t> offsets;      // cluster k = indices[offsets[k] .. offsets[k+1])
+  std::vector<std::uint32_t> runs;         // contiguous half-open index runs [b, e) of all clusters, flattened
+  std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
 };
 
 template <int D>
@@ -53,14 +55,19 @@ SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p) 
   out.labels.assign(n, -1);
   out.indices.reserve(n);
   out.offsets.push_back(0);
+  out.runOffsets.push_back(0);
   while (seg.clustersAvailable() > 0) {
     const auto c = seg.grabCluster();
     const auto label = static_cast<std::int32_t>(out.offsets.size() - 1);
-    for (const auto& q : c) {
-      out.labels[q.index] = label;
-      out.indices.push_back(q.index);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const std::uint32_t i = c[k].index;
+      out.labels[i] = label;
+      out.indices.push_back(i);
+      if (k > 0 && i == out.runs.back()) ++out.runs.back();
+      else out.runs.insert(out.runs.end(), {i, i + 1});
     }
     out.offsets.push_back(static_cast<std::uint32_t>(out.indices.size()));
+    out.runOffsets.push_back(static_cast<std::uint32_t>(out.runs.size()));
   }
   return out;
 }

@@ -25,6 +25,8 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
     r.set("labels", i32(out.labels));
     r.set("indices", u32(out.indices));
     r.set("offsets", u32(out.offsets));
+    r.set("runs", u32(out.runs));
+    r.set("runOffsets", u32(out.runOffsets));
     r.set("computeMs", computeMs);
     return r;
   });
