@@ -270,6 +270,33 @@ TEST(Stream, AliveClustersAndStepChanges)
     EXPECT_EQ(ia.aliveClustersAvailable(), 0u);
 }
 
+TEST(Stream, LongClustersStayInOrder)
+{
+    // clusters longer than the step-1 staging block, observed while they grow, with step changes mid-cluster
+    rtl::IA_Segmenter<V2d> ia(1, 0.05, 0.05, 0.0);
+    auto point = [](int i) { return i < 1000 ? V2d(0.01 * i, 0) : V2d(0.01 * i, 5); };
+    for (int i = 0; i < 1700; ++i)
+    {
+        if (i == 800) ia.setStepSize(3);
+        if (i == 900) ia.setStepSize(1);
+        ia.addPoint(point(i));
+        if (i == 600 || i == 850 || i == 1500)
+        {
+            ASSERT_EQ(ia.aliveClustersAvailable(), 1u);
+            const auto &c = ia.aliveClusters().begin()->second;
+            const size_t window = i == 850 ? 3 : 1, first = i < 1000 ? 0 : 1000;
+            ASSERT_EQ(c.size(), static_cast<size_t>(i) + 1 - window - first);
+            for (size_t k = 0; k < c.size(); ++k) ASSERT_EQ(c[k], point(static_cast<int>(first + k))) << k;
+        }
+    }
+    ia.flush();
+    const auto a = ia.grabCluster(), b = ia.grabCluster();
+    ASSERT_EQ(a.size(), 1000u);
+    ASSERT_EQ(b.size(), 700u);
+    for (int i = 0; i < 1000; ++i) ASSERT_EQ(a[static_cast<size_t>(i)], point(i));
+    for (int i = 0; i < 700; ++i) ASSERT_EQ(b[static_cast<size_t>(i)], point(1000 + i));
+}
+
 TEST(BadInput, EmptySingleAllNan)
 {
     rtl::CAR_Segmenter<V2f> car;

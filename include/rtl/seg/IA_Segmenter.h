@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <deque>
 #include <limits>
@@ -56,7 +57,11 @@ namespace rtl
 
         [[nodiscard]] size_t closedClustersAvailable() const { return closed_.size(); }
         [[nodiscard]] size_t aliveClustersAvailable() const { return alive_.size(); }
-        [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const { return alive_; }
+        [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const
+        {
+            flushStage();
+            return alive_;
+        }
 
         void addPoint(const VectorType &pt, const VectorType &origin = VectorType::zeros())
         {
@@ -178,7 +183,20 @@ namespace rtl
         {
             const size_t prev = wrec_[0];
             if (valid && prev != none && seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
-                pushAlive(recs_[prev], wpts_[0], widx_[0]);
+            {
+                if (prev == stage_rec_)
+                {
+                    stage_[staged_++] = wpts_[0];
+                    if (staged_ == stage_.size()) flushStage();
+                }
+                else
+                {
+                    flushStage();
+                    Record &R = recs_[prev];
+                    pushAlive(R, wpts_[0], widx_[0]);
+                    stage_rec_ = R.contiguous ? prev : none;
+                }
+            }
             else
             {
                 if (count_ == 1) evict(0);
@@ -244,6 +262,7 @@ namespace rtl
         {
             const size_t r = wrec_[slot];
             if (r == none) return;
+            if (r == stage_rec_) flushStage();
             wrec_[slot] = none;
             Record &R = recs_[r];
             if (!R.has_alive && R.in_window == 1)
@@ -265,12 +284,25 @@ namespace rtl
                 alive_.erase(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
+                if (r == stage_rec_) stage_rec_ = none;
             }
+        }
+
+        // Step 1 streams the points of one cluster into a small staging array first, and appends them to the alive
+        // list in blocks: a push_back per point would chain four dependent loads (record, map node, vector end).
+        // Everything that reads or changes alive lists flushes it first.
+        void flushStage() const
+        {
+            if (staged_ == 0) return;
+            std::vector<VectorType> &v = recs_[stage_rec_].alive->second;
+            v.insert(v.end(), stage_.begin(), stage_.begin() + static_cast<std::ptrdiff_t>(staged_));
+            staged_ = 0;
         }
 
         // Merges two clusters that both have window points; the older id survives. Returns the survivor's record.
         size_t merge(size_t a, size_t b)
         {
+            flushStage();
             const size_t keep = recs_[a].id < recs_[b].id ? a : b, gone = keep == a ? b : a;
             for (size_t w = 0; w < step_; ++w)
                 if (wrec_[w] == gone) wrec_[w] = keep;
@@ -342,6 +374,8 @@ namespace rtl
         void resizeWindow(size_t step)
         {
             if (step == step_ && !wrec_.empty()) return;
+            flushStage();
+            stage_rec_ = none;
             // the oldest points that do not fit leave first, in stream order
             size_t k = 0;
             for (; count_ - k > step; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
@@ -377,6 +411,9 @@ namespace rtl
         AliveMap alive_;
         std::deque<std::vector<VectorType>> closed_;
         std::vector<std::vector<VectorType>> pool_;             // emptied alive lists, capacity kept
+        size_t stage_rec_ = none;                               // record of the staged points (step 1)
+        mutable std::array<VectorType, 256> stage_;             // its newest alive points, not yet in alive_
+        mutable size_t staged_ = 0;
         size_t next_id_ = 0, stream_ = 0;
     };
 }
