@@ -93,6 +93,14 @@ namespace
     static_assert(VariantResultType<>::alternatives_cnt == 0);
     static_assert(!std::is_default_constructible_v<VariantResultType<Translation2f, RigidTf2f>>);
 
+    // random() is SFINAE-friendly: it accepts only nullary callables, so has_random reports the truth (rtl-api §2.3 row
+    // "random" = T for every transformation, F for a non-callable or void generator).
+    static_assert(rtl::has_random_v<Translation2f> && rtl::has_random_v<Rotation2f> && rtl::has_random_v<RigidTf2f>);
+    static_assert(rtl::has_random_v<rtl::RigidTfND<4, double>, tf_test::Gen>);
+    static_assert(!rtl::has_random_v<RigidTf2f, int> && !rtl::has_random_v<rtl::Rotation3d, void>);
+    static_assert(!rtl::has_random_v<rtl::Translation3f, tf_test::Gen, tf_test::Gen>);
+    static_assert(rtl::has_random_v<GTf, tf_test::Gen> && rtl::has_random_v<GTf, tf_test::Gen, tf_test::Gen>);
+
     // GeneralTf construction and assignment are constrained to its alternatives.
     static_assert(std::is_convertible_v<Rotation2f, GTf>);
     static_assert(!std::is_convertible_v<rtl::Rotation3f, GTf>);

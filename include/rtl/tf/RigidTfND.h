@@ -104,7 +104,7 @@ namespace rtl
         static ChildType identity() { return ChildType(); }
 
         //! (RotationType::random(g), TranslationType::random(g)), rotation drawn first.
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static ChildType random(const ElRndSrc &el_rnd_gen)
         {
             RotationType rot = RotationType::random(el_rnd_gen);

@@ -110,7 +110,7 @@ namespace rtl
 
         //! The rotation taking one random vector's direction to another's; each vector element is
         //! static_cast<Element>(el_rnd_gen()), first vector first.
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static ChildType random(const ElRndSrc &el_rnd_gen)
         {
             typename VectorType::EigenType e1, e2;

@@ -90,7 +90,7 @@ namespace rtl
         static ChildType identity() { return ChildType(VectorType(typename VectorType::EigenType(VectorType::EigenType::Zero()))); }
 
         //! Every element is static_cast<Element>(el_rnd_gen()), drawn in index order.
-        template<class ElRndSrc>
+        template<class ElRndSrc, typename = std::enable_if_t<std::is_invocable_v<const ElRndSrc &>>>
         static ChildType random(const ElRndSrc &el_rnd_gen)
         {
             typename VectorType::EigenType e;
