@@ -96,3 +96,25 @@ test('TfTree errors on a live tree, which keeps working', () => {
   nearArray(t.transformPoints('r', 'a', [0, 0, 0]), [1, 2, 3], 0);
   t.dispose();
 });
+
+test('TfTree: forgotten trees are freed by the FinalizationRegistry (child process, --expose-gc)', { timeout: 60_000 }, async () => {
+  const { execFileSync } = await import('node:child_process');
+  const { fileURLToPath } = await import('node:url');
+  const script = `
+    import init from 'rtl-wasm';
+    const rtl = await init();
+    const make = () => { for (let i = 0; i < 100; i++) { const t = new rtl.TfTree('root', { dim: 3 });
+      for (let k = 0; k < 50; k++) t.insert('f' + k, k ? 'f' + (k - 1) : 'root', { angle: 0.1, axis: [0, 0, 1], translation: [k, 0, 0] }); } };
+    const settle = async () => { for (let k = 0; k < 4; k++) { globalThis.gc(); await new Promise((r) => setTimeout(r, 30)); } };
+    make(); await settle();
+    const base = rtl.heapInUse();
+    make();
+    const grown = rtl.heapInUse();
+    for (let k = 0; k < 10 && rtl.heapInUse() > base; k++) await settle();
+    console.log(JSON.stringify({ base, grown, after: rtl.heapInUse() }));`;
+  const out = execFileSync(process.execPath, ['--expose-gc', '--input-type=module', '-e', script],
+    { cwd: fileURLToPath(new URL('../..', import.meta.url)), encoding: 'utf8' });
+  const { base, grown, after } = JSON.parse(out);
+  assert.ok(grown > base + 100 * 50 * 100, `100 live trees of 50 frames hold memory (${base} -> ${grown})`);
+  assert.ok(after <= base, `all freed after GC: ${after} <= ${base}`);
+});
