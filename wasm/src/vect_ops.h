@@ -39,11 +39,13 @@ namespace detail {
 template <int D>
 using Vec = rtl::VectorND<D, double>;
 
+// One pass, no zero-initialisation first (VectorND's default constructor zeroes).
 template <int D>
 std::vector<Vec<D>> points(const double* xyz, std::size_t n) {
-  std::vector<Vec<D>> v(n);
+  std::vector<Vec<D>> v;
+  v.reserve(n);
   for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < D; ++k) v[i][static_cast<std::size_t>(k)] = xyz[D * i + static_cast<std::size_t>(k)];
+    v.emplace_back(typename Vec<D>::EigenType(Eigen::Map<const typename Vec<D>::EigenType>(xyz + D * i)));
   return v;
 }
 
