@@ -1,6 +1,7 @@
 // Uses each module through its umbrella header, as code written against the published RTL does,
 // and checks a few numbers so that a broken install fails loudly instead of merely compiling.
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <vector>
 
@@ -34,9 +35,13 @@ int main()
         float r = i < 180 ? 2.0f : 6.0f;
         scan.emplace_back(r * std::cos(a), r * std::sin(a));
     }
-    rtl::CAR_Segmenter<rtl::Vector2f> segmenter(1, 0.05f, 0.5f);
+    // step 3: each point is compared with its two predecessors; the adaptive threshold (3 * 2pi/360 * r) is three
+    // times the spacing of the points on each arc, far below the 4 m jumps between the arcs (also across the seam).
+    rtl::CAR_Segmenter<rtl::Vector2f> segmenter(3, 0.05f, 0.5f);
     segmenter.loadData(scan);
-    check(segmenter.clustersAvailable() == 2, "segmentation into two clusters");
+    const std::size_t clusters = segmenter.clustersAvailable();
+    check(clusters == 2, "segmentation into two clusters");
+    check(segmenter.grabCluster().size() + segmenter.grabCluster().size() == scan.size(), "every point in a cluster");
 
     // Vectorization: an L-shape of noise-free points gives two segments.
     std::vector<rtl::Vector2f> l_shape;
@@ -48,6 +53,7 @@ int main()
     check(vectorizer(l_shape), "vectorizer succeeds");
     check(vectorizer.lineSegments().size() == 2, "two segments for an L-shape");
 
-    std::printf("consumer OK: p = [%g, %g, %g], %zu segments\n", p.x(), p.y(), p.z(), vectorizer.lineSegments().size());
+    std::printf("consumer %s: p = [%g, %g, %g], %zu clusters, %zu segments\n", failures == 0 ? "OK" : "FAILED",
+                p.x(), p.y(), p.z(), clusters, vectorizer.lineSegments().size());
     return failures == 0 ? 0 : 1;
 }
