@@ -11,6 +11,7 @@
 #include <list>
 #include <map>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,7 @@
 #include "rtl/vect/PostprocessorPolyline2D.h"
 #include "rtl/vect/PostprocessorProjectEndpoints.h"
 #include "rtl/vect/PrecArray.h"
+#include "rtl/vect/PrecArrayBlocked.h"
 #include "rtl/vect/PrecSums.h"
 #include "rtl/vect/VectorizerPointElimination.h"
 
@@ -113,7 +115,7 @@ namespace rtl
     public:
         using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
         using typename Base::ApproximationType; using typename Base::IndexType;
-        typedef PrecArray2D<Element, Compute> PrecArrayType;
+        typedef PrecArrayBlocked<2, Element, Compute> PrecArrayType;   // few range queries: blocked prefix sums
         typedef typename ApproximationType::ConstrainedType OutputType;
 
         VectorizerFTLSPolyline2D() = default;
@@ -128,7 +130,7 @@ namespace rtl
             if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::validParameter(delta))
                 return failAll(pts);
             prec.precompute(pts);
-            if (!prec.array.row(static_cast<Eigen::Index>(pts.size())).allFinite())
+            if (!prec.allFinite())
                 return failAll(pts);
             extractor.setSigma(this->sigma);
             continuity.setSigma(this->sigma);
@@ -176,7 +178,7 @@ namespace rtl
             if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::validParameter(delta))
                 return failAll(pts);
             prec.precompute(pts);
-            if (!prec.array.row(static_cast<Eigen::Index>(pts.size())).allFinite())
+            if (!prec.allFinite())
                 return failAll(pts);
             extractor.setSigma(this->sigma);
             optimizer.setSigma(this->sigma);
@@ -244,7 +246,8 @@ namespace rtl
         public:
             using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
             using typename Base::ApproximationType; using typename Base::IndexType;
-            typedef PrecArray3D<ElementType, ComputeType> PrecArrayType;
+            // FTLS alone makes few range queries: blocked prefix sums; the optimizer makes many: the full array.
+            typedef std::conditional_t<optimize, PrecArray3D<ElementType, ComputeType>, PrecArrayBlocked<3, ElementType, ComputeType>> PrecArrayType;
             typedef typename ApproximationType::ConstrainedType OutputType;
 
             void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }
@@ -255,7 +258,7 @@ namespace rtl
                 if (pts.size() < 2 || !validParameter(this->sigma))
                     return failAll(pts);
                 prec.precompute(pts);
-                if (!prec.array.row(static_cast<Eigen::Index>(pts.size())).allFinite())
+                if (!prec.allFinite())
                     return failAll(pts);
                 extractor.setSigma(this->sigma);
                 if (!extractor(prec, this->approx, this->idx))

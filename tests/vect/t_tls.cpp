@@ -69,6 +69,48 @@ TEST(PrecArray, RowsOfTheSpecExample)
     EXPECT_EQ(s3.sz(), 9); EXPECT_EQ(s3.syz(), 2 * 3 + 5 * 6); EXPECT_EQ(s3.szx(), 3 * 1 + 6 * 4); EXPECT_EQ(s3.cnt(), 2);
 }
 
+// The blocked prefix sums used by the FTLS vectorizers give the same range sums as the full array.
+TEST(PrecArrayBlocked, MatchesPrecArray)
+{
+    std::mt19937 gen(21);
+    std::uniform_real_distribution<float> u(-10.f, 10.f);
+    for (size_t n : {0u, 1u, 7u, 8u, 9u, 16u, 17u, 100u, 1001u})
+    {
+        std::vector<rtl::Vector2f> p2;
+        std::vector<rtl::Vector3f> p3;
+        for (size_t i = 0; i < n; ++i)
+        {
+            p2.emplace_back(u(gen), u(gen));
+            p3.emplace_back(u(gen), u(gen), u(gen));
+        }
+        rtl::PrecArray2D<float, double> a2;
+        rtl::PrecArray3D<float, double> a3;
+        rtl::PrecArrayBlocked<2, float, double> b2;
+        rtl::PrecArrayBlocked<3, float, double> b3;
+        a2.precompute(p2); a3.precompute(p3); b2.precompute(p2); b3.precompute(p3);
+        ASSERT_EQ(b2.size(), n + 1);
+        ASSERT_EQ(b3.size(), n + 1);
+        EXPECT_TRUE(b2.allFinite() && b3.allFinite() && a2.allFinite() && a3.allFinite());
+        for (size_t b = 0; b <= n; b += 1 + b / 3)
+            for (size_t e = b; e <= n; e += 1 + e / 5)
+            {
+                EXPECT_LT((b2.sums(b, e).sums - a2.sums(b, e).sums).abs().maxCoeff(), 1e-9) << b << " " << e;
+                EXPECT_LT((b3.sums(b, e).sums - a3.sums(b, e).sums).abs().maxCoeff(), 1e-9) << b << " " << e;
+                EXPECT_EQ(b3.sums(b, e).cnt(), static_cast<double>(e - b));
+            }
+        if (n > 0)
+        {
+            EXPECT_LT((b2.sums(n).sums - a2.sums(n).sums).abs().maxCoeff(), 1e-9);
+            p2[n / 2] = rtl::Vector2f(std::numeric_limits<float>::quiet_NaN(), 0.f);
+            p3[n - 1] = rtl::Vector3f(0.f, std::numeric_limits<float>::infinity(), 0.f);
+            b2.precompute(p2); b3.precompute(p3); a2.precompute(p2);
+            EXPECT_FALSE(b2.allFinite());
+            EXPECT_FALSE(b3.allFinite());
+            EXPECT_FALSE(a2.allFinite());
+        }
+    }
+}
+
 namespace
 {
     // Sign-insensitive comparison of unit vectors.

@@ -56,6 +56,12 @@ namespace rtl
             return s;
         }
 
+        //! True if every precomputed sum is finite (i.e. all points were finite).
+        [[nodiscard]] bool allFinite() const
+        {
+            return array_size > 0 && array.row(static_cast<Eigen::Index>(array_size - 1)).allFinite();
+        }
+
         EigenType array;
         size_t array_size{};
     };
