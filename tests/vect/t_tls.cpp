@@ -74,7 +74,8 @@ TEST(PrecArrayBlocked, MatchesPrecArray)
 {
     std::mt19937 gen(21);
     std::uniform_real_distribution<float> u(-10.f, 10.f);
-    for (size_t n : {0u, 1u, 7u, 8u, 9u, 16u, 17u, 100u, 1001u})
+    for (size_t n : {0u, 1u, 7u, 8u, 9u, 16u, 17u, 100u, 1001u, 20001u})
+    for (size_t min_blocked : {0u, 16384u})   // blocked for every size / only for long chains (default)
     {
         std::vector<rtl::Vector2f> p2;
         std::vector<rtl::Vector3f> p3;
@@ -87,12 +88,14 @@ TEST(PrecArrayBlocked, MatchesPrecArray)
         rtl::PrecArray3D<float, double> a3;
         rtl::PrecArrayBlocked<2, float, double> b2;
         rtl::PrecArrayBlocked<3, float, double> b3;
+        b2.setMinBlockedSize(min_blocked);
+        b3.setMinBlockedSize(min_blocked);
         a2.precompute(p2); a3.precompute(p3); b2.precompute(p2); b3.precompute(p3);
         ASSERT_EQ(b2.size(), n + 1);
         ASSERT_EQ(b3.size(), n + 1);
         EXPECT_TRUE(b2.allFinite() && b3.allFinite() && a2.allFinite() && a3.allFinite());
         for (size_t b = 0; b <= n; b += 1 + b / 3)
-            for (size_t e = b; e <= n; e += 1 + e / 5)
+            for (size_t e = b; e <= n; e += 1 + e / 5 + e / 50)
             {
                 EXPECT_LT((b2.sums(b, e).sums - a2.sums(b, e).sums).abs().maxCoeff(), 1e-9) << b << " " << e;
                 EXPECT_LT((b3.sums(b, e).sums - a3.sums(b, e).sums).abs().maxCoeff(), 1e-9) << b << " " << e;

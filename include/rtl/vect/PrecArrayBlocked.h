@@ -1,8 +1,9 @@
-// PrecArrayBlocked: the range-sum interface of PrecArray2D/3D (size(), sums(index), sums(beg, end)) with prefix
-// rows stored only every `block` points. The precomputation is then one pass that accumulates every point but
-// writes 1/block of the rows (the full prefix array is bound by its row writes: 40 B per point in 2D, 72 B in 3D),
-// and a query adds at most 2 * (block - 1) points from the chain itself. Used by the FTLS vectorizers, whose few
-// queries per range make that trade worthwhile. The point vector passed to precompute() must outlive the queries.
+// PrecArrayBlocked: the range-sum interface of PrecArray2D/3D (size(), sums(index), sums(beg, end)) that, for long
+// chains, stores a prefix row only every 8 points. The precomputation is then one pass that accumulates every
+// point but writes 1/8 of the rows (the full prefix array is bound by its row writes: 40 B per point in 2D, 72 B in
+// 3D), and a query adds at most 14 points from the chain itself. Short chains (many short ranges, hence many
+// queries per point) keep a row per point. Used by the FTLS vectorizers, whose few queries per range make that
+// trade worthwhile. The point vector passed to precompute() must outlive the queries.
 #pragma once
 
 #include <cmath>
@@ -15,10 +16,11 @@
 
 namespace rtl
 {
-    template<int dimensions, typename Element, typename Compute, size_t block = 8>
+    template<int dimensions, typename Element, typename Compute>
     class PrecArrayBlocked
     {
         static_assert(dimensions == 2 || dimensions == 3, "PrecArrayBlocked supports 2D and 3D points");
+        static constexpr size_t max_shift = 3;   // blocks of 8 points
 
     public:
         typedef Element ElementType;
@@ -29,10 +31,14 @@ namespace rtl
         //! Rows of the equivalent full prefix array: number of points + 1 (0 before precompute()).
         [[nodiscard]] size_t size() const { return pts ? pts->size() + 1 : 0; }
 
+        //! Chains shorter than this get a row per point (queries then read two rows, like PrecArray); longer
+        //! chains get a row per 8 points. Default 16384 points.
+        void setMinBlockedSize(size_t size) { min_blocked = size; }
+
         //! Makes room for pts_cnt points (never shrinks).
         void resize(size_t pts_cnt)
         {
-            const size_t need = (pts_cnt / block + 1) * static_cast<size_t>(cols);
+            const size_t need = (pts_cnt + 1) * static_cast<size_t>(cols);
             if (rows.size() < need)
                 rows.resize(need);
         }
@@ -41,6 +47,69 @@ namespace rtl
         {
             pts = &vec;
             resize(vec.size());
+            shift = vec.size() >= min_blocked ? max_shift : 0;
+            if (shift == 0)
+                precomputeBlocks<1>(vec);
+            else
+                precomputeBlocks<(size_t(1) << max_shift)>(vec);
+        }
+
+        //! True if every point (hence every sum) is finite.
+        [[nodiscard]] bool allFinite() const
+        {
+            if (!pts)
+                return false;
+            const size_t n = pts->size();
+            const ComputeType *last = rows.data() + (n >> shift) * cols;
+            ComputeType sum = 0;
+            for (int k = 0; k < cols; ++k)
+                sum += last[k];
+            for (size_t i = (n >> shift) << shift; i < n; ++i)
+                for (int k = 0; k < dimensions; ++k)
+                    sum += static_cast<ComputeType>((*pts)[i][k]);
+            return std::isfinite(sum);
+        }
+
+        SumsType sums(size_t index) const { return sums(0, index); }
+
+        //! Sums of the points [beg, end) (count = end - beg). Precondition: beg <= end < size().
+        SumsType sums(size_t beg, size_t end) const
+        {
+            ComputeType s[cols] = {};
+            const size_t mask = (size_t(1) << shift) - 1;
+            if (end - beg <= (end & mask) + (beg & mask))   // summing the range directly is not dearer
+            {
+                for (size_t i = beg; i < end; ++i)
+                    add(s, (*pts)[i]);
+            }
+            else
+            {
+                const ComputeType *re = rows.data() + (end >> shift) * cols, *rb = rows.data() + (beg >> shift) * cols;
+                for (int k = 0; k < cols; ++k)
+                    s[k] = re[k] - rb[k];
+                for (size_t i = end & ~mask; i < end; ++i)
+                    add(s, (*pts)[i]);
+                ComputeType t[cols] = {};
+                for (size_t i = beg & ~mask; i < beg; ++i)
+                    add(t, (*pts)[i]);
+                for (int k = 0; k < cols; ++k)
+                    s[k] -= t[k];
+            }
+            SumsType out;
+            for (int k = 0; k < cols; ++k)
+                out.sums(k) = s[k];
+            out.sums(cols) = static_cast<ComputeType>(end - beg);
+            return out;
+        }
+
+    private:
+        const std::vector<VectorND<dimensions, ElementType>> *pts{nullptr};
+        std::vector<ComputeType> rows;
+        size_t min_blocked{16384}, shift{0};
+
+        template<size_t block>
+        void precomputeBlocks(const std::vector<VectorND<dimensions, ElementType>> &vec)
+        {
             ComputeType *row = rows.data();
             for (int k = 0; k < cols; ++k)
                 row[k] = 0;
@@ -69,57 +138,6 @@ namespace rtl
                     row[k] = acc[k];
             }
         }
-
-        //! True if every point (hence every sum) is finite.
-        [[nodiscard]] bool allFinite() const
-        {
-            if (!pts)
-                return false;
-            const size_t n = pts->size();
-            const ComputeType *last = rows.data() + (n / block) * cols;
-            ComputeType sum = 0;
-            for (int k = 0; k < cols; ++k)
-                sum += last[k];
-            for (size_t i = (n / block) * block; i < n; ++i)
-                for (int k = 0; k < dimensions; ++k)
-                    sum += static_cast<ComputeType>((*pts)[i][k]);
-            return std::isfinite(sum);
-        }
-
-        SumsType sums(size_t index) const { return sums(0, index); }
-
-        //! Sums of the points [beg, end) (count = end - beg). Precondition: beg <= end < size().
-        SumsType sums(size_t beg, size_t end) const
-        {
-            ComputeType s[cols] = {};
-            if (end - beg <= end % block + beg % block)   // summing the range directly is not dearer
-            {
-                for (size_t i = beg; i < end; ++i)
-                    add(s, (*pts)[i]);
-            }
-            else
-            {
-                const ComputeType *re = rows.data() + (end / block) * cols, *rb = rows.data() + (beg / block) * cols;
-                for (int k = 0; k < cols; ++k)
-                    s[k] = re[k] - rb[k];
-                for (size_t i = (end / block) * block; i < end; ++i)
-                    add(s, (*pts)[i]);
-                ComputeType t[cols] = {};
-                for (size_t i = (beg / block) * block; i < beg; ++i)
-                    add(t, (*pts)[i]);
-                for (int k = 0; k < cols; ++k)
-                    s[k] -= t[k];
-            }
-            SumsType out;
-            for (int k = 0; k < cols; ++k)
-                out.sums(k) = s[k];
-            out.sums(cols) = static_cast<ComputeType>(end - beg);
-            return out;
-        }
-
-    private:
-        const std::vector<VectorND<dimensions, ElementType>> *pts{nullptr};
-        std::vector<ComputeType> rows;
 
         static void add(ComputeType *s, const VectorND<dimensions, ElementType> &p)
         {
