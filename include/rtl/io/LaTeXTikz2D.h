@@ -15,6 +15,7 @@
 
 #include "rtl/Core.h"
 #include "rtl/Transformation.h"
+#include "rtl/io/LaTeXTikzCommon.h"
 #include "rtl/io/LaTeXUtility.h"
 
 namespace rtl
@@ -45,21 +46,20 @@ namespace rtl
     public:
         static const unsigned int overrun_relative = 0, overrun_absolute = 1;
         static const unsigned int axis_type_linear = 0, axis_type_log10 = 1;
-        static const unsigned int position_above = 0x01, position_below = 0x02, position_right = 0x04,
-                                  position_left = 0x08;
+        static const unsigned int position_above = latex_detail::tikz_position_above,
+                                  position_below = latex_detail::tikz_position_below,
+                                  position_right = latex_detail::tikz_position_right,
+                                  position_left = latex_detail::tikz_position_left;
         //! addEdge(s) options: arrow tips at the end and/or the beginning of each edge.
         static const unsigned int edge_arrow_end = 0x01, edge_arrow_beg = 0x02;
 
         //! Mark templates: TikZ code around the local origin, sized by \MarkRadius; "@style" becomes the style name.
-        static inline const char *latex_mark_blank = "";
-        static inline const char *latex_mark_cross =
-                "\\draw[@style] (-\\MarkRadius,-\\MarkRadius) -- (\\MarkRadius,\\MarkRadius) "
-                "(-\\MarkRadius,\\MarkRadius) -- (\\MarkRadius,-\\MarkRadius);";
-        static inline const char *latex_mark_mark = "\\draw[@style] (0,-\\MarkRadius) -- (0,\\MarkRadius);";
-        static inline const char *latex_mark_dot = "\\filldraw[@style] (0,0) circle (\\MarkRadius);";
-        static inline const char *latex_mark_robot =
-                "\\filldraw[@style] (0,0) circle (\\MarkRadius); \\draw[@style] (0,0) -- (2*\\MarkRadius,0);";
-        static inline const char *latex_var_style = "@style";
+        static inline const char *latex_mark_blank = latex_detail::tikz_mark_blank;
+        static inline const char *latex_mark_cross = latex_detail::tikz_mark_cross;
+        static inline const char *latex_mark_mark = latex_detail::tikz_mark_mark;
+        static inline const char *latex_mark_dot = latex_detail::tikz_mark_dot;
+        static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
+        static inline const char *latex_var_style = latex_detail::tikz_var_style;
 
         explicit LaTeXTikz2D(unsigned int axis_x = LaTeXTikz2D::axis_type_linear,
                              unsigned int axis_y = LaTeXTikz2D::axis_type_linear)
@@ -122,12 +122,7 @@ namespace rtl
         //! Removes primitives, styles, colours, marks, grids, axes, descriptions and the data bounds.
         void clearData()
         {
-            styles.clear();
-            style_order.clear();
-            colors.clear();
-            color_order.clear();
-            marks.clear();
-            mark_order.clear();
+            names.clear();
             chunks.clear();
             grids.clear();
             axes.clear();
@@ -140,22 +135,13 @@ namespace rtl
         //! Writes the standalone document; throws std::runtime_error if the file cannot be written.
         void writeTEX(const std::string &file_name)
         {
-            std::ofstream ofs(file_name);
-            if (!ofs)
-                throw std::runtime_error("LaTeXTikz2D::writeTEX: cannot open '" + file_name + "' for writing");
-            writeTEX(ofs);
-            if (!ofs)
-                throw std::runtime_error("LaTeXTikz2D::writeTEX: writing '" + file_name + "' failed");
+            latex_detail::writeTexFile(file_name, "LaTeXTikz2D", [this](std::ostream &os) { writeTEX(os); });
         }
 
         //! Writes the standalone document to a stream.
         void writeTEX(std::ostream &os)
         {
-            os << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
-                  "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
-                  "\\setlength\\PreviewBorder{" << latex_detail::number(border_cm) << "cm}\n\n\\begin{document}\n";
-            writeTikz(os);
-            os << "\\end{document}\n";
+            latex_detail::writeTikzDocument(os, border_cm, [this](std::ostream &o) { writeTikz(o); });
         }
 
         //! Writes only the tikzpicture environment (colours, macros and marks are local to it), e.g. to \input it.
@@ -165,11 +151,11 @@ namespace rtl
             std::string out;
             out += "\\begin{tikzpicture}[x=" + latex_detail::number(f.sx) + "cm, y=" + latex_detail::number(f.sy) +
                    "cm";
-            for (const auto &name_style : style_order)
-                out += ",\n\t" + name_style.first + "/." + name_style.second;
+            std::string style_options = names.styleOptions();
+            if (!style_options.empty())
+                out += ",\n\t" + style_options;
             out += "]\n";
-            for (const auto &c : color_order)
-                out += "\\definecolor{" + c.first + "}" + c.second + "\n";
+            out += names.colorDefinitions();
             out += "\\pgfmathsetmacro{\\MaxX}{" + latex_detail::number(f.max_x) + "}\n";
             out += "\\pgfmathsetmacro{\\MinX}{" + latex_detail::number(f.min_x) + "}\n";
             out += "\\pgfmathsetmacro{\\MaxY}{" + latex_detail::number(f.max_y) + "}\n";
@@ -180,8 +166,7 @@ namespace rtl
             // \resizebox cannot scale) and always covers the plot region.
             out += "\\path (\\MinX,\\MinY) rectangle (\\MaxX,\\MaxY);\n";
             out += "\\pgfmathsetmacro{\\MarkRadius}{" + latex_detail::number(mark_radius) + "}\n";
-            for (const auto &m : mark_order)
-                out += m;
+            out += names.markDefinitions();
             if (clip)
                 out += "\\clip (" + pt(clip_min_x, clip_min_y) + ") rectangle (" + pt(clip_max_x, clip_max_y) + ");\n";
             os << out;
@@ -385,16 +370,7 @@ namespace rtl
 
         //! Registers `\definecolor{ColorX}<color>` for a spec such as "{hsb}{0.3,0.8,0.5}" or "{rgb}{1,0,0}" and
         //! returns "ColorX"; the same spec always returns the same name.
-        std::string saveColor(const std::string &color)
-        {
-            auto it = colors.find(color);
-            if (it != colors.end())
-                return it->second;
-            std::string name = "Color" + latex_detail::indexToLetters(color_order.size());
-            colors.emplace(color, name);
-            color_order.emplace_back(name, color);
-            return name;
-        }
+        std::string saveColor(const std::string &color) { return names.color(color); }
 
     private:
         struct MarkPoint
@@ -444,14 +420,7 @@ namespace rtl
             }
         }
 
-        static std::string pt(double x, double y)
-        {
-            std::string s;
-            latex_detail::appendNumber(s, x);
-            s += ',';
-            latex_detail::appendNumber(s, y);
-            return s;
-        }
+        static std::string pt(double x, double y) { return latex_detail::tikzPoint(x, y); }
 
         void text(const std::string &t)
         {
@@ -460,36 +429,13 @@ namespace rtl
             chunks.back().text += t;
         }
 
-        std::string styleName(const std::string &style)
-        {
-            std::string norm = latex_detail::normalizeStyle(style);
-            auto it = styles.find(norm);
-            if (it != styles.end())
-                return it->second;
-            std::string name = "Style" + latex_detail::indexToLetters(style_order.size());
-            styles.emplace(norm, name);
-            style_order.emplace_back(name, norm);
-            return name;
-        }
+        std::string styleName(const std::string &style) { return names.style(style); }
 
+        //! Marks reset the unit vectors to 1 cm, so they keep their size whatever the axis scaling.
         std::string markName(const std::string &style, const std::string &templ, float scale)
         {
-            std::string style_name = styleName(style);
-            std::string key = style_name + '\n' + templ + '\n' + latex_detail::number(scale);
-            auto it = marks.find(key);
-            if (it != marks.end())
-                return it->second;
-            std::string name = "\\Mark" + latex_detail::indexToLetters(marks.size());
-            marks.emplace(key, name);
-            std::string body = templ;
-            const std::string var = latex_var_style;
-            for (size_t p = body.find(var); p != std::string::npos; p = body.find(var, p + style_name.size()))
-                body.replace(p, var.size(), style_name);
-            mark_order.push_back("\\newcommand{" + name +
-                                 "}[3]{\\begin{scope}[shift={(#1,#2)}, x=1cm, y=1cm, rotate=#3, scale=" +
-                                 latex_detail::number(scale) + "] " +
-                                 body + " \\end{scope}}\n");
-            return name;
+            std::string s = latex_detail::number(scale);
+            return names.mark(style, templ, "\n" + s, "[3]", "shift={(#1,#2)}, x=1cm, y=1cm, rotate=#3, scale=" + s);
         }
 
         void plot(const std::vector<std::pair<float, float>> &p, const std::string &line_style,
@@ -652,26 +598,6 @@ namespace rtl
             }
         }
 
-        static std::string anchor(unsigned int position)
-        {
-            std::string v, h;
-            if (position & position_above)
-                v = "south";
-            else if (position & position_below)
-                v = "north";
-            if (position & position_right)
-                h = "west";
-            else if (position & position_left)
-                h = "east";
-            if (v.empty() && h.empty())
-                return "center";
-            if (v.empty())
-                return h;
-            if (h.empty())
-                return v;
-            return v + " " + h;
-        }
-
         void writeAxes(std::string &out, const Frame &f) const
         {
             double x0 = f.min_x - f.ox, x1 = f.max_x + f.ox, y0 = f.min_y - f.oy, y1 = f.max_y + f.oy;
@@ -679,7 +605,7 @@ namespace rtl
             double tick_y = 0.05 / f.sy, tick_x = 0.05 / f.sx;
             for (const auto &a : axes)
             {
-                std::string anc = anchor(a.position);
+                std::string anc = latex_detail::tikzAnchor(a.position);
                 bool log = a.is_x ? axis_type_x == axis_type_log10 : axis_type_y == axis_type_log10;
                 if (a.is_x)
                 {
@@ -733,12 +659,7 @@ namespace rtl
         float clip_min_x = 0, clip_max_x = 0, clip_min_y = 0, clip_max_y = 0;
         float min_x, max_x, min_y, max_y;
 
-        std::map<std::string, std::string> styles;                   // normalised style text -> name
-        std::vector<std::pair<std::string, std::string>> style_order;  // (name, text) in registration order
-        std::map<std::string, std::string> colors;
-        std::vector<std::pair<std::string, std::string>> color_order;
-        std::map<std::string, std::string> marks;                    // (style, template, scale) -> \MarkX
-        std::vector<std::string> mark_order;                         // \newcommand definitions
+        latex_detail::TikzNames names;                               // styles, colours, marks
         std::vector<Chunk> chunks;                                   // primitives in insertion order
         std::vector<Grid> grids;
         std::vector<Axis> axes;

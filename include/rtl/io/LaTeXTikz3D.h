@@ -17,6 +17,7 @@
 
 #include "rtl/Core.h"
 #include "rtl/Transformation.h"
+#include "rtl/io/LaTeXTikzCommon.h"
 #include "rtl/io/LaTeXUtility.h"
 
 namespace rtl
@@ -46,17 +47,16 @@ namespace rtl
     public:
         static const unsigned int overrun_relative = 0, overrun_absolute = 1, axis_type_linear = 0,
                                   axis_type_log10 = 1;
-        static const unsigned int position_above = 0x01, position_below = 0x02, position_right = 0x04,
-                                  position_left = 0x08;
-        static inline const char *latex_mark_blank = "";
-        static inline const char *latex_mark_cross =
-                "\\draw[@style] (-\\MarkRadius,-\\MarkRadius) -- (\\MarkRadius,\\MarkRadius) "
-                "(-\\MarkRadius,\\MarkRadius) -- (\\MarkRadius,-\\MarkRadius);";
-        static inline const char *latex_mark_mark = "\\draw[@style] (0,-\\MarkRadius) -- (0,\\MarkRadius);";
-        static inline const char *latex_mark_dot = "\\filldraw[@style] (0,0) circle (\\MarkRadius);";
-        static inline const char *latex_mark_robot =
-                "\\filldraw[@style] (0,0) circle (\\MarkRadius); \\draw[@style] (0,0) -- (2*\\MarkRadius,0);";
-        static inline const char *latex_var_style = "@style";
+        static const unsigned int position_above = latex_detail::tikz_position_above,
+                                  position_below = latex_detail::tikz_position_below,
+                                  position_right = latex_detail::tikz_position_right,
+                                  position_left = latex_detail::tikz_position_left;
+        static inline const char *latex_mark_blank = latex_detail::tikz_mark_blank;
+        static inline const char *latex_mark_cross = latex_detail::tikz_mark_cross;
+        static inline const char *latex_mark_mark = latex_detail::tikz_mark_mark;
+        static inline const char *latex_mark_dot = latex_detail::tikz_mark_dot;
+        static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
+        static inline const char *latex_var_style = latex_detail::tikz_var_style;
 
         LaTeXTikz3D() { clearAll(); }
         LaTeXTikz3D(LaTeXTikz3D &&le) noexcept = default;
@@ -138,12 +138,7 @@ namespace rtl
         //! Removes objects, styles, colours and marks; keeps size, border, view and regions.
         void clearData()
         {
-            styles.clear();
-            style_order.clear();
-            colors.clear();
-            color_order.clear();
-            marks.clear();
-            mark_order.clear();
+            names.clear();
             mark_items.clear();
             line_items.clear();
             face_items.clear();
@@ -153,34 +148,22 @@ namespace rtl
         //! Writes the standalone document; throws std::runtime_error if the file cannot be written.
         void writeTEX(const std::string &file_name)
         {
-            std::ofstream ofs(file_name);
-            if (!ofs)
-                throw std::runtime_error("LaTeXTikz3D::writeTEX: cannot open '" + file_name + "' for writing");
-            writeTEX(ofs);
-            if (!ofs)
-                throw std::runtime_error("LaTeXTikz3D::writeTEX: writing '" + file_name + "' failed");
+            latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
         void writeTEX(std::ostream &os)
         {
-            os << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
-                  "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
-                  "\\setlength\\PreviewBorder{" << latex_detail::number(border_cm) << "cm}\n\n\\begin{document}\n";
-            writeTikz(os);
-            os << "\\end{document}\n";
+            latex_detail::writeTikzDocument(os, border_cm, [this](std::ostream &o) { writeTikz(o); });
         }
         //! Writes only the tikzpicture (everything it defines is local to it). A scene without objects and without
         //! a min region gives an empty picture of the export size.
         void writeTikz(std::ostream &os)
         {
             std::string out = "\\begin{tikzpicture}[";
-            for (size_t i = 0; i < style_order.size(); ++i)
-                out += (i ? ",\n\t" : "") + style_order[i].first + "/." + style_order[i].second;
+            out += names.styleOptions();
             out += "]\n";
-            for (const auto &c : color_order)
-                out += "\\definecolor{" + c.first + "}" + c.second + "\n";
+            out += names.colorDefinitions();
             out += "\\pgfmathsetmacro{\\MarkRadius}{0.1}\n";
-            for (const auto &m : mark_order)
-                out += m;
+            out += names.markDefinitions();
             double hw = export_w / 2.0, hh = export_h / 2.0;
             out += "\\path (" + pt(-hw, -hh) + ") rectangle (" + pt(hw, hh) + ");\n";
             out += "\\begin{scope}\n";
@@ -268,16 +251,7 @@ namespace rtl
         }
 
         //! See LaTeXTikz2D::saveColor.
-        std::string saveColor(const std::string &color)
-        {
-            auto it = colors.find(color);
-            if (it != colors.end())
-                return it->second;
-            std::string name = "Color" + latex_detail::indexToLetters(color_order.size());
-            colors.emplace(color, name);
-            color_order.emplace_back(name, color);
-            return name;
-        }
+        std::string saveColor(const std::string &color) { return names.color(color); }
 
     private:
         using V3 = Eigen::Vector3d;
@@ -338,43 +312,14 @@ namespace rtl
             focal = 1.0 / std::tan(f * latex_detail::pi / 360.0);
         }
 
-        static std::string pt(double x, double y)
-        {
-            std::string s;
-            latex_detail::appendNumber(s, x);
-            s += ',';
-            latex_detail::appendNumber(s, y);
-            return s;
-        }
+        static std::string pt(double x, double y) { return latex_detail::tikzPoint(x, y); }
 
-        std::string styleName(const std::string &style)
-        {
-            std::string norm = latex_detail::normalizeStyle(style);
-            auto it = styles.find(norm);
-            if (it != styles.end())
-                return it->second;
-            std::string name = "Style" + latex_detail::indexToLetters(style_order.size());
-            styles.emplace(norm, name);
-            style_order.emplace_back(name, norm);
-            return name;
-        }
+        std::string styleName(const std::string &style) { return names.style(style); }
 
+        //! 3D marks take the perspective scale as a fourth argument.
         std::string markName(const std::string &style, const std::string &templ)
         {
-            std::string style_name = styleName(style);
-            std::string key = style_name + '\n' + templ;
-            auto it = marks.find(key);
-            if (it != marks.end())
-                return it->second;
-            std::string name = "\\Mark" + latex_detail::indexToLetters(marks.size());
-            marks.emplace(key, name);
-            std::string body = templ;
-            const std::string var = latex_var_style;
-            for (size_t p = body.find(var); p != std::string::npos; p = body.find(var, p + style_name.size()))
-                body.replace(p, var.size(), style_name);
-            mark_order.push_back("\\newcommand{" + name + "}[4]{\\begin{scope}[shift={(#1,#2)}, rotate=#3, scale=#4] " +
-                                 body + " \\end{scope}}\n");
-            return name;
+            return names.mark(style, templ, "", "[4]", "shift={(#1,#2)}, rotate=#3, scale=#4");
         }
 
         static V3 newell(const std::vector<V3> &p)
@@ -798,8 +743,8 @@ namespace rtl
                         continue;
                     std::string label = latex_detail::numberToLatexString(v * a.tick, a.format);
                     if (!label.empty())
-                        labels += "\\node[anchor=" + anchor(a.position) + ", inner sep=1pt] at (" + P(p) + ") {" +
-                                  label + "};\n";
+                        labels += "\\node[anchor=" + latex_detail::tikzAnchor(a.position) + ", inner sep=1pt] at (" +
+                                  P(p) + ") {" + label + "};\n";
                 }
             }
 
@@ -851,22 +796,6 @@ namespace rtl
             return t0 < t1 && std::isfinite(t0) && std::isfinite(t1);
         }
 
-        static std::string anchor(unsigned int position)
-        {
-            std::string v, h;
-            if (position & position_above)
-                v = "south";
-            else if (position & position_below)
-                v = "north";
-            if (position & position_right)
-                h = "west";
-            else if (position & position_left)
-                h = "east";
-            if (v.empty() && h.empty())
-                return "center";
-            return v.empty() ? h : h.empty() ? v : v + " " + h;
-        }
-
         float export_w = 10, export_h = 10, border_cm = 0.1f;
         double focal = 1.0 / std::tan(30.0 * latex_detail::pi / 180.0);   // 60 degrees
         Eigen::Matrix3d view_rot = Eigen::Matrix3d::Identity();
@@ -879,12 +808,7 @@ namespace rtl
         bool min_region = false, max_region = false;
         V3 min_lo = V3::Zero(), min_hi = V3::Zero(), max_lo = V3::Zero(), max_hi = V3::Zero();
 
-        std::map<std::string, std::string> styles;
-        std::vector<std::pair<std::string, std::string>> style_order;
-        std::map<std::string, std::string> colors;
-        std::vector<std::pair<std::string, std::string>> color_order;
-        std::map<std::string, std::string> marks;
-        std::vector<std::string> mark_order;
+        latex_detail::TikzNames names;   // styles, colours, marks
         std::vector<MarkItem> mark_items;
         std::vector<LineItem> line_items;
         std::vector<Face> face_items;

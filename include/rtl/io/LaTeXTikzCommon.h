@@ -1,0 +1,174 @@
+// Internal pieces shared by LaTeXTikz2D and LaTeXTikz3D: the standalone document around a tikzpicture, the registry
+// of generated style/colour/mark names, mark templates, coordinate text and label anchors.
+#pragma once
+
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rtl/io/LaTeXUtility.h"
+
+namespace rtl::latex_detail
+{
+    //! Mark templates (TikZ code around the local origin, sized by \MarkRadius; "@style" becomes the style name),
+    //! published by both exporters as latex_mark_* / latex_var_style.
+    inline constexpr const char *tikz_mark_blank = "";
+    inline constexpr const char *tikz_mark_cross =
+            "\\draw[@style] (-\\MarkRadius,-\\MarkRadius) -- (\\MarkRadius,\\MarkRadius) "
+            "(-\\MarkRadius,\\MarkRadius) -- (\\MarkRadius,-\\MarkRadius);";
+    inline constexpr const char *tikz_mark_mark = "\\draw[@style] (0,-\\MarkRadius) -- (0,\\MarkRadius);";
+    inline constexpr const char *tikz_mark_dot = "\\filldraw[@style] (0,0) circle (\\MarkRadius);";
+    inline constexpr const char *tikz_mark_robot =
+            "\\filldraw[@style] (0,0) circle (\\MarkRadius); \\draw[@style] (0,0) -- (2*\\MarkRadius,0);";
+    inline constexpr const char *tikz_var_style = "@style";
+
+    //! Label position bit flags, published by both exporters as position_*.
+    inline constexpr unsigned int tikz_position_above = 0x01, tikz_position_below = 0x02,
+                                  tikz_position_right = 0x04, tikz_position_left = 0x08;
+
+    //! "x,y" with appendNumber formatting.
+    inline std::string tikzPoint(double x, double y)
+    {
+        std::string s;
+        appendNumber(s, x);
+        s += ',';
+        appendNumber(s, y);
+        return s;
+    }
+
+    //! TikZ node anchor for the position flags: the label sits on the named side of its point.
+    inline std::string tikzAnchor(unsigned int position)
+    {
+        std::string v, h;
+        if (position & tikz_position_above)
+            v = "south";
+        else if (position & tikz_position_below)
+            v = "north";
+        if (position & tikz_position_right)
+            h = "west";
+        else if (position & tikz_position_left)
+            h = "east";
+        if (v.empty() && h.empty())
+            return "center";
+        return v.empty() ? h : h.empty() ? v : v + " " + h;
+    }
+
+    //! The `minimal` document cropped to the picture by preview; write_tikz(os) writes the tikzpicture.
+    template<class WriteTikz>
+    void writeTikzDocument(std::ostream &os, float border_cm, WriteTikz &&write_tikz)
+    {
+        os << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
+              "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
+              "\\setlength\\PreviewBorder{" << number(border_cm) << "cm}\n\n\\begin{document}\n";
+        write_tikz(os);
+        os << "\\end{document}\n";
+    }
+
+    //! Opens file_name, calls write(stream) and throws std::runtime_error (prefixed "<who>::writeTEX") on failure.
+    template<class Write>
+    void writeTexFile(const std::string &file_name, const char *who, Write &&write)
+    {
+        std::ofstream ofs(file_name);
+        if (!ofs)
+            throw std::runtime_error(std::string(who) + "::writeTEX: cannot open '" + file_name + "' for writing");
+        write(ofs);
+        if (!ofs)
+            throw std::runtime_error(std::string(who) + "::writeTEX: writing '" + file_name + "' failed");
+    }
+
+    //! Generated names StyleX, ColorX and \MarkX, each registered once, with their definitions in registration order.
+    class TikzNames
+    {
+    public:
+        void clear()
+        {
+            styles.clear();
+            style_order.clear();
+            colors.clear();
+            color_order.clear();
+            marks.clear();
+            mark_order.clear();
+        }
+
+        //! Name of the (normalised) style text.
+        std::string style(const std::string &style_text)
+        {
+            std::string norm = normalizeStyle(style_text);
+            auto it = styles.find(norm);
+            if (it != styles.end())
+                return it->second;
+            std::string name = "Style" + indexToLetters(style_order.size());
+            styles.emplace(norm, name);
+            style_order.emplace_back(name, norm);
+            return name;
+        }
+
+        //! Name of a colour spec such as "{rgb}{1,0,0}".
+        std::string color(const std::string &spec)
+        {
+            auto it = colors.find(spec);
+            if (it != colors.end())
+                return it->second;
+            std::string name = "Color" + indexToLetters(color_order.size());
+            colors.emplace(spec, name);
+            color_order.emplace_back(name, spec);
+            return name;
+        }
+
+        //! Name of the mark command for (style, template, key_suffix), defined on first use as
+        //! \newcommand{\MarkX}<args>{\begin{scope}[<scope_options>] <template with the style name> \end{scope}}.
+        std::string mark(const std::string &style_text, const std::string &templ, const std::string &key_suffix,
+                         const std::string &args, const std::string &scope_options)
+        {
+            std::string style_name = style(style_text);
+            std::string key = style_name + '\n' + templ + key_suffix;
+            auto it = marks.find(key);
+            if (it != marks.end())
+                return it->second;
+            std::string name = "\\Mark" + indexToLetters(marks.size());
+            marks.emplace(key, name);
+            std::string body = templ;
+            const std::string var = tikz_var_style;
+            for (size_t p = body.find(var); p != std::string::npos; p = body.find(var, p + style_name.size()))
+                body.replace(p, var.size(), style_name);
+            mark_order.push_back("\\newcommand{" + name + "}" + args + "{\\begin{scope}[" + scope_options + "] " +
+                                 body + " \\end{scope}}\n");
+            return name;
+        }
+
+        //! "<Name>/.<text>" entries for the tikzpicture options, separated by ",\n\t".
+        std::string styleOptions() const
+        {
+            std::string out;
+            for (size_t i = 0; i < style_order.size(); ++i)
+                out += (i ? ",\n\t" : "") + style_order[i].first + "/." + style_order[i].second;
+            return out;
+        }
+        std::string colorDefinitions() const
+        {
+            std::string out;
+            for (const auto &c : color_order)
+                out += "\\definecolor{" + c.first + "}" + c.second + "\n";
+            return out;
+        }
+        std::string markDefinitions() const
+        {
+            std::string out;
+            for (const auto &m : mark_order)
+                out += m;
+            return out;
+        }
+
+    private:
+        std::map<std::string, std::string> styles;                   // normalised style text -> name
+        std::vector<std::pair<std::string, std::string>> style_order;  // (name, text) in registration order
+        std::map<std::string, std::string> colors;
+        std::vector<std::pair<std::string, std::string>> color_order;
+        std::map<std::string, std::string> marks;                    // (style, template, suffix) -> \MarkX
+        std::vector<std::string> mark_order;                         // \newcommand definitions
+    };
+}
