@@ -2,22 +2,15 @@
 // called directly, the bounds' effect, per-cluster line fits, and coloured clusters in the SVG.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { DATA, REPO, isReturn, parseCarmen, sameLine, tlsFit, xyOf } from './helpers.js';
-
-const CLI = join(REPO, 'bin', 'rtl.js');
-function rtl(args, input) {
-  const r = spawnSync(process.execPath, [CLI, ...args], { cwd: REPO, encoding: 'utf8', input, timeout: 60000 });
-  return { code: r.status, out: r.stdout, err: r.stderr };
-}
+import { isReturn, loadLog, runCli as rtl, sameLine, scanPoints, streamClusters, tlsFit, xyOf } from './helpers.js';
 
 describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
   let tmp, pkg;
-  const scans = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
+  const scans = loadLog('intel');
   before(async () => { tmp = mkdtempSync(join(tmpdir(), 'rtl-cli-')); pkg = await init(); });
   after(() => rmSync(tmp, { recursive: true, force: true }));
 
@@ -37,10 +30,7 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     assert.equal(j.vectorization, undefined);
     assert.equal(j.fits, undefined);
     // The same labels as segment() called directly on the scan's points.
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((rr, i) => {
-      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
-    });
+    const points = scanPoints(scan);
     assert.deepEqual(labels, Array.from(pkg.segment(points).labels));
   });
 
@@ -50,16 +40,9 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     const j = JSON.parse(r.out);
     const { labels, clusters, ...params } = j.segmentation;
     assert.deepEqual(params, { segmenter: 'ia', step: 4, lowerBound: 0.1, upperBound: 0.5, scaling: 0.08 });
-    const scan = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'))[6];
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((rr, i) => {
-      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
-    });
-    const seg = new pkg.StreamSegmenter({ step: 4, lowerBound: 0.1, upperBound: 0.5, scaling: 0.08 });
-    seg.addPoints(points);
-    seg.flush();
-    const ref = seg.takeClosedClusters();
-    seg.dispose();
+    const scan = loadLog('csail')[6];
+    const points = scanPoints(scan);
+    const ref = streamClusters(pkg, points, { step: 4, lowerBound: 0.1, upperBound: 0.5, scaling: 0.08 });
     assert.deepEqual(clusters.map((c) => c.length), ref.map((c) => c.length / 2));
     clusters.forEach((c, k) => c.forEach((i, q) => {
       assert.equal(labels[i], k);

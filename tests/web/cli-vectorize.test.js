@@ -2,18 +2,11 @@
 // vectorization of a real scan (the same segments as vectorize() called directly), and SVG/TikZ output.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { DATA, REPO, isReturn, parseCarmen } from './helpers.js';
-
-const CLI = join(REPO, 'bin', 'rtl.js');
-function rtl(args, input) {
-  const r = spawnSync(process.execPath, [CLI, ...args], { cwd: REPO, encoding: 'utf8', input, timeout: 60000 });
-  return { code: r.status, out: r.stdout, err: r.stderr };
-}
+import { loadLog, runCli as rtl, scanPoints } from './helpers.js';
 
 describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
   let tmp, pkg;
@@ -49,11 +42,8 @@ describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
     const j = JSON.parse(r.out);
     const { segments: got, failed: gotFailed, ...meta } = j.vectorization;
     assert.deepEqual(meta, { method: 'ftls', primitive: 'line', sigma: 0.02, delta: 0.2 });
-    const scan = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'))[12];
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((rr, i) => {
-      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
-    });
+    const scan = loadLog('intel')[12];
+    const points = scanPoints(scan);
     const expected = [], failed = [];
     pkg.segment(points).clusters.forEach((c, k) => {
       if (c.indices.length < 3) return;
@@ -82,11 +72,8 @@ describe('rtl CLI: vectorization', { timeout: 120000 }, () => {
     const r = rtl(['tests/data/csail.log', '--scan', '12', '-s', '-m', 'aftls']);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
-    const scan = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'))[12];
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((rr, i) => {
-      if (isReturn(rr)) { points[2 * i] = rr * Math.cos(scan.angles[i]); points[2 * i + 1] = rr * Math.sin(scan.angles[i]); }
-    });
+    const scan = loadLog('csail')[12];
+    const points = scanPoints(scan);
     const failed = [];
     pkg.segment(points).clusters.forEach((c, k) => {
       if (c.indices.length < 3) return;

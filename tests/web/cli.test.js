@@ -2,18 +2,10 @@
 // (1 = bad data, 2 = bad usage). Numbers are checked against an independent plain-JavaScript TLS fit.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { DATA, REPO, parseCarmen, returnsOf, sameLine, tlsFit, xyOf } from './helpers.js';
-
-const CLI = join(REPO, 'bin', 'rtl.js');
-
-function rtl(args, input) {
-  const r = spawnSync(process.execPath, [CLI, ...args], { cwd: REPO, encoding: 'utf8', input, timeout: 60000 });
-  return { code: r.status, out: r.stdout, err: r.stderr };
-}
+import { DATA, loadLog, REPO, returnsOf, runCli as rtl, sameLine, tlsFit, xyOf } from './helpers.js';
 
 // Little-endian float32 x,y,z,intensity records of the organised binary scan, read independently of the package.
 function binaryPoint(buf, k) {
@@ -45,7 +37,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     const r = rtl(['tests/data/intel.log', '--scan', '4', '--fit']);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
-    const scans = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
+    const scans = loadLog('intel');
     const scan = scans[4];
     assert.deepEqual(j.source, { type: 'carmen', file: 'tests/data/intel.log', scan: 4, scans: scans.length, line: scan.line, pose: { x: scan.x, y: scan.y, theta: scan.theta } });
     assert.equal(j.dim, 2);
@@ -118,7 +110,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
   test('--fit as SVG (stdout) and as TikZ (a tikzpicture, or a standalone document with -o)', () => {
     let r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'svg']);
     assert.equal(r.code, 0, r.err);
-    const scan = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'))[3];
+    const scan = loadLog('csail')[3];
     assert.match(r.out, /^<svg[\s>]/);
     assert.match(r.out, /<\/svg>\s*$/);
     assert.match(r.out, /<title>tests\/data\/csail\.log<\/title>/);

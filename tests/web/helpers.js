@@ -1,7 +1,8 @@
-// Shared helpers for the page, Vite and CLI tests: a server on a free port, a headless Debian Chromium, and an
-// independent (pure JavaScript, no wasm) CARMEN parser and total-least-squares fit to check the page's numbers against.
-import { spawn } from 'node:child_process';
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+// Shared helpers for the page, Vite and CLI tests: a server on a free port, a headless Debian Chromium, the demo page
+// opened in it, the CLI run as a child process, and an independent (pure JavaScript, no wasm) CARMEN parser and
+// total-least-squares fit to check the page's numbers against.
+import { spawn, spawnSync } from 'node:child_process';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -74,6 +75,51 @@ export function watchConsole(page) {
   return problems;
 }
 
+export const PAGE_TIMEOUT = 30000;
+
+// Serves the repository, opens the demo page (`path` below the server's origin, else the URL serve.js prints) in a
+// fresh Chromium and waits until the page has loaded the package or reported an error. The accessors read the page's
+// test hook window.__rtl; close() stops the browser, then the server.
+export async function openDemoPage(path) {
+  const server = await startServer();
+  let browser;
+  const close = async () => {
+    try { if (browser) await browser.close(); } finally { await server.close(); }
+  };
+  try {
+    browser = await launchBrowser();
+    const page = browser.context.pages()[0] ?? await browser.context.newPage();
+    const problems = watchConsole(page);
+    await page.goto(path ? server.origin + path : server.pageUrl);
+    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null,
+      { timeout: PAGE_TIMEOUT });
+    const state = () => page.evaluate(() => window.__rtl);
+    const revision = () => page.evaluate(() => window.__rtl.revision);
+    // The state once the page has recomputed after `previousRevision`.
+    const settled = async (previousRevision) => {
+      await page.waitForFunction((r) => window.__rtl.revision > r, previousRevision, { timeout: PAGE_TIMEOUT });
+      return state();
+    };
+    // The state once the page shows a result computed with all of the given settings.
+    const settledWith = async (settings) => {
+      await page.waitForFunction((want) => window.__rtl.settings &&
+        Object.entries(want).every(([k, v]) => window.__rtl.settings[k] === v), settings, { timeout: PAGE_TIMEOUT });
+      return state();
+    };
+    return { server, browser, page, problems, state, revision, settled, settledWith, close };
+  } catch (e) {
+    await close();
+    throw e;
+  }
+}
+
+// Runs bin/rtl.js from the repository root.
+export function runCli(args, input) {
+  const r = spawnSync(process.execPath, [join(REPO, 'bin', 'rtl.js'), ...args],
+    { cwd: REPO, encoding: 'utf8', input, timeout: 60000 });
+  return { code: r.status, out: r.stdout, err: r.stderr };
+}
+
 // ---- independent reference computations (no wasm) -----------------------------------------------------------------
 
 // FLASER n r_1..r_n x y theta odom_x odom_y odom_theta ipc_timestamp host logger_timestamp; beam i at
@@ -92,6 +138,9 @@ export function parseCarmen(text) {
   return scans;
 }
 
+// A CARMEN log of tests/data by name ('intel', 'csail'), parsed as above.
+export const loadLog = (name) => parseCarmen(readFileSync(join(DATA, `${name}.log`), 'utf8'));
+
 // In these logs a beam without return reads the sensor's maximum (81.83 m Intel, 81.91 m CSAIL); real returns in the
 // excerpts are all below 20 m, so any cut between the two gives the same gaps.
 export const isReturn = (r) => r > 0 && r < 80;
@@ -104,6 +153,27 @@ export function returnsOf(scan, from = 0, to = scan.n - 1) {
 }
 export function xyOf(scan, beams) {
   return beams.flatMap((i) => [scan.ranges[i] * Math.cos(scan.angles[i]), scan.ranges[i] * Math.sin(scan.angles[i])]);
+}
+
+// The whole scan as the package takes it: x,y of every beam in the robot frame, NaN for beams without a return.
+export function scanPoints(scan) {
+  const points = new Float64Array(2 * scan.n).fill(NaN);
+  scan.ranges.forEach((r, i) => {
+    if (isReturn(r)) { points[2 * i] = r * Math.cos(scan.angles[i]); points[2 * i + 1] = r * Math.sin(scan.angles[i]); }
+  });
+  return points;
+}
+
+// The clusters the package's StreamSegmenter closes for `points` fed at once and flushed (x,y arrays, in order).
+export function streamClusters(pkg, points, options) {
+  const seg = new pkg.StreamSegmenter(options);
+  try {
+    seg.addPoints(points);
+    seg.flush();
+    return seg.takeClosedClusters();
+  } finally {
+    seg.dispose();
+  }
 }
 
 // Plain two-pass TLS in double precision: centroid, covariance, smaller eigenvalue and its eigenvector.

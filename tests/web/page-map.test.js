@@ -2,30 +2,15 @@
 // (TfTree). The drawn points must be R(theta) p + (x, y) of the robot-frame points, computed here independently.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { DATA, isReturn, launchBrowser, parseCarmen, resultsDir, startServer, watchConsole } from './helpers.js';
-
-const TIMEOUT = 30000;
+import { PAGE_TIMEOUT as TIMEOUT, isReturn, loadLog, openDemoPage, resultsDir } from './helpers.js';
 
 describe('demo page (web/index.html) in Chromium: map frame', { timeout: 180000 }, () => {
-  let server, browser, page, problems;
-  const csail = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'));
+  let page, problems, state, close;
+  const csail = loadLog('csail');
 
-  before(async () => {
-    server = await startServer();
-    browser = await launchBrowser();
-    page = browser.context.pages()[0] ?? await browser.context.newPage();
-    problems = watchConsole(page);
-    await page.goto(server.pageUrl);
-    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
-  });
-
-  after(async () => {
-    try { if (browser) await browser.close(); } finally { if (server) await server.close(); }
-  });
-
-  const state = () => page.evaluate(() => window.__rtl);
+  before(async () => ({ page, problems, state, close } = await openDemoPage()));
+  after(() => close?.());
 
   test('the build has TfTree and the page offers the map frame', async () => {
     const r = await state();

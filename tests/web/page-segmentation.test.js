@@ -6,41 +6,18 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
 import {
-  DATA, isReturn, launchBrowser, parseCarmen, resultsDir, sameLine, startServer, tlsFit, watchConsole, xyOf,
+  PAGE_TIMEOUT as TIMEOUT, DATA, isReturn, loadLog, openDemoPage, resultsDir, sameLine, scanPoints, streamClusters,
+  tlsFit, xyOf,
 } from './helpers.js';
 
-const TIMEOUT = 30000;
 const PALETTE = [0x0072B2, 0xE69F00, 0x009E73, 0xD55E00, 0xCC79A7, 0x56B4E9, 0x8C6D1F, 0x1B7837, 0x762A83, 0x332288];
 
 describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 240000 }, () => {
-  let server, browser, page, problems;
-  const intel = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
-  const scan = intel[0];
+  let page, problems, state, revision, settled, settledWith, close;
+  const scan = loadLog('intel')[0];
 
-  before(async () => {
-    server = await startServer();
-    browser = await launchBrowser();
-    page = browser.context.pages()[0] ?? await browser.context.newPage();
-    problems = watchConsole(page);
-    await page.goto(server.pageUrl);
-    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
-  });
-
-  after(async () => {
-    try { if (browser) await browser.close(); } finally { if (server) await server.close(); }
-  });
-
-  const state = () => page.evaluate(() => window.__rtl);
-  const revision = () => page.evaluate(() => window.__rtl.revision);
-  async function settled(previousRevision) {
-    await page.waitForFunction((r) => window.__rtl.revision > r, previousRevision, { timeout: TIMEOUT });
-    return state();
-  }
-  async function settledWith(settings) {
-    await page.waitForFunction((want) => window.__rtl.settings &&
-      Object.entries(want).every(([k, v]) => window.__rtl.settings[k] === v), settings, { timeout: TIMEOUT });
-    return state();
-  }
+  before(async () => ({ page, problems, state, revision, settled, settledWith, close } = await openDemoPage()));
+  after(() => close?.());
 
   test('the build has segment()', async () => {
     const r = await state();
@@ -81,10 +58,7 @@ describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 2400
 
   test('the page shows the same clusters as the package computes in Node for the same scan and settings', async () => {
     const rtl = await init();
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((r, i) => {
-      if (isReturn(r)) { points[2 * i] = r * Math.cos(scan.angles[i]); points[2 * i + 1] = r * Math.sin(scan.angles[i]); }
-    });
+    const points = scanPoints(scan);
     const ref = rtl.segment(points, { step: 3, lowerBound: 0.1, upperBound: 0.5 });
     const r = await state();
     assert.deepEqual(r.segmentation.labels, Array.from(ref.labels));
@@ -146,15 +120,8 @@ describe('demo page (web/index.html) in Chromium: segmentation', { timeout: 2400
     const r = await settledWith({ segmenter: 'ia', scaling: 0.1 });
     assert.equal(await page.isVisible('#seg-scaling'), true);
     const rtl = await init();
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((range, i) => {
-      if (isReturn(range)) { points[2 * i] = range * Math.cos(scan.angles[i]); points[2 * i + 1] = range * Math.sin(scan.angles[i]); }
-    });
-    const seg = new rtl.StreamSegmenter({ step: 3, lowerBound: 0.1, upperBound: 0.5, scaling: 0.1 });
-    seg.addPoints(points);
-    seg.flush();
-    const clusters = seg.takeClosedClusters();
-    seg.dispose();
+    const points = scanPoints(scan);
+    const clusters = streamClusters(rtl, points, { step: 3, lowerBound: 0.1, upperBound: 0.5, scaling: 0.1 });
     assert.deepEqual(r.segmentation.clusterSizes, clusters.map((c) => c.length / 2));
     clusters.forEach((xy, k) => {
       const members = r.segmentation.labels.flatMap((l, i) => (l === k ? [i] : []));

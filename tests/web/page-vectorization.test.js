@@ -2,44 +2,16 @@
 // sigma / epsilon act as they should.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import {
-  DATA, isReturn, launchBrowser, parseCarmen, resultsDir, startServer, watchConsole,
-} from './helpers.js';
-
-const TIMEOUT = 30000;
+import { loadLog, openDemoPage, resultsDir, scanPoints } from './helpers.js';
 
 describe('demo page (web/index.html) in Chromium: vectorization', { timeout: 240000 }, () => {
-  let server, browser, page, problems;
-  const intel = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
-  const scan = intel[0];
+  let page, problems, state, revision, settled, settledWith, close;
+  const scan = loadLog('intel')[0];
 
-  before(async () => {
-    server = await startServer();
-    browser = await launchBrowser();
-    page = browser.context.pages()[0] ?? await browser.context.newPage();
-    problems = watchConsole(page);
-    await page.goto(server.pageUrl);
-    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
-  });
-
-  after(async () => {
-    try { if (browser) await browser.close(); } finally { if (server) await server.close(); }
-  });
-
-  const state = () => page.evaluate(() => window.__rtl);
-  const revision = () => page.evaluate(() => window.__rtl.revision);
-  async function settled(previousRevision) {
-    await page.waitForFunction((r) => window.__rtl.revision > r, previousRevision, { timeout: TIMEOUT });
-    return state();
-  }
-  async function settledWith(settings) {
-    await page.waitForFunction((want) => window.__rtl.settings &&
-      Object.entries(want).every(([k, v]) => window.__rtl.settings[k] === v), settings, { timeout: TIMEOUT });
-    return state();
-  }
+  before(async () => ({ page, problems, state, revision, settled, settledWith, close } = await openDemoPage()));
+  after(() => close?.());
 
   test('the build has vectorize()', async () => {
     const r = await state();
@@ -73,10 +45,7 @@ describe('demo page (web/index.html) in Chromium: vectorization', { timeout: 240
 
   test('the page draws the segments vectorize() computes in Node for each cluster', async () => {
     const rtl = await init();
-    const points = new Float64Array(2 * scan.n).fill(NaN);
-    scan.ranges.forEach((r, i) => {
-      if (isReturn(r)) { points[2 * i] = r * Math.cos(scan.angles[i]); points[2 * i + 1] = r * Math.sin(scan.angles[i]); }
-    });
+    const points = scanPoints(scan);
     const seg = rtl.segment(points);
     for (const method of ['aftls', 'rw']) {
       const rev = await revision();

@@ -5,35 +5,17 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import {
-  DATA, launchBrowser, parseCarmen, resultsDir, returnsOf, sameLine, startServer, tlsFit, watchConsole, xyOf,
+  PAGE_TIMEOUT as TIMEOUT, loadLog, openDemoPage, resultsDir, returnsOf, sameLine, tlsFit, xyOf,
 } from './helpers.js';
 
-const TIMEOUT = 30000;
-
 describe('demo page (web/index.html) in Chromium: scans and the TLS line fit', { timeout: 180000 }, () => {
-  let server, browser, page, problems;
-  const intel = parseCarmen(readFileSync(join(DATA, 'intel.log'), 'utf8'));
-  const csail = parseCarmen(readFileSync(join(DATA, 'csail.log'), 'utf8'));
+  let page, problems, settledWith, close;
+  const intel = loadLog('intel');
+  const csail = loadLog('csail');
 
-  before(async () => {
-    server = await startServer();
-    browser = await launchBrowser();
-    page = browser.context.pages()[0] ?? await browser.context.newPage();
-    problems = watchConsole(page);
-    await page.goto(`${server.origin}/web/index.html`);   // the file itself, as issue 2 asks (/web/ serves it too)
-    await page.waitForFunction(() => window.__rtl && (window.__rtl.ready || window.__rtl.errors.length > 0), null, { timeout: TIMEOUT });
-  });
-
-  after(async () => {
-    try { if (browser) await browser.close(); } finally { if (server) await server.close(); }
-  });
-
-  // Waits until the page shows a result computed with all of the given settings.
-  async function settledWith(settings) {
-    await page.waitForFunction((want) => window.__rtl.settings &&
-      Object.entries(want).every(([k, v]) => window.__rtl.settings[k] === v), settings, { timeout: TIMEOUT });
-    return page.evaluate(() => window.__rtl);
-  }
+  // The file itself, as issue 2 asks (/web/ serves it too).
+  before(async () => ({ page, problems, settledWith, close } = await openDemoPage('/web/index.html')));
+  after(() => close?.());
 
   test('loads the package and shows Intel scan 0 without errors', async () => {
     const r = await page.evaluate(() => window.__rtl);
