@@ -32,6 +32,17 @@
 #include "rtl/core/VectorND.h"
 #include "rtl/seg/ProximityCriterion.h"
 
+// Keeps the rare paths out of the inlined per-point code.
+#ifndef RTL_SEG_NOINLINE
+#if defined(__GNUC__) || defined(__clang__)
+#define RTL_SEG_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define RTL_SEG_NOINLINE __declspec(noinline)
+#else
+#define RTL_SEG_NOINLINE
+#endif
+#endif
+
 namespace rtl
 {
     template<class Vector>
@@ -55,7 +66,8 @@ namespace rtl
         void setUpperBound(ElementType ub) { upper_ = ub; checked_ = false; }
         void setScaling(ElementType scale) { scaling_ = scale; checked_ = false; }
 
-        [[nodiscard]] size_t closedClustersAvailable() const { return closed_.size(); }
+        // empty() first: polled after every point, and a deque's size() costs a dozen instructions
+        [[nodiscard]] size_t closedClustersAvailable() const { return closed_.empty() ? 0 : closed_.size(); }
         [[nodiscard]] size_t aliveClustersAvailable() const { return alive_.size(); }
         [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const
         {
@@ -65,16 +77,55 @@ namespace rtl
 
         void addPoint(const VectorType &pt, const VectorType &origin = VectorType::zeros())
         {
-            if (!checked_) checkParameters();
-            ElementType rsq = 0;
-            bool valid = true, origin_finite = true;
+            // x - x is 0 for finite x, NaN otherwise, so one comparison of the sums checks every coordinate
+            ElementType rsq = 0, pz = 0, oz = 0;
             for (int k = 0; k < D; ++k)
             {
                 const ElementType a = pt.data()[k], o = origin.data()[k];
                 rsq += (a - o) * (a - o);
-                valid &= (a - a) == ElementType(0);
-                origin_finite &= (o - o) == ElementType(0);
+                pz += a - a;
+                oz += o - o;
             }
+            const bool valid = pz == ElementType(0), origin_finite = oz == ElementType(0);
+            // hot path, kept small enough to inline: step 1, the point continues the staged cluster
+            const size_t prev = wrec_[0];
+            if (step_ == 1 && checked_ && origin_finite && valid && prev == stage_rec_ && prev != none &&
+                seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
+            {
+                stage_[staged_++] = wpts_[0];
+                if (staged_ == stage_.size()) flushStage();
+                wpts_[0] = pt;
+                ++stream_;
+                return;
+            }
+            addPointSlow(pt, valid, origin_finite, rsq);
+        }
+
+        //! Removes and returns the oldest closed cluster; an empty vector when none is closed.
+        std::vector<VectorType> grabCluster()
+        {
+            if (closed_.empty()) return {};
+            std::vector<VectorType> c = std::move(closed_.front());
+            closed_.pop_front();
+            return c;
+        }
+
+        //! End of stream: every window point leaves the window (oldest first), so every cluster closes.
+        void flush()
+        {
+            for (size_t k = 0; k < count_; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
+            head_ = 0;
+            count_ = 0;
+        }
+
+    private:
+        static constexpr int D = VectorType::dimensionality();
+        static constexpr size_t none = std::numeric_limits<size_t>::max();
+        typedef std::map<size_t, std::vector<VectorType>> AliveMap;
+
+        RTL_SEG_NOINLINE void addPointSlow(const VectorType &pt, bool valid, bool origin_finite, ElementType rsq)
+        {
+            if (!checked_) checkParameters();
             if (!origin_finite) throw std::invalid_argument("IA_Segmenter::addPoint: the origin must be finite");
             if (step_ == 1)
             {
@@ -113,28 +164,6 @@ namespace rtl
             wrec_[slot] = rec;
             widx_[slot] = stream_++;
         }
-
-        //! Removes and returns the oldest closed cluster; an empty vector when none is closed.
-        std::vector<VectorType> grabCluster()
-        {
-            if (closed_.empty()) return {};
-            std::vector<VectorType> c = std::move(closed_.front());
-            closed_.pop_front();
-            return c;
-        }
-
-        //! End of stream: every window point leaves the window (oldest first), so every cluster closes.
-        void flush()
-        {
-            for (size_t k = 0; k < count_; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
-            head_ = 0;
-            count_ = 0;
-        }
-
-    private:
-        static constexpr int D = VectorType::dimensionality();
-        static constexpr size_t none = std::numeric_limits<size_t>::max();
-        typedef std::map<size_t, std::vector<VectorType>> AliveMap;
 
         struct Record
         {
@@ -193,7 +222,7 @@ namespace rtl
                 {
                     flushStage();
                     Record &R = recs_[prev];
-                    pushAlive(R, wpts_[0], widx_[0]);
+                    pushAlive(R, wpts_[0], stream_ - 1);
                     stage_rec_ = R.contiguous ? prev : none;
                 }
             }
@@ -210,7 +239,7 @@ namespace rtl
                 count_ = 1;
             }
             wpts_[0] = pt;
-            widx_[0] = stream_++;
+            ++stream_;
         }
 
         // Appends a point that leaves the window to its cluster's alive list (created on the first point).
@@ -273,7 +302,7 @@ namespace rtl
                 free_.push_back(r);
                 return;
             }
-            pushAlive(R, wpts_[slot], widx_[slot]);
+            pushAlive(R, wpts_[slot], step_ == 1 ? stream_ - 1 : widx_[slot]);
             std::vector<VectorType> &v = R.alive->second;
             if (--R.in_window == 0)
             {
@@ -291,7 +320,7 @@ namespace rtl
         // Step 1 streams the points of one cluster into a small staging array first, and appends them to the alive
         // list in blocks: a push_back per point would chain four dependent loads (record, map node, vector end).
         // Everything that reads or changes alive lists flushes it first.
-        void flushStage() const
+        RTL_SEG_NOINLINE void flushStage() const
         {
             if (staged_ == 0) return;
             std::vector<VectorType> &v = recs_[stage_rec_].alive->second;
@@ -386,7 +415,7 @@ namespace rtl
                 const size_t w = head_ + k < step_ ? head_ + k : head_ + k - step_;
                 pts[m] = wpts_[w];
                 rec[m] = wrec_[w];
-                idx[m] = widx_[w];
+                idx[m] = step_ == 1 ? stream_ - 1 : widx_[w];
             }
             count_ = std::min(count_, step);
             head_ = 0;
@@ -404,7 +433,7 @@ namespace rtl
         // window: a ring of step_ slots, count_ of them used, head_ the oldest; wrec_ is none for gaps and free slots
         size_t step_ = 0, head_ = 0, count_ = 0;
         std::vector<VectorType> wpts_;
-        std::vector<size_t> wrec_, widx_;
+        std::vector<size_t> wrec_, widx_;                         // widx_ unused at step 1: its point is stream_ - 1
 
         std::vector<Record> recs_;
         std::vector<size_t> free_;
