@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -60,7 +61,7 @@ namespace rtl
 
         void setEpsilon(ElementType eps) { eps2 = eps * eps; }
         //! Reserves the working buffers for inputs of up to `size` points.
-        void setMaxSize(size_t size) { keep.reserve(size); stack.reserve(size); keys.reserve(size); }
+        void setMaxSize(size_t size) { keep.reserve(size); stack.reserve(size); keys.reserve(size); soa.reserve(dimensions * size); }
 
         //! Clears `output` and fills it with the simplified polyline (empty for fewer than 2 points).
         void operator()(const std::vector<VectorType> &input, std::vector<LineSegmentType> &output)
@@ -70,6 +71,23 @@ namespace rtl
             if (n < 2) { output.clear(); return; }
             keep.assign(n, 0);
             keep[0] = keep[n - 1] = 1;
+            if constexpr (dimensions == 2 || dimensions == 3)
+            {
+                // Coordinates as separate arrays: the distance scans below then run on plain SIMD lanes. `tame`:
+                // all |coordinates| <= sqrt(max) / 4, so no cross product can be NaN (differences and products stay
+                // finite; squares may only overflow to +inf), which the blockwise maximum relies on.
+                soa.resize(dimensions * n);
+                const Element lim = std::sqrt(std::numeric_limits<Element>::max()) / 4;
+                int ok = 1;
+                for (size_t i = 0; i < n; ++i)
+                    for (int k = 0; k < dimensions; ++k)
+                    {
+                        const Element v = input[i][k];
+                        soa[k * n + i] = v;
+                        ok &= static_cast<int>(std::abs(v) <= lim);
+                    }
+                tame = ok != 0;
+            }
             stack.clear();
             stack.emplace_back(0, n - 1);
             while (!stack.empty())
@@ -78,7 +96,7 @@ namespace rtl
                 stack.pop_back();
                 if (b - a < 2)
                     continue;
-                const size_t far = farthest(input, a, b);
+                const size_t far = (dimensions == 2 || dimensions == 3) && tame ? farthestSoa(input, a, b) : farthest(input, a, b);
                 if (far != 0)
                 {
                     keep[far] = 1;
@@ -158,7 +176,63 @@ namespace rtl
         }
 
     private:
+        //! farthest() on the coordinate arrays in `soa` (same operations per point, so the same result): blocks of
+        //! 16 points are compared with the best so far without branches; only a block with a point beyond it is
+        //! rescanned in order for its first maximal index.
+        size_t farthestSoa(const std::vector<VectorType> &pts, size_t a, size_t b) const
+        {
+            const Element l2 = (pts[b] - pts[a]).lengthSquared();
+            if (!(l2 > Element(0)))
+                return farthest(pts, a, b);
+            const size_t n = pts.size();
+            const Element *x = soa.data(), *y = x + n, *z = y + n;
+            const Element ax = x[a], ay = y[a], az = dimensions == 3 ? z[a] : Element(0);
+            const Element ux = x[b] - ax, uy = y[b] - ay, uz = dimensions == 3 ? z[b] - az : Element(0);
+            Element best_c = eps2 * l2;
+            size_t best = 0;
+            const auto cross2 = [&](size_t i) {
+                if constexpr (dimensions == 2)
+                {
+                    const Element c = (x[i] - ax) * uy - (y[i] - ay) * ux;
+                    return c * c;
+                }
+                else
+                {
+                    const Element vx = x[i] - ax, vy = y[i] - ay, vz = z[i] - az;
+                    const Element cx = vy * uz - vz * uy, cy = vz * ux - vx * uz, cz = vx * uy - vy * ux;
+                    return cx * cx + cy * cy + cz * cz;
+                }
+            };
+            constexpr size_t block = 16;
+            size_t i = a + 1;
+            for (; i + block <= b; i += block)
+            {
+                Element c2[block];
+                for (size_t k = 0; k < block; ++k)
+                    c2[k] = cross2(i + k);
+                // Maximum by a tree of pairwise maxima (no NaN here: see `tame`).
+                Element t8[8], t4[4];
+                for (size_t k = 0; k < 8; ++k)
+                    t8[k] = c2[k] > c2[k + 8] ? c2[k] : c2[k + 8];
+                for (size_t k = 0; k < 4; ++k)
+                    t4[k] = t8[k] > t8[k + 4] ? t8[k] : t8[k + 4];
+                const Element m01 = t4[0] > t4[1] ? t4[0] : t4[1], m23 = t4[2] > t4[3] ? t4[2] : t4[3];
+                const bool beats = (m01 > m23 ? m01 : m23) > best_c;
+                if (beats)
+                    for (size_t k = 0; k < block; ++k)
+                        if (c2[k] > best_c) { best_c = c2[k]; best = i + k; }
+            }
+            for (; i < b; ++i)
+            {
+                const Element c = cross2(i);
+                if (c > best_c) { best_c = c; best = i; }
+            }
+            return best;
+        }
+
         Element eps2{static_cast<Element>(1e-6)};
+        std::vector<Element> soa;
+        bool tame{false};
         std::vector<char> keep;
         std::vector<std::pair<size_t, size_t>> stack;
         std::vector<size_t> keys;
