@@ -1,5 +1,6 @@
 // Prefix sums, the three TLS approximations against independent fits, and the point-elimination vectorizers
 // against straightforward references.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -508,3 +509,38 @@ TEST(VectorizerDouglasPeucker, EdgeCases)
     ASSERT_EQ(out.size(), 1u);
     EXPECT_EQ(out[0].end(), line.back());
 }
+
+namespace
+{
+    // A non-finite coordinate makes Douglas-Peucker leave its blockwise (SoA) farthest-point scan, which assumes
+    // finite distances, for the plain scan. That scan must keep exactly the points of the reference, and a point
+    // whose distance is NaN is never kept.
+    template<int d>
+    void checkDouglasPeuckerWithNonFinitePoints(unsigned seed)
+    {
+        std::mt19937 gen(seed);
+        for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+            for (double eps : {0.01, 0.09, 0.5})
+            {
+                auto pts = wiggly<d>(gen, 2000);
+                const size_t bad_index = 777;
+                Eigen::Matrix<double, d, 1> q = pts[bad_index].data();
+                q(1) = bad;
+                pts[bad_index] = rtl::VectorND<d, double>(q);
+                std::vector<rtl::LineSegmentND<d, double>> out;
+                rtl::VectorizerDouglasPeuckerND<d, double> dp(eps);
+                dp(pts, out);
+                std::vector<size_t> ref{0};
+                dpReference<d>(pts, 0, pts.size() - 1, eps, ref);
+                ref.push_back(pts.size() - 1);
+                ASSERT_GT(ref.size(), 3u) << "eps=" << eps;
+                ASSERT_EQ(out.size() + 1, ref.size()) << "bad=" << bad << " eps=" << eps;
+                const auto keys = keysOf<d>(pts, out);
+                EXPECT_EQ(keys, ref) << "bad=" << bad << " eps=" << eps;
+                EXPECT_EQ(std::count(keys.begin(), keys.end(), bad_index), 0) << "bad=" << bad << " eps=" << eps;
+            }
+    }
+}
+
+TEST(VectorizerDouglasPeucker, NonFinitePointsTakeThePlainScanAndAreNeverKept2D) { checkDouglasPeuckerWithNonFinitePoints<2>(21); }
+TEST(VectorizerDouglasPeucker, NonFinitePointsTakeThePlainScanAndAreNeverKept3D) { checkDouglasPeuckerWithNonFinitePoints<3>(22); }

@@ -46,7 +46,9 @@ namespace rtl
 
     //! Douglas-Peucker: keeps the end points, then recursively (with an explicit stack) the point farthest from the
     //! infinite line through the current end points while that distance exceeds epsilon. Coincident end points
-    //! measure the distance to the point. Ties keep the first farthest point.
+    //! measure the distance to the point. Ties keep the first farthest point. Points with a NaN or infinite
+    //! coordinate are never kept (the end points are always kept). Distances are compared squared, so coordinates
+    //! beyond sqrt(max)/4 (about 3e153 in double, 4e18 in float) may overflow.
     template<int dimensions, typename Element>
     class VectorizerDouglasPeuckerND
     {
@@ -109,8 +111,16 @@ namespace rtl
             vect_detail::polyline(input, keys, output);
         }
 
+        static bool finite(const VectorType &p)
+        {
+            for (int k = 0; k < dimensions; ++k)
+                if (!std::isfinite(p[k]))
+                    return false;
+            return true;
+        }
+
         //! Index in (a, b) of the first point farthest from line (pts[a], pts[b]) if that distance exceeds
-        //! epsilon, else 0.
+        //! epsilon, else 0. Points with a non-finite coordinate are never picked.
         size_t farthest(const std::vector<VectorType> &pts, size_t a, size_t b) const
         {
             const VectorType &pa = pts[a];
@@ -138,23 +148,12 @@ namespace rtl
                             return cx * cx + cy * cy + cz * cz;
                         }
                     };
-                    size_t i = a + 1;
-                    constexpr size_t block = 8;
-                    Element c2[block];
-                    for (; i + block <= b; i += block)
+                    // Only reached when some coordinate is non-finite or huge (the SoA scan handles the rest):
+                    // a plain scan that never keeps a point with a non-finite coordinate.
+                    for (size_t i = a + 1; i < b; ++i)
                     {
-                        Element m = 0;
-                        for (size_t k = 0; k < block; ++k)
-                        {
-                            c2[k] = cross2(pts[i + k]);
-                            m = m > c2[k] ? m : c2[k];
-                        }
-                        if (m > best_c)
-                            for (size_t k = 0; k < block; ++k)
-                                if (c2[k] > best_c) { best_c = c2[k]; best = i + k; }
-                    }
-                    for (; i < b; ++i)
-                    {
+                        if (!finite(pts[i]))
+                            continue;
                         const Element c = cross2(pts[i]);
                         if (c > best_c) { best_c = c; best = i; }
                     }
@@ -164,6 +163,8 @@ namespace rtl
             Element best_d = eps2;
             for (size_t i = a + 1; i < b; ++i)
             {
+                if (!finite(pts[i]))
+                    continue;
                 const VectorType v = pts[i] - pa;
                 Element d2;
                 if (l2 > Element(0))
