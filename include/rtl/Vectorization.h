@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <list>
 #include <map>
 #include <tuple>
@@ -40,10 +41,15 @@ namespace rtl
         template<class V>
         bool allFinite(const std::vector<V> &pts)
         {
+            // |v| <= max is false exactly for NaN and +-inf. An integer AND over all coordinates, without an early
+            // exit, vectorises: this pass costs a fraction of a nanosecond per point instead of a branch per point.
+            typedef std::remove_cv_t<std::remove_reference_t<decltype(pts.front().data()(0))>> E;
+            const E max = std::numeric_limits<E>::max();
+            int ok = 1;
             for (const auto &p : pts)
-                if (!p.data().allFinite())
-                    return false;
-            return true;
+                for (Eigen::Index k = 0; k < p.data().size(); ++k)
+                    ok &= static_cast<int>(std::abs(p.data()(k)) <= max);
+            return ok != 0;
         }
 
         template<typename E>
