@@ -79,38 +79,47 @@ namespace rtl
         };
     }
 
+    namespace vect_detail
+    {
+        //! Incremental TLS extraction -> projected end points, for 2D and 3D lines.
+        template<class Approximation>
+        class VectorizerIncremental : public VectorizerBase<Approximation>
+        {
+            typedef VectorizerBase<Approximation> Base;
+        public:
+            using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+            using typename Base::ApproximationType; using typename Base::IndexType;
+            typedef typename ApproximationType::ConstrainedType OutputType;
+
+            void setSigma(ElementType sigma) { this->sigma = sigma; }
+            void setMaxSize(size_t size) { this->reserveBase(size); }
+
+            bool operator()(const std::vector<VectorType> &pts)
+            {
+                if (pts.size() < 2 || !validParameter(this->sigma) || !allFinite(pts) ||
+                    (extractor.setSigma(this->sigma), !extractor(pts, this->approx, this->idx)) || !post(pts, this->approx, this->idx))
+                {
+                    this->fail();
+                    post(pts, this->approx, this->idx);
+                    return false;
+                }
+                return true;
+            }
+            const std::vector<OutputType> &lineSegments() const { return post.output(); }
+
+        private:
+            ExtractorChainIncremental<ApproximationType> extractor;
+            PostprocessorProjectEndpoints<ApproximationType> post;
+        };
+    }
+
     //! Incremental TLS lines, trimmed by the projections of each range's end points.
     template<typename Element, typename Compute>
-    class VectorizerITLSProjections2D : public vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>>
+    class VectorizerITLSProjections2D : public vect_detail::VectorizerIncremental<ApproximationTlsLine2D<Element, Compute>>
     {
-        typedef vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>> Base;
     public:
-        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
-        using typename Base::ApproximationType; using typename Base::IndexType;
-        typedef typename ApproximationType::ConstrainedType OutputType;
-
         VectorizerITLSProjections2D() = default;
         ~VectorizerITLSProjections2D() = default;
-
-        void setSigma(ElementType sigma) { this->sigma = sigma; }
-        void setMaxSize(size_t size) { this->reserveBase(size); }
-
-        bool operator()(const std::vector<VectorType> &pts)
-        {
-            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::allFinite(pts) ||
-                (extractor.setSigma(this->sigma), !extractor(pts, this->approx, this->idx)) || !post(pts, this->approx, this->idx))
-            {
-                this->fail();
-                post(pts, this->approx, this->idx);
-                return false;
-            }
-            return true;
-        }
-        const std::vector<OutputType> &lineSegments() const { return post.output(); }
-
-    private:
-        ExtractorChainIncremental<ApproximationType> extractor;
-        PostprocessorProjectEndpoints<ApproximationType> post;
     };
 
     //! FTLS: prefix sums, fast chain extraction, continuity repair, polyline of line crossings.
@@ -210,36 +219,11 @@ namespace rtl
 
     //! Incremental TLS 3D lines, trimmed by the projections of each range's end points.
     template<typename Element, typename Compute>
-    class VectorizerITLSProjections3D : public vect_detail::VectorizerBase<ApproximationTlsLine3D<Element, Compute>>
+    class VectorizerITLSProjections3D : public vect_detail::VectorizerIncremental<ApproximationTlsLine3D<Element, Compute>>
     {
-        typedef vect_detail::VectorizerBase<ApproximationTlsLine3D<Element, Compute>> Base;
     public:
-        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
-        using typename Base::ApproximationType; using typename Base::IndexType;
-        typedef typename ApproximationType::ConstrainedType OutputType;
-
         VectorizerITLSProjections3D() = default;
         ~VectorizerITLSProjections3D() = default;
-
-        void setSigma(ElementType sigma) { this->sigma = sigma; }
-        void setMaxSize(size_t size) { this->reserveBase(size); }
-
-        bool operator()(const std::vector<VectorType> &pts)
-        {
-            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::allFinite(pts) ||
-                (extractor.setSigma(this->sigma), !extractor(pts, this->approx, this->idx)) || !post(pts, this->approx, this->idx))
-            {
-                this->fail();
-                post(pts, this->approx, this->idx);
-                return false;
-            }
-            return true;
-        }
-        const std::vector<OutputType> &lineSegments() const { return post.output(); }
-
-    private:
-        ExtractorChainIncremental<ApproximationType> extractor;
-        PostprocessorProjectEndpoints<ApproximationType> post;
     };
 
     namespace vect_detail
