@@ -1,7 +1,6 @@
 // Readers: CARMEN logs (rtl/io/CarmenLog.h) and organised LiDAR binaries (rtl/io/OrganizedLidar.h), from bytes
 // in the wasm heap.
 #include "adapter.h"
-#include "charconv_shim.h"  // before CarmenLog.h: floating-point from_chars for libc++ 14
 
 #include <istream>
 

@@ -8,9 +8,11 @@
 // Other records (#, PARAM, ODOM, NEFF, RLASER, ...) carry no front laser scan and are skipped.
 #pragma once
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <fstream>
 #include <istream>
 #include <stdexcept>
@@ -57,11 +59,32 @@ namespace rtl
             throw std::runtime_error("CARMEN log, line " + std::to_string(line) + ": " + what);
         }
 
+        //! A whole token as a double, with std::from_chars' rules (no '+', no hex). Standard libraries without
+        //! floating-point from_chars (libc++ before 17, e.g. Emscripten's) get the same rules on strtod, which
+        //! follows the C locale that programs have unless they call setlocale.
+        inline bool parseDouble(std::string_view tok, double &v)
+        {
+#if defined(__cpp_lib_to_chars)
+            auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+            return ec == std::errc() && end == tok.data() + tok.size();
+#else
+            if (tok.empty() || tok.front() == '+' || tok.find_first_of("xX") != std::string_view::npos)
+                return false;
+            const std::string text(tok);
+            char *end = nullptr;
+            errno = 0;
+            const double r = std::strtod(text.c_str(), &end);
+            if (end != text.c_str() + text.size() || (errno == ERANGE && std::abs(r) == HUGE_VAL))
+                return false;
+            v = r;
+            return true;
+#endif
+        }
+
         inline double number(std::string_view tok, std::size_t line, const char *field)
         {
             double v = 0;
-            auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
-            if (ec != std::errc() || end != tok.data() + tok.size())
+            if (!parseDouble(tok, v))
                 fail(line, std::string("bad ") + field + " '" + std::string(tok) + "'");
             return v;
         }
