@@ -6,6 +6,17 @@
 //     if constexpr (Observer::enabled) if (observer_) (*observer_)(Event{...});
 // so that with NoTrace the event is never built and the untraced code is exactly the code without tracing.
 //
+// Every event type names itself and lists its fields, so that one generic converter (the wasm binding, a printer,
+// a test) handles all of them:
+//     struct Compare {
+//         static constexpr const char *kind = "compare";
+//         size_t i, j; double distance, threshold; bool linked;
+//         template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("distance", distance);
+//                                                      f("threshold", threshold); f("linked", linked); }
+//     };
+// Field values are integers, floating-point numbers or bools. A trace replayed from its first event to its last
+// ends in the state the algorithm returns.
+//
 // TraceLog<Events...> records every event in order, as a std::variant, for tests, teaching tools and bindings.
 #pragma once
 
