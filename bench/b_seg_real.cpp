@@ -69,7 +69,7 @@ namespace
         }, opt.repetitions);
 
         size_t car_clusters = 0;
-        rtl::CAR_Segmenter<V> car(1, lb, ub);
+        rtl::CAR_Segmenter<V> car(2, lb, ub);   // step 2: each point compared with its predecessor
         const auto t_car = rtl::bench::seg::measure([&] {
             car_clusters = 0;
             for (size_t r = 0; r < repeat; ++r)

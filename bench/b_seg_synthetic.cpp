@@ -49,8 +49,10 @@ namespace
         }, reps);
     }
 
+    //! window: how many previous points each point is compared with; CAR at step window + 1, IA at step window
+    //! with CAR's scaling, so that both do the same work.
     template<class V>
-    void run(const char *dim, size_t n, size_t k, size_t step, const rtl::bench::Options &opt)
+    void run(const char *dim, size_t n, size_t k, size_t window, const rtl::bench::Options &opt)
     {
         using E = typename V::ElementType;
         const auto pts = scan<V>(n, k, 7);
@@ -58,7 +60,7 @@ namespace
         const auto t_floor = floorSeconds(pts, d2, opt.repetitions);
 
         size_t car_clusters = 0, car_points = 0;
-        rtl::CAR_Segmenter<V> car(step, E(0.05), E(0.5));
+        rtl::CAR_Segmenter<V> car(window + 1, E(0.05), E(0.5));
         const auto t_car = rtl::bench::seg::measure([&] {
             car.loadData(pts);
             car_clusters = car_points = 0;
@@ -71,7 +73,7 @@ namespace
 
         size_t ia_clusters = 0, ia_points = 0;
         const auto t_ia = rtl::bench::seg::measure([&] {
-            rtl::IA_Segmenter<V> ia(step, E(0.05), E(0.5), rtl::seg_detail::circularScaling<E>(step, n));
+            rtl::IA_Segmenter<V> ia(window, E(0.05), E(0.5), rtl::seg_detail::circularScaling<E>(window + 1, n));
             ia_clusters = ia_points = 0;
             for (const auto &p : pts)
             {
@@ -98,7 +100,7 @@ namespace
             std::exit(1);
         }
         const std::string tag = std::string(dim) + " " + (sizeof(E) == 4 ? "float" : "double") + " k=" + std::to_string(k) +
-                                " step " + std::to_string(step);
+                                " window " + std::to_string(window);
         rtl::bench::seg::row("floor (consecutive d^2) " + tag, n, t_floor, t_floor);
         rtl::bench::seg::row("CAR batch " + tag, n, t_car, t_floor);
         rtl::bench::seg::row("IA stream " + tag, n, t_ia, t_floor);
@@ -108,7 +110,7 @@ namespace
 int main(int argc, char **argv)
 {
     const auto opt = rtl::bench::parseOptions(argc, argv);
-    const size_t n = opt.smoke ? 100000 : 1000000;   // smoke: clusters of 10 points, too far apart for step 3
+    const size_t n = opt.smoke ? 100000 : 1000000;   // smoke: clusters of 10 points, too far apart for a window of 3
     rtl::bench::printHeader("segmenters on synthetic closed scans (ratio = time / floor time)");
     for (size_t k : {size_t(10), size_t(10000)})
     {

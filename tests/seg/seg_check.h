@@ -1,5 +1,11 @@
 // Test helpers for the segmenters: a brute-force reference segmentation and invariant checks that map the clusters
 // back to scan indices.
+//
+// Windows (rtl-api §5.1, §5.2): CAR at step s compares each point with the s - 1 previous points (cyclically), IA at
+// step s with the s previous points. The helpers below take the window (how many previous points) explicitly;
+// checkCar and checkIa derive it from the step. IA at step s and CAR at step s + 1 therefore compare the same pairs,
+// and with IA's scaling set to CAR's (s + 1) * 2 pi / N they apply the same threshold: checkIa uses that scaling,
+// so that checkAgreement can compare the stream result at step s with the batch result at step s + 1.
 #pragma once
 
 #include <algorithm>
@@ -43,12 +49,12 @@ namespace segcheck
     };
 
     //! Calls f(j, i) for every ordered pair of the criterion's window: i the later point, j = i - k (cyclic or not),
-    //! k = 1..step.
+    //! k = 1..window.
     template<class F>
-    void forEachWindowPair(size_t n, size_t step, bool cyclic, F &&f)
+    void forEachWindowPair(size_t n, size_t window, bool cyclic, F &&f)
     {
         for (size_t i = 0; i < n; ++i)
-            for (size_t k = 1; k <= step; ++k)
+            for (size_t k = 1; k <= window; ++k)
             {
                 if (cyclic ? k >= n : k > i) break;
                 f((i + n - k) % n, i);
@@ -57,12 +63,12 @@ namespace segcheck
 
     //! Reference partition: label = smallest index of the point's component, `gap` for gaps.
     template<class V>
-    std::vector<size_t> referenceLabels(const std::vector<V> &pts, const V &origin, size_t step, typename V::ElementType scaling,
+    std::vector<size_t> referenceLabels(const std::vector<V> &pts, const V &origin, size_t window, typename V::ElementType scaling,
                                         typename V::ElementType lb, typename V::ElementType ub, bool cyclic)
     {
         const size_t n = pts.size();
         UnionFind uf(n);
-        forEachWindowPair(n, step, cyclic, [&](size_t j, size_t i) {
+        forEachWindowPair(n, window, cyclic, [&](size_t j, size_t i) {
             if (!isGap(pts[i]) && !isGap(pts[j]) && rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub)) uf.unite(i, j);
         });
         std::vector<size_t> l(n);
@@ -139,9 +145,9 @@ namespace segcheck
         return idx;
     }
 
-    //! Increasing indices with at most step - 1 skipped between neighbours; with `may_wrap`, one descent is allowed
-    //! where the cluster crosses the seam (then the skip is counted cyclically).
-    inline void checkOrder(const std::vector<std::vector<size_t>> &clusters, size_t n, size_t step, bool may_wrap,
+    //! Increasing indices, neighbours at most `window` apart (window - 1 indices skipped); with `may_wrap`, one
+    //! descent is allowed where the cluster crosses the seam (then the distance is counted cyclically).
+    inline void checkOrder(const std::vector<std::vector<size_t>> &clusters, size_t n, size_t window, bool may_wrap,
                            const std::string &what)
     {
         size_t bad = 0;
@@ -152,11 +158,11 @@ namespace segcheck
             {
                 const size_t a = c[k - 1], b = c[k];
                 if (b > a)
-                    bad += (b - a - 1 > step - 1) ? 1 : 0;
+                    bad += (b - a > window) ? 1 : 0;
                 else
                 {
                     ++descents;
-                    bad += (!may_wrap || b + n - a - 1 > step - 1) ? 1 : 0;
+                    bad += (!may_wrap || b + n - a > window) ? 1 : 0;
                 }
             }
             bad += descents > 1 ? 1 : 0;
@@ -166,7 +172,7 @@ namespace segcheck
 
     //! Every point of a cluster of two or more has a partner of its cluster that meets the criterion.
     template<class V>
-    void checkPartners(const std::vector<V> &pts, const V &origin, size_t step, typename V::ElementType scaling,
+    void checkPartners(const std::vector<V> &pts, const V &origin, size_t window, typename V::ElementType scaling,
                        typename V::ElementType lb, typename V::ElementType ub, bool cyclic, const std::vector<size_t> &labels,
                        const std::string &what)
     {
@@ -174,7 +180,7 @@ namespace segcheck
         for (size_t l : labels)
             if (l != gap) ++size[l];
         std::vector<char> has_partner(pts.size(), 0);
-        forEachWindowPair(pts.size(), step, cyclic, [&](size_t j, size_t i) {
+        forEachWindowPair(pts.size(), window, cyclic, [&](size_t j, size_t i) {
             if (labels[i] != gap && labels[i] == labels[j] && rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
                 has_partner[i] = has_partner[j] = 1;
         });
@@ -185,12 +191,12 @@ namespace segcheck
 
     //! Complete merging: no pair meeting the criterion within the window is split.
     template<class V>
-    void checkComplete(const std::vector<V> &pts, const V &origin, size_t step, typename V::ElementType scaling,
+    void checkComplete(const std::vector<V> &pts, const V &origin, size_t window, typename V::ElementType scaling,
                        typename V::ElementType lb, typename V::ElementType ub, bool cyclic, const std::vector<size_t> &labels,
                        const std::string &what)
     {
         size_t split = 0;
-        forEachWindowPair(pts.size(), step, cyclic, [&](size_t j, size_t i) {
+        forEachWindowPair(pts.size(), window, cyclic, [&](size_t j, size_t i) {
             if (!isGap(pts[i]) && !isGap(pts[j]) && labels[i] != labels[j] &&
                 rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
                 ++split;
@@ -253,6 +259,9 @@ namespace segcheck
         return out;
     }
 
+    //! CAR's window at `step`: the step - 1 previous points (step 0 means 1).
+    inline size_t carWindow(size_t step) { return step <= 1 ? 0 : step - 1; }
+
     //! All checks of the batch segmenter on one scan. Returns the labels.
     template<class V>
     std::vector<size_t> checkCar(const std::vector<V> &pts, const V &origin, size_t step, typename V::ElementType lb,
@@ -262,11 +271,13 @@ namespace segcheck
         const auto clusters = runCar(car, pts, origin);
         std::vector<size_t> labels;
         const auto idx = toIndices(pts, clusters, labels, what);
+        step = std::max<size_t>(step, 1);
         const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(step, pts.size());
-        checkOrder(idx, pts.size(), step, true, what);
-        checkComplete(pts, origin, step, scaling, lb, ub, true, labels, what);
-        checkPartners(pts, origin, step, scaling, lb, ub, true, labels, what);
-        EXPECT_EQ(labels, referenceLabels(pts, origin, step, scaling, lb, ub, true)) << what << ": differs from the reference";
+        const size_t window = carWindow(step);
+        checkOrder(idx, pts.size(), window, true, what);
+        checkComplete(pts, origin, window, scaling, lb, ub, true, labels, what);
+        checkPartners(pts, origin, window, scaling, lb, ub, true, labels, what);
+        EXPECT_EQ(labels, referenceLabels(pts, origin, window, scaling, lb, ub, true)) << what << ": differs from the reference";
         // handed out by smallest index
         std::vector<size_t> lowest;
         for (const auto &c : idx) lowest.push_back(*std::min_element(c.begin(), c.end()));
@@ -274,12 +285,14 @@ namespace segcheck
         return labels;
     }
 
-    //! All checks of the stream segmenter, fed with CAR's scaling. Returns the labels.
+    //! All checks of the stream segmenter at `step` (window: the step previous points), fed with the scaling of CAR at
+    //! step + 1, (step + 1) * 2 pi / N, the batch segmenter with the same window. Returns the labels.
     template<class V>
     std::vector<size_t> checkIa(const std::vector<V> &pts, const V &origin, size_t step, typename V::ElementType lb,
                                 typename V::ElementType ub, size_t grab_every, const std::string &what)
     {
-        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(step, pts.size());
+        step = std::max<size_t>(step, 1);
+        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(step + 1, pts.size());
         rtl::IA_Segmenter<V> ia(step, lb, ub, scaling);
         const auto clusters = runIa(ia, pts, origin, step, grab_every, what);
         std::vector<size_t> labels;
@@ -295,17 +308,19 @@ namespace segcheck
         return labels;
     }
 
-    //! The batch result equals the stream result once the seam pairs are linked as well.
+    //! The batch result at step s + 1 (car_labels) equals the stream result at step s (ia_labels, from checkIa:
+    //! scaling (s + 1) * 2 pi / N) once the seam pairs of the common window of s points are linked as well.
     template<class V>
-    void checkAgreement(const std::vector<V> &pts, const V &origin, size_t step, typename V::ElementType lb, typename V::ElementType ub,
+    void checkAgreement(const std::vector<V> &pts, const V &origin, size_t ia_step, typename V::ElementType lb, typename V::ElementType ub,
                         const std::vector<size_t> &car_labels, const std::vector<size_t> &ia_labels, const std::string &what)
     {
         const size_t n = pts.size();
-        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(step, n);
+        ia_step = std::max<size_t>(ia_step, 1);
+        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(ia_step + 1, n);
         UnionFind uf(n);
         for (size_t i = 0; i < n; ++i)
             if (ia_labels[i] != gap) uf.unite(i, ia_labels[i]);
-        forEachWindowPair(n, step, true, [&](size_t j, size_t i) {
+        forEachWindowPair(n, ia_step, true, [&](size_t j, size_t i) {
             if (j > i && !isGap(pts[i]) && !isGap(pts[j]) && rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
                 uf.unite(i, j);
         });

@@ -1,6 +1,7 @@
 // Both segmenters on every real scan in tests/data (30 Intel and 30 CSAIL laser scans, 4 rings of an Ouster OS1-64
 // scan), in float and double, with several steps and bounds: every invariant of seg_check.h, stream/batch agreement,
-// and float/double agreement up to pairs that sit on the threshold.
+// and float/double agreement up to pairs that sit on the threshold. Each case runs CAR at `step` (window: step - 1
+// previous points) and IA at step - 1 (the same window) with CAR's scaling step * 2 pi / N.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -18,11 +19,11 @@ namespace
 
     struct Params
     {
-        size_t step;
+        size_t step;   // CAR's step (>= 2); IA runs at step - 1
         double lb, ub;
     };
-    const Params carmen_params[] = {{1, 0.05, 0.5}, {2, 0.03, 0.3}, {3, 0.0, INFINITY}};
-    const Params ouster_params[] = {{1, 0.1, 1.0}, {2, 0.05, 0.5}, {4, 0.0, INFINITY}};
+    const Params carmen_params[] = {{2, 0.05, 0.5}, {3, 0.03, 0.3}, {4, 0.0, INFINITY}};
+    const Params ouster_params[] = {{2, 0.1, 1.0}, {3, 0.05, 0.5}, {5, 0.0, INFINITY}};
 
     template<class E>
     std::vector<std::vector<rtl::VectorND<2, E>>> carmenScans(const std::string &file, bool map_frame,
@@ -60,8 +61,8 @@ namespace
         using E = typename V::ElementType;
         const std::string what = name + " scan " + std::to_string(scan) + " step " + std::to_string(p.step);
         const auto car = segcheck::checkCar(pts, origin, p.step, static_cast<E>(p.lb), static_cast<E>(p.ub), what + " CAR");
-        const auto ia = segcheck::checkIa(pts, origin, p.step, static_cast<E>(p.lb), static_cast<E>(p.ub), scan % 2 ? 1 : 0, what + " IA");
-        segcheck::checkAgreement(pts, origin, p.step, static_cast<E>(p.lb), static_cast<E>(p.ub), car, ia, what);
+        const auto ia = segcheck::checkIa(pts, origin, p.step - 1, static_cast<E>(p.lb), static_cast<E>(p.ub), scan % 2 ? 1 : 0, what + " IA");
+        segcheck::checkAgreement(pts, origin, p.step - 1, static_cast<E>(p.lb), static_cast<E>(p.ub), car, ia, what);
         size_t clusters = 0;
         for (size_t i = 0; i < car.size(); ++i) clusters += car[i] == i ? 1 : 0;
         return clusters;
@@ -100,11 +101,12 @@ namespace
         rtl::CAR_Segmenter<V32> car_f(p.step, static_cast<float>(p.lb), static_cast<float>(p.ub));
         std::vector<size_t> lf;
         segcheck::toIndices(pf, segcheck::runCar(car_f, pf, origin.template cast<float>()), lf, what);
-        const auto ld = segcheck::referenceLabels(pd, origin, p.step, rtl::seg_detail::circularScaling<double>(p.step, n), p.lb, p.ub, true);
+        const size_t window = segcheck::carWindow(p.step);
+        const auto ld = segcheck::referenceLabels(pd, origin, window, rtl::seg_detail::circularScaling<double>(p.step, n), p.lb, p.ub, true);
         const double scaling = rtl::seg_detail::circularScaling<double>(p.step, n);
         segcheck::UnionFind loose(n);
         size_t split_clear = 0;
-        segcheck::forEachWindowPair(n, p.step, true, [&](size_t j, size_t i) {
+        segcheck::forEachWindowPair(n, window, true, [&](size_t j, size_t i) {
             if (segcheck::isGap(pd[i]) || segcheck::isGap(pd[j])) return;
             const double tsq = rtl::seg_detail::SquaredThreshold<double>(scaling, p.lb, p.ub)((pd[i] - origin).lengthSquared());
             const double dsq = (pd[i] - pd[j]).lengthSquared();

@@ -1,14 +1,19 @@
 // CAR_Segmenter (Cyclic, Adaptive, Retroactive): batch segmentation of one closed, ordered scan of a rotating
 // LiDAR into clusters of nearby points.
 //
-// loadData(points, origin) treats the scan as a closed loop of N points. Point i joins an earlier point j when
-// i - j <= step (cyclically across the seam, N - 1 -> 0) and |p_i - p_j| <= t_i, where
+// loadData(points, origin) treats the scan as a closed loop of N points. Each point is compared with up to
+// step - 1 preceding points (RTL's window: step 1 compares none, step 2 the previous point), cyclically across the
+// seam (N - 1 -> 0): point i joins an earlier point j when 1 <= i - j <= step - 1 (indices modulo N) and
+// |p_i - p_j| <= t_i, where
 //     t_i = clamp((step * 2 pi / N) * |p_i - origin|, lower_bound, upper_bound)
-// (seg/ProximityCriterion.h). Clusters are the connected components of that relation: merging is complete, so no
-// two points meeting the criterion end up in different clusters. Points with a NaN (or infinite) coordinate are gaps
-// and belong to no cluster; they still occupy their index. Each cluster lists its points in increasing scan order,
-// with at most step - 1 indices skipped between consecutive points; a cluster that wraps the seam starts with its
-// end-of-scan part. grabCluster() hands clusters out in the order of their smallest index.
+// (seg/ProximityCriterion.h; the threshold scales with `step`, the window holds step - 1 points). The seam pass
+// compares the first step points with the last ones: point i < step with the points N - (step - 1 - i) .. N - 1.
+// Clusters are the connected components of that relation: merging is complete, so no two points meeting the
+// criterion end up in different clusters. Points with a NaN (or infinite) coordinate are gaps and belong to no
+// cluster; they still occupy their index. Each cluster lists its points in increasing scan order, with at most
+// step - 2 indices skipped between consecutive points; a cluster that wraps the seam starts with its end-of-scan
+// part. grabCluster() hands clusters out in the order of their smallest index. Step 1 gives one cluster per valid
+// point.
 //
 // Bad input: step 0 is treated as 1; an empty scan gives no cluster; loadData throws std::invalid_argument unless
 // 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 1, bounds [0, +inf).
@@ -48,7 +53,7 @@ namespace rtl
         void setMaxSize(size_t max_size)
         {
             flags_.reserve(max_size);
-            if (step_ > 1)
+            if (step_ > 2)
             {
                 tsq_.reserve(max_size);
                 parent_.reserve(max_size);
@@ -66,7 +71,8 @@ namespace rtl
             next_ = 0;
             if (points.empty()) return;
             const ElementType scaling = seg_detail::circularScaling<ElementType>(step_, points.size());
-            if (step_ == 1) segmentNeighbours(points, origin, scaling);
+            if (step_ == 1) segmentAlone(points);
+            else if (step_ == 2) segmentNeighbours(points, origin, scaling);
             else segmentWindow(points, origin, scaling);
         }
 
@@ -88,9 +94,16 @@ namespace rtl
         static constexpr size_t none = std::numeric_limits<size_t>::max();
         static const ElementType *ptr(const VectorType &v) { return v.data().data(); }
 
-        // step 1: every cluster is a run of consecutive points, except one that may wrap the seam. One vectorisable
-        // pass marks which points are valid (bit 0) and linked to their predecessor (bit 1); runs are then copied
-        // out whole.
+        // step 1: the window is empty, every valid point is a cluster of its own.
+        void segmentAlone(const std::vector<VectorType> &pts)
+        {
+            for (const VectorType &p : pts)
+                if (seg_detail::isFinite<D>(ptr(p))) clusters_.emplace_back(1, p);
+        }
+
+        // step 2 (the previous point): every cluster is a run of consecutive points, except one that may wrap the
+        // seam. One vectorisable pass marks which points are valid (bit 0) and linked to their predecessor (bit 1);
+        // runs are then copied out whole.
         void segmentNeighbours(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
             const size_t n = pts.size();
@@ -181,10 +194,11 @@ namespace rtl
             }
         }
 
-        // General step: union-find over point indices, the root of a component being its smallest index.
+        // General step: union-find over point indices, the root of a component being its smallest index; each point
+        // looks s = step - 1 places back.
         void segmentWindow(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
-            const size_t n = pts.size(), s = step_;
+            const size_t n = pts.size(), s = step_ - 1;
             const ElementType *o = ptr(origin);
             const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
             tsq_.resize(n);
@@ -214,7 +228,8 @@ namespace rtl
                 parent_[i] = root == none ? i : root;
             }
 
-            // Seam: pairs (j, i) with j near the end, i near the beginning and i + n - j <= step; i is the later point.
+            // Seam: pairs (j, i) with j near the end, i near the beginning and i + n - j <= step - 1; i is the later
+            // point. Only the first step - 1 points have partners across the seam.
             for (size_t i = 0; i < std::min(s, n); ++i)
             {
                 if (parent_[i] == none) continue;
@@ -226,7 +241,7 @@ namespace rtl
                 }
             }
 
-            // Copy runs of equal root into their cluster. A gap of more than step - 1 indices inside a cluster can
+            // Copy runs of equal root into their cluster. A gap of more than step - 2 indices inside a cluster can
             // only come from the seam: the cluster is rotated there, so that it starts with its end-of-scan part.
             slot_.resize(n);
             last_.clear();

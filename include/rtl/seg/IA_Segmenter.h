@@ -11,8 +11,10 @@
 // however addPoint() and grabCluster() calls interleave. flush() (an addition to the published API) empties the
 // window at the end of a stream, closing every cluster.
 //
-// With scaling = step * 2 pi / N this is the criterion of CAR_Segmenter: on the same points both give the same
-// clusters, except that CAR also links across the seam of a closed scan.
+// The windows differ by one: IA at step s compares a new point with the s previous points, CAR_Segmenter at step
+// s + 1 does (CAR's window is step - 1 points, RTL's definitions). With scaling = (s + 1) * 2 pi / N, CAR's
+// threshold at step s + 1, both give the same clusters on the same points, except that CAR also links across the
+// seam of a closed scan.
 //
 // Bad input: step 0 is treated as 1; addPoint throws std::invalid_argument unless 0 <= lower_bound <= upper_bound
 // (upper may be +inf), the scaling is not NaN and the origin is finite.
