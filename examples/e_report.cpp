@@ -137,6 +137,7 @@ int main(int argc, char **argv)
         bool ok;
         {
             rtl::LaTeXDoc doc(out_dir, "scan_report");
+            doc.setEscapeCaptions(true);   // the captions are plain text (the log's path may hold '_' or '%')
             doc.addLE(fig, "Scan " + std::to_string(index) + " of " + log + ": " + std::to_string(clusters.size()) +
                                    " clusters (colours) and " + std::to_string(segments.size()) + " segments (black)");
             doc.addLE(walls, "The segments as 1 m walls");

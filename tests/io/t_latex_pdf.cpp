@@ -205,15 +205,16 @@ TEST(LaTeXPdf, EveryFigureAndTableCompilesInOneBatchedDocument)
     LaTeXTikz3D empty;
     LaTeXTable tab;
     tab.setColumnStyle("l|r|r");
-    tab.setHeading({"name_1", "50% & more", "{x}^2 ~ \\"});
+    tab.setHeadingEscaped({"name_1", "50% & more", "{x}^2 ~ \\"});
     tab.addHLine();
-    tab.addRow({"a#b", "$", "<>"});
-    tab.addRowRaw({"raw", LaTeXTikz2D::numberToLatexString(12345.0, "%.2e"), "$\\alpha$"});
+    tab.addRowEscaped({"a#b", "$", "<>"});
+    tab.addRow({"Item\\_name", LaTeXTikz2D::numberToLatexString(12345.0, "%.2e"), "$\\alpha$"});
     bool ok;
     std::string tmp;
     {
         LaTeXDoc doc(dir.string(), "batch");
         doc.setInlineFigures(true);
+        doc.setEscapeCaptions(true);   // the captions below are plain text full of special characters
         doc.setRemoveTmpDir([](const std::string &) { return true; });   // keep the log for the check below
         doc.addLE(all, "All 2D primitives: x_1 & 100%");
         doc.addLE(log, "log10 axes");

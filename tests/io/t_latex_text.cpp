@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -591,8 +592,47 @@ TEST(LaTeXTikz3D, AxesAreCroppedToTheRegionAndLabelled)
     EXPECT_NE(b.find("\\node[anchor=east, inner sep=1pt] at (1,0) {$2$};"), std::string::npos);
     EXPECT_EQ(count(b, "\\node["), 5u);
 
-    LaTeXTikz3D empty;   // nothing to render: an empty picture of the export size
-    EXPECT_EQ(body3(tex(empty)), "\\end{scope}\n");
+}
+
+TEST(LaTeXTikz3D, NothingToDrawWritesNothing)
+{
+    // rtl-api 4.5: without objects and without a min region writeTEX writes nothing (no file, no text).
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / "tikz3d-empty";
+    fs::create_directories(dir);
+    fs::path file = dir / "empty.tex";
+    fs::remove(file);
+    LaTeXTikz3D empty;
+    empty.setView(60, Vector3f(1, 1, -1));
+    empty.addAxis("style={draw=black}", "%.0f", LaTeXTikz3D::position_left, 1, Vector3f(0, 0, 0), Vector3f(1, 0, 0));
+    empty.addMark(Vector3f(NAN, 0, 0), "style={fill=red}", LaTeXTikz3D::latex_mark_dot);   // ignored: not finite
+    EXPECT_FALSE(empty.hasContent());
+    empty.writeTEX(file.string());
+    EXPECT_FALSE(fs::exists(file));
+    std::ostringstream os;
+    empty.writeTEX(os);
+    EXPECT_EQ(os.str(), "");
+    {
+        std::ofstream(file) << "earlier";   // an existing file is left alone
+    }
+    empty.writeTEX(file.string());
+    std::ifstream in(file);
+    std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(kept, "earlier");
+
+    LaTeXTikz3D region;   // a min region alone is something to draw: an empty picture of the export size
+    region.setMinPlotRegion(Vector3f(0, 0, 0), Vector3f(1, 1, 1));
+    EXPECT_TRUE(region.hasContent());
+    EXPECT_EQ(body3(tex(region)), "\\end{scope}\n");
+    LaTeXTikz3D mark;
+    mark.addMark(Vector3f(0, 0, 0), "style={fill=red}", LaTeXTikz3D::latex_mark_dot);
+    EXPECT_TRUE(mark.hasContent());
+    EXPECT_NE(tex(mark).find("\\begin{tikzpicture}"), std::string::npos);
+    mark.clearData();
+    EXPECT_FALSE(mark.hasContent());
+    std::ostringstream os2;
+    mark.writeTEX(os2);
+    EXPECT_EQ(os2.str(), "");
 }
 
 TEST(LaTeXTikz3D, RepeatedWritesAreIdenticalAndFollowTheView)
@@ -617,28 +657,44 @@ TEST(LaTeXTikz3D, RepeatedWritesAreIdenticalAndFollowTheView)
 
 TEST(LaTeXTable, WritesTheDocumentedLayout)
 {
+    // rtl-api 4.3: cells and caption as given, joined by " & ", each row ending with "\\" (no space before it).
     LaTeXTable t;
     t.setColumnStyle("c|c");
     EXPECT_EQ(t.columnsStyle(), "c|c");
-    t.setHeading({"name_1", "50%"});
+    t.setHeading({"Item\\_name", "50\\%"});
     t.setHeading({});   // ignored
     t.addHLine();
-    t.addRow({"a&b", "{x}"});
+    t.addRow({"$10^{3}$", "\\textbf{x}"});
     t.addRow({});       // ignored
-    t.addRowRaw({"$10^{3}$", "1"});
     std::ostringstream os;
-    t.writeTable(os, "segments & stats");
-    writtenTables().emplace_back(t, "segments & stats");
+    t.writeTable(os, "segments \\& $\\sigma$");
+    writtenTables().emplace_back(t, "segments \\& $\\sigma$");
     EXPECT_EQ(os.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{c|c}\n"
-                        "\tname\\_1 & 50\\% \\\\\n\t\\hline\n\ta\\&b & \\{x\\} \\\\\n\t$10^{3}$ & 1 \\\\\n"
-                        "\\end{tabular}\n\\end{center}\n\\caption{segments \\& stats}\n\\end{table}\n\n");
+                        "\tItem\\_name & 50\\%\\\\\n\t\\hline\n\t$10^{3}$ & \\textbf{x}\\\\\n"
+                        "\\end{tabular}\n\\end{center}\n\\caption{segments \\& $\\sigma$}\n\\end{table}\n\n");
     LaTeXTable u;   // no column style: one centred column per cell; no caption
     u.addRow({"1", "2", "3"});
     std::ostringstream os2;
     u.writeTable(os2, "");
     writtenTables().emplace_back(u, "");
-    EXPECT_EQ(os2.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{ccc}\n\t1 & 2 & 3 \\\\\n"
+    EXPECT_EQ(os2.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{ccc}\n\t1 & 2 & 3\\\\\n"
                          "\\end{tabular}\n\\end{center}\n\\end{table}\n\n");
+}
+
+TEST(LaTeXTable, EscapedVariantsTakePlainText)
+{
+    LaTeXTable t;
+    t.setHeadingEscaped({"name_1", "50%"});
+    t.setHeadingEscaped({});   // ignored
+    t.addRowEscaped({"a&b", "{x}"});
+    t.addRowEscaped({});       // ignored
+    t.addRow({"$10^{3}$", "1"});   // plain and escaped rows mix
+    std::ostringstream os;
+    t.writeTable(os, rtl::LaTeX::escapeLaTeXCharacters("segments & stats"));
+    writtenTables().emplace_back(t, rtl::LaTeX::escapeLaTeXCharacters("segments & stats"));
+    EXPECT_EQ(os.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{cc}\n"
+                        "\tname\\_1 & 50\\%\\\\\n\ta\\&b & \\{x\\}\\\\\n\t$10^{3}$ & 1\\\\\n"
+                        "\\end{tabular}\n\\end{center}\n\\caption{segments \\& stats}\n\\end{table}\n\n");
 }
 
 // Keep this test last: it compiles what the tests above wrote (one pdflatex run, figures \input into one document).
@@ -658,7 +714,7 @@ TEST(LaTeXTextCompiles, EveryDocumentAndTableWrittenAboveCompilesWithPdflatex)
             << "pdflatex is not on PATH: the LaTeX tests need it (install texlive-latex-base texlive-pictures "
                "texlive-latex-extra poppler-utils; ./run test does)";
     ASSERT_GE(written().size(), 20u) << "run the whole test program: this test compiles what the others wrote";
-    ASSERT_EQ(writtenTables().size(), 2u);
+    ASSERT_EQ(writtenTables().size(), 3u);
     namespace fs = std::filesystem;
     fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / "text";
     fs::remove_all(dir);
@@ -672,7 +728,7 @@ TEST(LaTeXTextCompiles, EveryDocumentAndTableWrittenAboveCompilesWithPdflatex)
         for (const auto &d : written())
         {
             WrittenFigure f{d};
-            doc.addLE(f, "a figure of t_latex_text");
+            doc.addLE(f, "a figure of t\\_latex\\_text");   // captions are LaTeX
         }
         for (const auto &t : writtenTables())
             doc.addTable(t.first, t.second);

@@ -30,7 +30,8 @@ namespace rtl
     //! External steps never throw or abort: if pdflatex is not on PATH the document says so once on std::cerr,
     //! keeps the LaTeX sources in the temporary directory and produces no PDF; a failed step is reported on
     //! std::cerr and in problems(). Every step can be replaced (setMakeTmpDir, setCompileTex, ...); a replacement
-    //! returns true on success. Captions and descriptions are escaped.
+    //! returns true on success. The final compile, move and removal always all run (RTL), unless
+    //! setStopOnFailure(true). Captions are LaTeX, written as given (RTL), unless setEscapeCaptions(true).
     class LaTeXDoc
     {
     public:
@@ -40,7 +41,7 @@ namespace rtl
             tmp_dir = output_dir + "_tmp_" + name;
             make_tmp_dir = defaultMakeDir;
             make_output_dir = defaultMakeDir;
-            remove_tmp_dir = defaultRemoveDir;
+            remove_tmp_dir = [this](const std::string &dir) { return defaultRemove(dir); };
             move_final_doc = defaultMove;
             compile_tex = [this](const std::string &tex, const std::string &dir) { return defaultCompile(tex, dir); };
             if (!make_tmp_dir(tmp_dir))
@@ -79,7 +80,7 @@ namespace rtl
             std::string file = figure(le);
             body += "\\begin{figure}[t]\n\\centering\n" + include(file, "\\textwidth") + "\n";
             if (!desc.empty())
-                body += "\\caption{" + LaTeX::escapeLaTeXCharacters(desc) + "}\n";
+                body += "\\caption{" + caption(desc) + "}\n";
             body += "\\end{figure}\n\n";
         }
 
@@ -105,26 +106,30 @@ namespace rtl
             }
             body += "\\end{tabular}}\n";
             if (!desc.empty())
-                body += "\\caption{" + LaTeX::escapeLaTeXCharacters(desc) + "}\n";
+                body += "\\caption{" + caption(desc) + "}\n";
             body += "\\end{figure}\n\n";
         }
 
         void addTable(const LaTeXTable &tab, const std::string &desc)
         {
             std::ostringstream os;
-            tab.writeTable(os, desc);
+            tab.writeTable(os, caption(desc));
             body += os.str();
         }
 
         //! Writes and compiles the document, moves the PDF to the output directory and removes the temporary
-        //! directory (kept if no PDF could be made). Returns true if `<out_dir>/<out_name>.pdf` was produced. Called
-        //! by the destructor; later calls do nothing and return the first result.
+        //! directory. As in RTL these steps are best-effort and always all run, in that order, even after a failed
+        //! compile (the default removal keeps the directory, with the LaTeX sources, when no PDF was made); with
+        //! setStopOnFailure(true) a failed write or compile skips the move and the removal. Returns true if
+        //! `<out_dir>/<out_name>.pdf` was produced. Called by the destructor; later calls do nothing and return the
+        //! first result.
         bool finish()
         {
             if (finished)
                 return result;
             finished = true;
             std::string tex = tmp_dir + "/" + name + ".tex";
+            bool written = false;
             {
                 std::ofstream ofs(tex);
                 // Inline figures bring their colours (e.g. hsb) into this document: convert them to rgb as the
@@ -134,31 +139,37 @@ namespace rtl
                 if (inline_mode)
                     ofs << "\\usepackage{tikz}\n\\usepackage{standalone}\n";
                 ofs << "\\graphicspath{{./}}\n\n\\begin{document}\n\n" << body << "\\end{document}\n";
-                if (!ofs)
-                {
-                    problem("cannot write '" + tex + "'");
-                    return result = false;
-                }
+                written = static_cast<bool>(ofs);
             }
+            if (!written)
+                problem("cannot write '" + tex + "'");
             bool compiled = compile_tex(tex, tmp_dir);
             std::string pdf = tmp_dir + "/" + name + ".pdf";
             std::error_code ec;
-            if (!compiled || !std::filesystem::exists(pdf, ec))
+            pdf_made = compiled && std::filesystem::exists(pdf, ec);
+            if (!pdf_made)
             {
-                if (!missing_reported)   // (a missing pdflatex was already reported)
+                if (written && !missing_reported)   // (a missing pdflatex was already reported)
                     problem("compiling '" + tex + "' failed; see " + tmp_dir + "/" + name + ".log");
-                problem("no PDF produced; the LaTeX sources are kept in '" + tmp_dir + "'");
-                return result = false;
+                problem("no PDF produced from the LaTeX sources in '" + tmp_dir + "'");
+                if (stop_on_failure)
+                    return result = false;
             }
-            if (!move_final_doc(pdf, output_dir))
-            {
+            bool moved = move_final_doc(pdf, output_dir);
+            if (!moved && pdf_made)
                 problem("cannot move '" + pdf + "' to '" + output_dir + "'");
-                return result = false;
-            }
             if (!remove_tmp_dir(tmp_dir))
                 problem("cannot remove the temporary directory '" + tmp_dir + "'");
-            return result = true;
+            return result = pdf_made && moved;
         }
+
+        //! true: a failed write or compile in finish() skips moving the PDF and removing the temporary directory
+        //! (default false: every step runs, as in RTL).
+        void setStopOnFailure(bool stop) { stop_on_failure = stop; }
+
+        //! true: captions (addLE, addGridLE, addTable) are plain text and escaped with LaTeX::escapeLaTeXCharacters;
+        //! default false: they are LaTeX and written as given, as in RTL.
+        void setEscapeCaptions(bool escape) { escape_captions = escape; }
 
         //! Path of the final PDF (exists after a successful finish()).
         std::string pdfPath() const { return output_dir + "/" + name + ".pdf"; }
@@ -175,6 +186,11 @@ namespace rtl
 
     private:
         LaTeXDoc() = default;
+
+        std::string caption(const std::string &desc) const
+        {
+            return escape_captions ? LaTeX::escapeLaTeXCharacters(desc) : desc;
+        }
 
         static std::string stripSlashes(std::string s)
         {
@@ -194,6 +210,8 @@ namespace rtl
         {
             std::string base = name + "_" + std::to_string(figure_counter++);
             std::string tex = tmp_dir + "/" + base + ".tex";
+            std::error_code ec;
+            std::filesystem::remove(tex, ec);   // (a stale file of an earlier run must not pass for this figure)
             try
             {
                 le.writeTEX(tex);
@@ -203,13 +221,14 @@ namespace rtl
                 problem(std::string("writing a figure failed: ") + e.what());
                 return "";
             }
+            if (!std::filesystem::exists(tex, ec))
+                return empty_figure;   // nothing to draw (e.g. an empty LaTeXTikz3D writes no file)
             if (inline_mode)
                 return base + ".tex";
             if (!compile_tex(tex, tmp_dir))
             {
                 if (!missing_reported)
                     problem("compiling figure '" + tex + "' failed; see " + tmp_dir + "/" + base + ".log");
-                std::error_code ec;
                 if (pdflatexAvailable() && !std::filesystem::exists(tmp_dir + "/" + base + ".pdf", ec))
                     return "";
             }
@@ -220,6 +239,8 @@ namespace rtl
         {
             if (file.empty())
                 return "\\fbox{(figure missing)}";
+            if (file == empty_figure)
+                return "\\fbox{(empty figure)}";
             if (inline_mode)
                 return "\\resizebox{" + width + "}{!}{\\input{" + file + "}}";
             return "\\includegraphics[width=" + width + "]{" + file + "}";
@@ -232,8 +253,11 @@ namespace rtl
             return std::filesystem::is_directory(dir, ec);
         }
 
-        static bool defaultRemoveDir(const std::string &dir)
+        //! Removes the directory, except after finish() made no PDF: then the LaTeX sources stay for a later run.
+        bool defaultRemove(const std::string &dir) const
         {
+            if (finished && !pdf_made)
+                return true;
             std::error_code ec;
             std::filesystem::remove_all(dir, ec);
             return !ec;
@@ -279,10 +303,12 @@ namespace rtl
             return rc == 0 && fs::exists(pdf, ec);
         }
 
+        static constexpr const char *empty_figure = "<empty figure>";
         std::string output_dir, name, tmp_dir;
         std::string body;
         size_t figure_counter = 0;
-        bool inline_mode = false, finished = false, result = false, missing_reported = false;
+        bool inline_mode = false, finished = false, result = false, missing_reported = false, pdf_made = false;
+        bool stop_on_failure = false, escape_captions = false;
         std::vector<std::string> problem_list;
         std::function<bool(const std::string &)> make_tmp_dir, make_output_dir, remove_tmp_dir;
         std::function<bool(const std::string &, const std::string &)> move_final_doc, compile_tex;

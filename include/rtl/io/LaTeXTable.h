@@ -11,9 +11,9 @@
 
 namespace rtl
 {
-    //! Collects a heading, rows and horizontal rules. Cell text and the caption are user text and are escaped with
-    //! LaTeX::escapeLaTeXCharacters; the *Raw variants take ready LaTeX (e.g. "$10^{3}$") for callers that format
-    //! cells themselves. The column style is tabular syntax and is written as given.
+    //! Collects a heading, rows and horizontal rules. As in RTL, cells and the caption are LaTeX and are written as
+    //! given (so "Item\_name" or "$10^{3}$" arrive unchanged). For plain user text, setHeadingEscaped / addRowEscaped
+    //! escape every cell with LaTeX::escapeLaTeXCharacters, and a caption can be passed through the same function.
     class LaTeXTable
     {
     public:
@@ -24,34 +24,28 @@ namespace rtl
         void setColumnStyle(const std::string &cs) { column_style = cs; }
         std::string columnsStyle() { return column_style; }
 
-        //! Sets the heading row (escaped); an empty vector is ignored.
+        //! Sets the heading row, cells as given; an empty vector is ignored.
         void setHeading(const std::vector<std::string> &heading_cells)
-        {
-            if (!heading_cells.empty())
-                heading = escapeCells(heading_cells);
-        }
-        void setHeadingRaw(const std::vector<std::string> &heading_cells)
         {
             if (!heading_cells.empty())
                 heading = heading_cells;
         }
+        //! Sets the heading row from plain text (each cell escaped); an empty vector is ignored.
+        void setHeadingEscaped(const std::vector<std::string> &heading_cells) { setHeading(escapeCells(heading_cells)); }
 
-        //! Appends a row (escaped); an empty vector is ignored.
+        //! Appends a row, cells as given; an empty vector is ignored.
         void addRow(const std::vector<std::string> &row_cells)
-        {
-            if (!row_cells.empty())
-                rows.push_back({false, escapeCells(row_cells)});
-        }
-        void addRowRaw(const std::vector<std::string> &row_cells)
         {
             if (!row_cells.empty())
                 rows.push_back({false, row_cells});
         }
+        //! Appends a row of plain text (each cell escaped); an empty vector is ignored.
+        void addRowEscaped(const std::vector<std::string> &row_cells) { addRow(escapeCells(row_cells)); }
 
         void addHLine() { rows.push_back({true, {}}); }
 
         //! Writes table/center/tabular, the heading and rows (cells joined by " & ", each line starting with a tab and
-        //! ending with "\\"), and a caption only if `desc` is non-empty, then a blank line.
+        //! ending with "\\"), and `\caption{desc}` (desc as given) only if `desc` is non-empty, then a blank line.
         void writeTable(std::ostream &ofs, const std::string &desc) const
         {
             ofs << "\\begin{table}\n\\begin{center}\n\\begin{tabular}{" << effectiveColumnStyle() << "}\n";
@@ -68,7 +62,7 @@ namespace rtl
                 line(r.hline ? std::string("\\hline") : joinCells(r.cells));
             ofs << "\n\\end{tabular}\n\\end{center}\n";
             if (!desc.empty())
-                ofs << "\\caption{" << LaTeX::escapeLaTeXCharacters(desc) << "}\n";
+                ofs << "\\caption{" << desc << "}\n";
             ofs << "\\end{table}\n\n";
         }
 
@@ -97,7 +91,7 @@ namespace rtl
                     s += " & ";
                 s += cells[i];
             }
-            return s + " \\\\";
+            return s + "\\\\";
         }
 
         std::string effectiveColumnStyle() const

@@ -145,13 +145,24 @@ namespace rtl
             axis_items.clear();
         }
 
-        //! Writes the standalone document; throws std::runtime_error if the file cannot be written.
+        //! Whether there is anything to draw: a mark, line or face, or a min region. Without, writeTEX writes
+        //! nothing (as RTL): it neither creates nor touches the file.
+        [[nodiscard]] bool hasContent() const
+        {
+            return min_region || !mark_items.empty() || !line_items.empty() || !face_items.empty();
+        }
+
+        //! Writes the standalone document if hasContent(); throws std::runtime_error if the file cannot be written.
         void writeTEX(const std::string &file_name)
         {
+            if (!hasContent())
+                return;
             latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
         void writeTEX(std::ostream &os)
         {
+            if (!hasContent())
+                return;
             latex_detail::writeTikzDocument(os, border_cm, [this](std::ostream &o) { writeTikz(o); });
         }
         //! Writes only the tikzpicture (everything it defines is local to it). A scene without objects and without
