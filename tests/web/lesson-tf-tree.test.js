@@ -1,0 +1,130 @@
+// The transformation-tree lesson (web/lessons/tf-tree.js) in Chromium: the points it shows in each frame equal
+// the package's TfTree in Node (and the pose formula R(theta) p + t), the mount parameters recompute at once and
+// are validated, the four steps name their frames, no console errors. Screenshots at 1280x800 and 390x844.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import init from 'rtl-wasm';
+import { DATA, PAGE_TIMEOUT, REPO, openDemoPage } from './helpers.js';
+
+const PATH = process.env.RTL_LESSON_PAGE_TF || '/web/view3d/dev/lessons.html?lesson=tf-tree';
+const SHOTS = join(REPO, 'build', 'test-output', 'screenshots');
+const lessonState = (page) => page.evaluate(() => window.__lesson.finalState());
+
+// The tree as a user of the package would build it: insert() takes parent -> child, the inverse of a pose.
+function nodeTree(rtl, pose, mount) {
+  const inv = ({ x, y, angle }) => {
+    const c = Math.cos(angle), s = Math.sin(angle);
+    return { angle: -angle, translation: [-(c * x + s * y), s * x - c * y] };
+  };
+  const tree = new rtl.TfTree('map', { dim: 2 });
+  tree.insert('robot', 'map', inv({ x: pose.x, y: pose.y, angle: pose.theta }));
+  tree.insert('sensor', 'robot', inv(mount));
+  return tree;
+}
+const close3 = (a, b, tol, what) => {
+  assert.equal(a.length, b.length, what);
+  a.forEach((v, i) => {
+    if (Number.isNaN(b[i])) assert.ok(v === null || Number.isNaN(v), `${what} ${i}: gap`);
+    else assert.ok(Math.abs(v - b[i]) < tol, `${what} ${i}: ${v} vs ${b[i]}`);
+  });
+};
+
+describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
+  let page, problems, close, rtl, scans;
+  before(async () => {
+    rtl = await init();
+    scans = rtl.readCarmenLog(readFileSync(join(DATA, 'intel.log'), 'utf8'));
+    ({ page, problems, close } = await openDemoPage(PATH));
+  });
+  after(() => close?.());
+
+  const check = async (mount) => {
+    const s = await lessonState(page);
+    const scan = scans[s.excerpt.scan];
+    assert.deepEqual(s.pose, { x: scan.x, y: scan.y, theta: scan.theta });
+    for (const k of ['x', 'y', 'angle']) assert.ok(Math.abs(s.mount[k] - mount[k]) < 1e-12, `mount ${k}`);
+    const tree = nodeTree(rtl, scan, mount);
+    try {
+      close3(s.sensor, Array.from(scan.points), 1e-12, 'sensor');
+      close3(s.robot, Array.from(tree.transformPoints('sensor', 'robot', scan.points)), 1e-9, 'robot');
+      close3(s.map, Array.from(tree.transformPoints('sensor', 'map', scan.points)), 1e-9, 'map');
+      close3(s.chain, Array.from(tree.transformPoints('sensor', 'map', scan.points)), 1e-9, 'chain');
+      close3(s.chainMatrix, Array.from(tree.tf('sensor', 'map').matrix), 1e-9, 'matrix');
+      // and the formula: p_map = R(theta) (R(phi) p + m) + t
+      const c = Math.cos(scan.theta), sn = Math.sin(scan.theta), ca = Math.cos(mount.angle), sa = Math.sin(mount.angle);
+      for (let i = 0; i < scan.points.length; i += 2) {
+        const px = scan.points[i], py = scan.points[i + 1];
+        if (Number.isNaN(px)) continue;
+        const rx = ca * px - sa * py + mount.x, ry = sa * px + ca * py + mount.y;
+        assert.ok(Math.abs(s.map[i] - (c * rx - sn * ry + scan.x)) < 1e-9 && Math.abs(s.map[i + 1] - (sn * rx + c * ry + scan.y)) < 1e-9);
+      }
+    } finally {
+      tree.dispose();
+    }
+    return s;
+  };
+
+  test('it starts on Intel scan 20 with the identity mount; every frame equals TfTree in Node', async () => {
+    const s = await check({ x: 0, y: 0, angle: 0 });
+    assert.equal(s.excerpt.scan, 20);
+    assert.ok(Math.hypot(s.pose.x, s.pose.y) > 5 && Math.abs(s.pose.theta) > 0.5, 'a pose that visibly moves the scan');
+  });
+
+  test('the four steps show sensor, robot, map and the chain', async () => {
+    const entry = await page.evaluate(() => window.__rtl.lessons[0]);
+    assert.deepEqual([entry.name, entry.steps], ['tf-tree', 4]);
+    const texts = [];
+    for (let k = 0; k < 4; k++) {
+      await page.fill('#scrub', String(k));
+      await page.dispatchEvent('#scrub', 'input');
+      texts.push(await page.textContent('#text'));
+    }
+    assert.match(texts[0], /sensor frame/);
+    assert.match(texts[1], /sensor → robot/);
+    assert.match(texts[2], /robot → map/);
+    assert.match(texts[3], /tree\.tf\('sensor', 'map'\)/);
+    const s = await lessonState(page);
+    assert.ok(texts[2].includes(s.pose.x.toFixed(2)));
+  });
+
+  test('changing the mount recomputes at once; the result is again TfTree in Node', async () => {
+    await page.fill('#tf-mount-x', '0.3');
+    await page.fill('#tf-mount-y', '-0.1');
+    await page.fill('#tf-mount-angle', '10');
+    await page.dispatchEvent('#tf-mount-angle', 'input');
+    await page.waitForFunction(() => window.__lesson.finalState().mount.angle > 0.17, null, { timeout: PAGE_TIMEOUT });
+    await check({ x: 0.3, y: -0.1, angle: 10 * Math.PI / 180 });
+    await page.fill('#scrub', '2');
+    await page.dispatchEvent('#scrub', 'input');
+    assert.match(await page.textContent('#text'), /no longer line up/);
+  });
+
+  test('an invalid mount offset is marked and explained, and the last valid mount stays', async () => {
+    await page.fill('#tf-mount-x', '9');
+    assert.equal(await page.getAttribute('#tf-mount-x', 'aria-invalid'), 'true');
+    assert.match(await page.textContent('#tf-mount-error'), /between −5 and 5 m/);
+    assert.ok(Math.abs((await lessonState(page)).mount.x - 0.3) < 1e-12);
+    await page.fill('#tf-mount-x', '0');
+    await page.fill('#tf-mount-y', '0');
+    await page.fill('#tf-mount-angle', '0');
+    await page.dispatchEvent('#tf-mount-angle', 'input');
+    assert.equal(await page.getAttribute('#tf-mount-x', 'aria-invalid'), null);
+    await check({ x: 0, y: 0, angle: 0 });
+  });
+
+  test('screenshots at 1280x800 and 390x844', async () => {
+    mkdirSync(SHOTS, { recursive: true });
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.fill('#scrub', '2');
+    await page.dispatchEvent('#scrub', 'input');
+    await page.screenshot({ path: join(SHOTS, 'lesson-tf-tree-1280x800.png') });
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.dispatchEvent('#scrub', 'input');
+    await page.screenshot({ path: join(SHOTS, 'lesson-tf-tree-390x844.png'), fullPage: true });
+    assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 390);
+  });
+
+  test('no console errors', () => assert.deepEqual(problems, []));
+});

@@ -1,0 +1,129 @@
+// The TLS line-fit lesson (web/lessons/tls-fit.js) in Chromium: its numbers are the package's fitLine on the points
+// it shows (checked in Node), moving a point with the keyboard changes the fit, the steps walk centroid -> RMS,
+// an invalid σ is marked, no console errors. Screenshots at 1280x800 and 390x844.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import init from 'rtl-wasm';
+import { PAGE_TIMEOUT, REPO, loadLog, openDemoPage, returnsOf, xyOf } from './helpers.js';
+
+const PATH = process.env.RTL_LESSON_PAGE_TLS || '/web/view3d/dev/lessons.html?lesson=tls-fit';
+const SHOTS = join(REPO, 'build', 'test-output', 'screenshots');
+const lessonState = (page) => page.evaluate(() => window.__lesson.finalState());
+
+describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
+  let page, problems, close, rtl;
+  before(async () => { rtl = await init(); ({ page, problems, close } = await openDemoPage(PATH)); });
+  after(() => close?.());
+
+  test('it starts on Intel scan 28, beams 124-131, read independently here', async () => {
+    const s = await lessonState(page);
+    assert.deepEqual(s.excerpt, { dataset: 'intel', scan: 28, firstBeam: 124, lastBeam: 131 });
+    const scan = loadLog('intel')[28];
+    const xy = xyOf(scan, returnsOf(scan, 124, 131));
+    assert.equal(s.points.length, 16);
+    s.points.forEach((v, i) => assert.ok(Math.abs(v - xy[i]) < 1e-4, `coordinate ${i}: ${v} vs ${xy[i]}`));
+  });
+
+  test("the lesson's fit is the package's fitLine in Node on the same points", async () => {
+    const s = await lessonState(page);
+    const f = rtl.fitLine(new Float64Array(s.points));
+    assert.ok(Math.abs(s.fit.rms - f.rms) < 1e-12);
+    assert.ok(Math.abs(s.fit.offset - f.offset) < 1e-12);
+    [0, 1].forEach((i) => {
+      assert.ok(Math.abs(s.fit.normal[i] - f.normal[i]) < 1e-12);
+      assert.ok(Math.abs(s.fit.centroid[i] - f.centroid[i]) < 1e-12);
+    });
+    assert.ok(s.fit.rms > 0.005 && s.fit.rms < 0.03, `a real wall: rms ${s.fit.rms}`);
+    // the OLS comparison is vertical: its slope is the y-on-x regression of the same points
+    const n = 8, mx = s.points.filter((_, i) => i % 2 === 0).reduce((a, b) => a + b) / n;
+    const my = s.points.filter((_, i) => i % 2 === 1).reduce((a, b) => a + b) / n;
+    let sxx = 0, sxy = 0;
+    for (let i = 0; i < n; i++) { sxx += (s.points[2 * i] - mx) ** 2; sxy += (s.points[2 * i] - mx) * (s.points[2 * i + 1] - my); }
+    assert.ok(Math.abs(s.ols.slope - sxy / sxx) < 1e-9 * Math.abs(sxy / sxx));
+  });
+
+  test('stepping shows centroid, spread, normal, residuals, RMS vs σ with the numbers of the fit', async () => {
+    const entry = await page.evaluate(() => window.__rtl.lessons[0]);
+    assert.deepEqual([entry.name, entry.steps], ['tls-fit', 5]);
+    const s = await lessonState(page);
+    const texts = [];
+    for (let k = 0; k < 5; k++) {
+      if (k > 0) await page.click('#next');
+      texts.push(await page.textContent('#text'));
+    }
+    assert.match(texts[0], /centroid/);
+    assert.ok(texts[0].includes(s.fit.centroid[0].toFixed(3)));
+    assert.match(texts[1], /covariance/);
+    assert.match(texts[2], /normal/);
+    assert.ok(texts[2].includes(s.fit.normal[0].toFixed(3)));
+    assert.match(texts[3], /Ordinary least squares/);
+    assert.ok(texts[4].includes(`${(s.fit.rms * 1000).toFixed(1)} mm`));
+    assert.match(texts[4], /below σ/);
+    assert.equal((await lessonState(page)).step, 4);
+  });
+
+  test('moving a point with the keyboard changes the fit, again equal to fitLine', async () => {
+    const before = await lessonState(page);
+    await page.focus('#figure canvas');
+    await page.keyboard.press(']');                                  // select the second point
+    for (let i = 0; i < 4; i++) await page.keyboard.press('Shift+ArrowRight');   // 4 x 10 cm off the wall
+    const s = await lessonState(page);
+    assert.equal(s.selected, 1);
+    assert.ok(Math.abs(s.points[2] - (before.points[2] + 0.4)) < 1e-9);
+    assert.ok(s.fit.rms > 2 * before.fit.rms, `rms ${before.fit.rms} -> ${s.fit.rms}`);
+    const f = rtl.fitLine(new Float64Array(s.points));
+    assert.ok(Math.abs(s.fit.rms - f.rms) < 1e-12 && Math.abs(s.fit.offset - f.offset) < 1e-12);
+    assert.match(await page.textContent('#text'), /above σ/);
+    await page.click('#tls-reset');
+    assert.deepEqual((await lessonState(page)).points, before.points);
+  });
+
+  test('dragging a point with the mouse moves it', async () => {
+    const before = await lessonState(page);
+    const p = await page.evaluate(() => {
+      const s = window.__lesson.finalState();
+      const c = document.querySelector('#figure canvas'), r = c.getBoundingClientRect();
+      // the canvas maps world to its own pixels; find point 0 on screen by the lesson's figure transform
+      return { r: { x: r.left, y: r.top, w: r.width, h: r.height, cw: c.width, ch: c.height }, s };
+    });
+    const screen = await page.evaluate(([x, y]) => window.__figure.toScreen(x, y), [before.points[0], before.points[1]]);
+    const k = p.r.w / p.r.cw;
+    const x = p.r.x + screen[0] * k, y = p.r.y + screen[1] * k;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    await page.mouse.move(x - 30, y, { steps: 4 });
+    await page.mouse.up();
+    const s = await lessonState(page);
+    assert.ok(s.points[0] < before.points[0] - 0.01, `x ${before.points[0]} -> ${s.points[0]}`);
+    await page.click('#tls-reset');
+  });
+
+  test('an invalid σ is marked and explained', async () => {
+    await page.fill('#tls-sigma', '0');
+    assert.equal(await page.getAttribute('#tls-sigma', 'aria-invalid'), 'true');
+    assert.match(await page.textContent('#tls-sigma-error'), /σ must be/);
+    await page.fill('#tls-sigma', '0.005');
+    assert.equal(await page.getAttribute('#tls-sigma', 'aria-invalid'), null);
+    assert.equal((await lessonState(page)).accepted, false);
+    await page.fill('#tls-sigma', '0.03');
+  });
+
+  test('screenshots at 1280x800 and 390x844', async () => {
+    mkdirSync(SHOTS, { recursive: true });
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.focus('#figure canvas');
+    await page.keyboard.press('Shift+ArrowRight');
+    await page.fill('#scrub', '3');
+    await page.dispatchEvent('#scrub', 'input');
+    await page.screenshot({ path: join(SHOTS, 'lesson-tls-fit-1280x800.png') });
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.dispatchEvent('#scrub', 'input');
+    await page.screenshot({ path: join(SHOTS, 'lesson-tls-fit-390x844.png'), fullPage: true });
+    assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 390);
+    await page.waitForFunction(() => window.__rtl.ready, null, { timeout: PAGE_TIMEOUT });
+  });
+
+  test('no console errors', () => assert.deepEqual(problems, []));
+});

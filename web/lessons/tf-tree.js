@@ -1,0 +1,165 @@
+// Lesson: frames and the transformation tree. A real scan is measured in the sensor frame; the sensor sits on the
+// robot (mount offset and angle), the robot sits in the map (the log's corrected pose). The package's TfTree holds
+// map -> robot -> sensor and moves the points; every number here comes from it.
+
+// Intel Research Lab, scan 20: the robot has turned and moved away from the log's origin (pose about (9.0, -0.7) m,
+// heading -45 degrees), so each transformation visibly moves the points. The Intel log's points are already in the
+// robot frame (the laser at the robot's origin): mount 0 is the log's truth, any other mount misplaces the walls
+// against the log's other scans, drawn grey in the map.
+export const EXCERPT = Object.freeze({ dataset: 'intel', scan: 20, neighbours: [16, 17, 18, 19, 21, 22, 23, 24] });
+const STEPS = ['sensor', 'mount', 'pose', 'chain'];
+const FRAME_COLOURS = { map: '#000000', robot: '#0072B2', sensor: '#D55E00' };
+const f2 = (v) => (Number.isFinite(v) ? v.toFixed(2) : '–');
+const deg = (r) => `${(r * 180 / Math.PI).toFixed(1)}°`;
+
+// TfTree.insert takes the transformation from the parent's coordinates to the child's, i.e. the inverse of the
+// child's pose in the parent. The package inverts it: in a scratch tree holding the pose as parent -> child, the
+// tree's tf(child, parent) is the pose's inverse.
+function inverseOf(rtl, pose) {
+  const t = new rtl.TfTree('a', { dim: 2 });
+  try {
+    t.insert('b', 'a', { angle: pose.angle, translation: pose.translation });
+    const inv = t.tf('b', 'a');
+    return { angle: Math.atan2(inv.rotation[2], inv.rotation[0]), translation: [inv.translation[0], inv.translation[1]] };
+  } finally {
+    t.dispose();
+  }
+}
+
+export function buildTree(rtl, pose, mount) {
+  const tree = new rtl.TfTree('map', { dim: 2 });
+  tree.insert('robot', 'map', inverseOf(rtl, { angle: pose.theta, translation: [pose.x, pose.y] }));
+  tree.insert('sensor', 'robot', inverseOf(rtl, { angle: mount.angle, translation: [mount.x, mount.y] }));
+  return tree;
+}
+
+export default {
+  id: 'tf-tree',
+  title: 'Transformation tree',
+  summary: 'Sensor → robot → map: a real scan moved through the package\'s TfTree, one frame at a time.',
+  async create(host) {
+    const scans = await host.data.carmen(EXCERPT.dataset);
+    const scan = scans[EXCERPT.scan];
+    const measured = Array.from(scan.points);        // treated as the sensor's measurement
+    const controls = host.controls;
+    controls.insertAdjacentHTML('beforeend', `
+      <div class="row2">
+        <div><label for="tf-mount-x">Sensor mount x (m)</label><input id="tf-mount-x" type="number" step="0.05" value="0"></div>
+        <div><label for="tf-mount-y">Sensor mount y (m)</label><input id="tf-mount-y" type="number" step="0.05" value="0"></div>
+      </div>
+      <label for="tf-mount-angle">Sensor mount angle (°) <output id="tf-mount-angle-out" for="tf-mount-angle">0</output></label>
+      <input id="tf-mount-angle" type="range" min="-30" max="30" step="1" value="0">
+      <p class="field-error" id="tf-mount-error" aria-live="polite"></p>
+      <p class="hint">Intel scan ${EXCERPT.scan}; grey: scans ${EXCERPT.neighbours[0]}–${EXCERPT.neighbours.at(-1)} placed by their own poses (mount 0). The log's laser sits at the robot's origin, so mount 0 makes the walls agree.</p>`);
+    const mx = controls.querySelector('#tf-mount-x'), my = controls.querySelector('#tf-mount-y');
+    const ma = controls.querySelector('#tf-mount-angle'), maOut = controls.querySelector('#tf-mount-angle-out');
+    const err = controls.querySelector('#tf-mount-error');
+    let mount = { x: 0, y: 0, angle: 0 };
+    const readMount = () => {
+      let bad = '';
+      for (const el of [mx, my]) {
+        const v = Number(el.value);
+        const invalid = el.value.trim() === '' || !Number.isFinite(v) || Math.abs(v) > 5;
+        if (invalid) { el.setAttribute('aria-invalid', 'true'); bad = 'The mount offset must be a number between −5 and 5 m.'; } else el.removeAttribute('aria-invalid');
+      }
+      err.textContent = bad;
+      maOut.textContent = ma.value;
+      if (!bad) mount = { x: Number(mx.value), y: Number(my.value), angle: Number(ma.value) * Math.PI / 180 };
+    };
+    for (const el of [mx, my, ma]) el.addEventListener('input', () => host.onParamsChanged());
+
+    let tree = null, result = null, step = 0;
+    const fig = host.figure;
+
+    const axes = (ctx, tf, name, len) => {
+      // the frame's origin and axes drawn in the current frame (tf maps the frame's coordinates to the drawn frame)
+      const p = tf([0, 0, len, 0, 0, len]);
+      const [o, x, y] = [0, 1, 2].map((k) => fig.toScreen(p[2 * k], p[2 * k + 1]));
+      ctx.save(); ctx.strokeStyle = FRAME_COLOURS[name]; ctx.fillStyle = FRAME_COLOURS[name]; ctx.lineWidth = 2.5;
+      ctx.beginPath(); ctx.moveTo(...o); ctx.lineTo(...x); ctx.moveTo(...o); ctx.lineTo(...y); ctx.stroke();
+      ctx.font = '13px system-ui, sans-serif';
+      // labels apart, since frames can coincide (the identity mount puts the sensor on the robot's origin)
+      const dy = { map: 16, robot: -8, sensor: 30 }[name];
+      ctx.fillText(`${name} x`, x[0] + 4, x[1] - 4 + (name === 'sensor' ? 16 : 0)); ctx.fillText(name, o[0] + 6, o[1] + dy);
+      ctx.restore();
+    };
+    const dots = (ctx, xy, colour, r = 2.2) => {
+      ctx.fillStyle = colour;
+      for (let i = 0; i < xy.length; i += 2) {
+        if (!Number.isFinite(xy[i])) continue;
+        const [sx, sy] = fig.toScreen(xy[i], xy[i + 1]);
+        ctx.fillRect(sx - r, sy - r, 2 * r, 2 * r);
+      }
+    };
+    const extentOf = (...sets) => {
+      let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+      for (const xy of sets) for (let i = 0; i < xy.length; i += 2) {
+        if (!Number.isFinite(xy[i])) continue;
+        x0 = Math.min(x0, xy[i]); x1 = Math.max(x1, xy[i]); y0 = Math.min(y0, xy[i + 1]); y1 = Math.max(y1, xy[i + 1]);
+      }
+      const m = 0.05 * Math.max(x1 - x0, y1 - y0);
+      return [x0 - m, y0 - m, x1 + m, y1 + m];
+    };
+
+    const lesson = {
+      recompute() {
+        readMount();
+        tree?.dispose();
+        tree = buildTree(host.rtl, scan, mount);
+        const robotPts = tree.transformPoints('sensor', 'robot', measured);
+        const mapStepwise = tree.transformPoints('robot', 'map', robotPts);
+        const mapChain = tree.transformPoints('sensor', 'map', measured);
+        const chain = tree.tf('sensor', 'map');
+        // the neighbours, each through its own pose with the log's mount (the laser at the robot's origin)
+        const background = [];
+        for (const k of EXCERPT.neighbours) {
+          const t = buildTree(host.rtl, scans[k], { x: 0, y: 0, angle: 0 });
+          try { background.push(...t.transformPoints('sensor', 'map', scans[k].points)); } finally { t.dispose(); }
+        }
+        result = {
+          sensor: measured, robot: Array.from(robotPts), map: Array.from(mapStepwise), chain: Array.from(mapChain),
+          chainMatrix: Array.from(chain.matrix), chainAngle: Math.atan2(chain.rotation[2], chain.rotation[0]),
+          chainTranslation: Array.from(chain.translation), background,
+        };
+        return { steps: STEPS.length };
+      },
+      show(k) {
+        step = Math.max(0, Math.min(STEPS.length - 1, k));
+        const ctx = fig.ctx;
+        const name = STEPS[step];
+        const inFrame = { sensor: 'sensor', mount: 'robot', pose: 'map', chain: 'map' }[name];
+        const pts = { sensor: result.sensor, mount: result.robot, pose: result.map, chain: result.chain }[name];
+        const frameTf = (frame) => (xy) => (frame === inFrame ? xy : Array.from(tree.transformPoints(frame, inFrame, xy)));
+        const mapView = inFrame === 'map';
+        fig.setExtent(...extentOf(pts, mapView ? result.background : [], frameTf('map')([0, 0]), frameTf('robot')([0, 0])));
+        fig.clear();
+        if (mapView) dots(ctx, result.background, '#c3c8cf', 1.5);
+        // the previous step's points, faint, so the move is visible
+        if (name === 'mount') dots(ctx, result.sensor, '#f3c4a8', 1.8);
+        if (name === 'pose') dots(ctx, result.robot, '#a9c8e6', 1.8);
+        dots(ctx, pts, name === 'sensor' ? FRAME_COLOURS.sensor : name === 'mount' ? FRAME_COLOURS.robot : '#222');
+        const len = mapView ? 1.5 : 0.8;
+        if (mapView) axes(ctx, frameTf('map'), 'map', len);
+        if (inFrame !== 'sensor') axes(ctx, frameTf('robot'), 'robot', len);
+        axes(ctx, frameTf('sensor'), 'sensor', 0.6 * len);
+
+        const m = mount, pose = scan;
+        host.text.textContent = {
+          sensor: `Step 1 of 4 · sensor frame. Intel scan ${EXCERPT.scan} as the laser measured it: ${measured.length / 2} beams, each point (r cos a, r sin a) in the sensor's own frame, x straight ahead. Nothing is known yet about where the sensor is.`,
+          mount: `Step 2 of 4 · sensor → robot. The sensor is mounted at (${f2(m.x)}, ${f2(m.y)}) m on the robot, turned by ${deg(m.angle)}. tree.transformPoints('sensor', 'robot') rotates the points by the mount angle and adds the offset${m.x || m.y || m.angle ? '' : ' (here the identity: the Intel laser sits at the robot\'s origin, so the points do not move)'}.`,
+          pose: `Step 3 of 4 · robot → map. The log's corrected pose puts the robot at (${f2(pose.x)}, ${f2(pose.y)}) m, heading ${deg(pose.theta)}. tree.transformPoints('robot', 'map') turns the robot-frame points by θ and shifts them by (x, y). The grey points are the neighbouring scans placed by their own poses: ${m.x || m.y || m.angle ? 'with this mount the walls no longer line up — a miscalibrated sensor looks exactly like this.' : 'the walls line up.'}`,
+          chain: `Step 4 of 4 · the chain. The tree stores map → robot → sensor; tree.tf('sensor', 'map') walks up from the sensor and composes the inverses: one rigid transformation, rotation ${deg(result.chainAngle)} and translation (${f2(result.chainTranslation[0])}, ${f2(result.chainTranslation[1])}) m, that takes the measured points straight to the map — the same points as the two steps before.`,
+        }[name];
+      },
+      finalState() {
+        return { excerpt: { ...EXCERPT }, step, pose: { x: scan.x, y: scan.y, theta: scan.theta }, mount: { ...mount }, ...result };
+      },
+      dispose() {
+        tree?.dispose();
+        tree = null;
+        controls.replaceChildren();
+      },
+    };
+    return lesson;
+  },
+};
