@@ -1,0 +1,290 @@
+// The 2D figure: a canvas showing world coordinates (metres, y up, one scale for both axes) with zoom and pan.
+// A lesson describes what to draw as a scene (a list of items in world units, see Scene below); the figure keeps
+// the scene, so zoom, pan and resize redraw it without the lesson, and export.js turns the same scene into the
+// package's SVG/TikZ (same view, colours and title).
+
+// The package's drawing palette (index.d.ts, Drawing.labels): cluster k gets colour k % 10 on screen and in exports.
+export const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#332288'];
+export const UNLABELLED = '#808080';
+export const clusterColour = (k) => (k >= 0 ? PALETTE[k % PALETTE.length] : UNLABELLED);
+// Colours of the teaching overlays (not exported in colour: the package's SVG draws every segment black).
+export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2', ok: '#009E73', fail: '#C0392B', muted: '#9aa3af' };
+
+// A scene: items drawn in order. Every item is plain data in world units:
+//   { type: 'points', xy, label?, colour?, radius? }      label: cluster number for the export colour (-1 grey)
+//   { type: 'segments', xy (x0,y0,x1,y1,...), colour?, width?, dash? }
+//   { type: 'polyline', xy, colour?, width?, dash? }
+//   { type: 'circle', x, y, r, colour?, fill?, dash? }     r in metres
+//   { type: 'strip', x0, y0, x1, y1, half, colour? }      the band of half-width `half` around the line through both
+//   { type: 'marker', x, y, colour?, size?, shape? }       a highlighted point (size in CSS px), shape 'ring' | 'dot' | 'x'
+//   { type: 'label', x, y, text, colour? }
+// and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
+export class Scene {
+  constructor(title = '') { this.title = title; this.items = []; this.inset = null; }
+  add(item) { this.items.push(item); return this; }
+  points(xy, opts = {}) { return this.add({ type: 'points', xy, ...opts }); }
+  segments(xy, opts = {}) { return this.add({ type: 'segments', xy, ...opts }); }
+  polyline(xy, opts = {}) { return this.add({ type: 'polyline', xy, ...opts }); }
+  circle(x, y, r, opts = {}) { return this.add({ type: 'circle', x, y, r, ...opts }); }
+  strip(x0, y0, x1, y1, half, opts = {}) { return this.add({ type: 'strip', x0, y0, x1, y1, half, ...opts }); }
+  marker(x, y, opts = {}) { return this.add({ type: 'marker', x, y, ...opts }); }
+  label(x, y, text, opts = {}) { return this.add({ type: 'label', x, y, text, ...opts }); }
+  setInset(chart) { this.inset = chart; return this; }
+}
+
+// The two ends, far outside any view, of the line through (x0, y0) and (x1, y1) (for strips and unbounded lines).
+export function lineThrough(x0, y0, x1, y1, reach) {
+  const dx = x1 - x0, dy = y1 - y0, l = Math.hypot(dx, dy) || 1;
+  return [x0 - (dx / l) * reach, y0 - (dy / l) * reach, x0 + (dx / l) * reach, y0 + (dy / l) * reach];
+}
+
+export class Figure {
+  constructor(canvas) {
+    this.canvas = canvas;
+    this.ctx = canvas.getContext('2d');
+    this.scene = new Scene();
+    this.home = { minX: -1, maxX: 1, minY: -1, maxY: 1 };   // the extent the lesson asked for
+    this.zoom = null;                                           // the user's extent after zoom/pan, or null
+    this.view = null;                                           // world <-> canvas transform of the last draw
+    this.wire();
+    this.resizeObserver = new ResizeObserver(() => this.render());
+    this.resizeObserver.observe(canvas);
+  }
+
+  // ---- extent and transforms ----------------------------------------------------------------------------------
+
+  // The world rectangle to show (padded by 8 %); resets the user's zoom.
+  setExtent(minX, minY, maxX, maxY) {
+    const px = Math.max((maxX - minX) * 0.08, 0.05), py = Math.max((maxY - minY) * 0.08, 0.05);
+    this.home = { minX: minX - px, maxX: maxX + px, minY: minY - py, maxY: maxY + py };
+    this.zoom = null;
+  }
+
+  // The extent of the finite points of xy (interleaved), as setExtent.
+  fitPoints(xy) {
+    let minX = Infinity, maxX = -Infinity, minY = Infinity, maxY = -Infinity;
+    for (let i = 0; i + 1 < xy.length; i += 2) {
+      const x = xy[i], y = xy[i + 1];
+      if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+      minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
+    }
+    if (minX === Infinity) this.setExtent(-1, -1, 1, 1);
+    else this.setExtent(minX, minY, maxX, maxY);
+  }
+
+  // The world rectangle on screen now (the requested one widened to the canvas' aspect).
+  extent() {
+    const v = this.view;
+    return v ? { minX: v.minX, maxX: v.maxX, minY: v.minY, maxY: v.maxY } : { ...this.home };
+  }
+
+  toScreen(x, y) { const v = this.view; return [v.X(x) / v.dpr, v.Y(y) / v.dpr]; }     // CSS px in the canvas
+  toWorld(px, py) { const v = this.view; return [v.minX + (px * v.dpr) / v.scale, v.maxY - (py * v.dpr) / v.scale]; }
+  get scale() { return this.view ? this.view.scale / this.view.dpr : 1; }              // CSS px per metre
+
+  // Client (CSS pixel) coordinates of a world point, for tests and pointer hit tests.
+  clientPoint(x, y) {
+    const r = this.canvas.getBoundingClientRect(), [sx, sy] = this.toScreen(x, y);
+    return { x: r.left + sx, y: r.top + sy };
+  }
+
+  zoomAt(fx, fy, factor) {            // fx, fy: the fraction of the canvas that stays put
+    const e = this.extent();
+    const wx = e.minX + fx * (e.maxX - e.minX), wy = e.maxY - fy * (e.maxY - e.minY);
+    this.zoom = { minX: wx - (wx - e.minX) * factor, maxX: wx + (e.maxX - wx) * factor,
+      minY: wy - (wy - e.minY) * factor, maxY: wy + (e.maxY - wy) * factor };
+    this.render();
+  }
+
+  panBy(dxCss, dyCss) {
+    const e = this.extent(), dx = dxCss / this.scale, dy = dyCss / this.scale;
+    this.zoom = { minX: e.minX - dx, maxX: e.maxX - dx, minY: e.minY + dy, maxY: e.maxY + dy };
+    this.render();
+  }
+
+  resetView() { this.zoom = null; this.render(); }
+
+  // ---- drawing --------------------------------------------------------------------------------------------------
+
+  show(scene) { this.scene = scene; this.render(); }
+
+  layout() {
+    const c = this.canvas, dpr = window.devicePixelRatio || 1;
+    const W = Math.max(1, Math.round(c.clientWidth * dpr)), H = Math.max(1, Math.round(c.clientHeight * dpr));
+    if (c.width !== W || c.height !== H) { c.width = W; c.height = H; }
+    const e = this.zoom ?? this.home;
+    const scale = Math.min(W / Math.max(e.maxX - e.minX, 1e-9), H / Math.max(e.maxY - e.minY, 1e-9));
+    const cx = (e.minX + e.maxX) / 2, cy = (e.minY + e.maxY) / 2;
+    const minX = cx - W / scale / 2, maxX = cx + W / scale / 2, minY = cy - H / scale / 2, maxY = cy + H / scale / 2;
+    this.view = { W, H, dpr, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
+  }
+
+  render() {
+    if (!this.canvas.isConnected) return;
+    this.layout();
+    const { ctx } = this, v = this.view;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = '#ffffff';
+    ctx.fillRect(0, 0, v.W, v.H);
+    this.drawScale();
+    for (const item of this.scene.items) this.drawItem(item);
+    if (this.scene.inset) this.drawInset(this.scene.inset);
+  }
+
+  drawItem(it) {
+    const { ctx } = this, v = this.view, d = v.dpr;
+    ctx.setLineDash(it.dash ? [5 * d, 4 * d] : []);
+    ctx.lineWidth = (it.width ?? 1.5) * d;
+    ctx.strokeStyle = it.colour ?? INK.segment;
+    switch (it.type) {
+      case 'points': {
+        ctx.fillStyle = it.colour ?? clusterColour(it.label ?? -1);
+        const r = (it.radius ?? 2.5) * d;
+        for (let i = 0; i + 1 < it.xy.length; i += 2) {
+          const x = it.xy[i], y = it.xy[i + 1];
+          if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+          ctx.beginPath(); ctx.arc(v.X(x), v.Y(y), r, 0, 2 * Math.PI); ctx.fill();
+        }
+        break;
+      }
+      case 'segments':
+        ctx.beginPath();
+        for (let i = 0; i + 3 < it.xy.length; i += 4) { ctx.moveTo(v.X(it.xy[i]), v.Y(it.xy[i + 1])); ctx.lineTo(v.X(it.xy[i + 2]), v.Y(it.xy[i + 3])); }
+        ctx.stroke();
+        break;
+      case 'polyline':
+        ctx.beginPath();
+        for (let i = 0; i + 1 < it.xy.length; i += 2) (i ? ctx.lineTo : ctx.moveTo).call(ctx, v.X(it.xy[i]), v.Y(it.xy[i + 1]));
+        ctx.stroke();
+        break;
+      case 'circle':
+        ctx.beginPath(); ctx.arc(v.X(it.x), v.Y(it.y), Math.max(it.r * v.scale, 0.5), 0, 2 * Math.PI);
+        if (it.fill) { ctx.fillStyle = it.fill; ctx.fill(); }
+        ctx.stroke();
+        break;
+      case 'strip': {
+        const reach = (v.maxX - v.minX) + (v.maxY - v.minY);
+        const dx = it.x1 - it.x0, dy = it.y1 - it.y0, l = Math.hypot(dx, dy) || 1, nx = -dy / l * it.half, ny = dx / l * it.half;
+        const [a, b, c, e] = lineThrough(it.x0, it.y0, it.x1, it.y1, reach);
+        ctx.fillStyle = (it.colour ?? INK.candidate) + '22';
+        ctx.beginPath();
+        ctx.moveTo(v.X(a + nx), v.Y(b + ny)); ctx.lineTo(v.X(c + nx), v.Y(e + ny));
+        ctx.lineTo(v.X(c - nx), v.Y(e - ny)); ctx.lineTo(v.X(a - nx), v.Y(b - ny)); ctx.closePath();
+        ctx.fill();
+        ctx.setLineDash([5 * d, 4 * d]);
+        ctx.beginPath();
+        ctx.moveTo(v.X(a + nx), v.Y(b + ny)); ctx.lineTo(v.X(c + nx), v.Y(e + ny));
+        ctx.moveTo(v.X(a - nx), v.Y(b - ny)); ctx.lineTo(v.X(c - nx), v.Y(e - ny));
+        ctx.stroke();
+        ctx.setLineDash([]);
+        ctx.lineWidth = 1 * d;
+        ctx.beginPath(); ctx.moveTo(v.X(a), v.Y(b)); ctx.lineTo(v.X(c), v.Y(e)); ctx.stroke();
+        break;
+      }
+      case 'marker': {
+        const s = (it.size ?? 7) * d, X = v.X(it.x), Y = v.Y(it.y);
+        ctx.lineWidth = 2 * d;
+        ctx.beginPath();
+        if (it.shape === 'x') { ctx.moveTo(X - s, Y - s); ctx.lineTo(X + s, Y + s); ctx.moveTo(X + s, Y - s); ctx.lineTo(X - s, Y + s); ctx.stroke(); }
+        else if (it.shape === 'dot') { ctx.fillStyle = it.colour ?? INK.current; ctx.arc(X, Y, s * 0.6, 0, 2 * Math.PI); ctx.fill(); }
+        else { ctx.arc(X, Y, s, 0, 2 * Math.PI); ctx.stroke(); }
+        break;
+      }
+      case 'label':
+        ctx.font = `${12 * d}px system-ui, sans-serif`;
+        ctx.fillStyle = it.colour ?? INK.segment;
+        ctx.fillText(it.text, v.X(it.x) + 6 * d, v.Y(it.y) - 6 * d);
+        break;
+      default:
+        throw new TypeError(`Figure: unknown item type ${it.type}`);
+    }
+    ctx.setLineDash([]);
+  }
+
+  // A scale bar (bottom left) so that circles and strips can be read in metres.
+  drawScale() {
+    const { ctx } = this, v = this.view, d = v.dpr;
+    const target = (v.W * 0.18) / v.scale, p = 10 ** Math.floor(Math.log10(target));
+    const len = [1, 2, 5, 10].map((m) => m * p).filter((l) => l <= target).pop() ?? p;
+    const x = 12 * d, y = v.H - 12 * d;
+    ctx.strokeStyle = '#5a6475'; ctx.fillStyle = '#5a6475'; ctx.lineWidth = 2 * d;
+    ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + len * v.scale, y); ctx.stroke();
+    ctx.font = `${11 * d}px system-ui, sans-serif`;
+    ctx.fillText(len >= 1 ? `${len} m` : `${Math.round(len * 1000)} mm`, x, y - 5 * d);
+  }
+
+  // A small chart in the top right corner: values against their index, with a horizontal limit line.
+  drawInset(ch) {
+    const { ctx } = this, v = this.view, d = v.dpr;
+    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35), x0 = v.W - w - 8 * d, y0 = 8 * d;
+    ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * d;
+    ctx.fillRect(x0, y0, w, h); ctx.strokeRect(x0, y0, w, h);
+    ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330';
+    ctx.fillText(ch.title, x0 + 6 * d, y0 + 13 * d);
+    const px = x0 + 30 * d, py = y0 + 20 * d, pw = w - 38 * d, ph = h - 38 * d;
+    const finite = ch.ys.filter(Number.isFinite);
+    const top = Math.max(ch.hline ?? 0, ...finite, 1e-9) * 1.15;
+    const xsMin = Math.min(...ch.xs), xsMax = Math.max(...ch.xs, xsMin + 1);
+    const X = (x) => px + ((x - xsMin) / (xsMax - xsMin)) * pw, Y = (y) => py + ph - (Math.min(y, top) / top) * ph;
+    ctx.strokeStyle = '#5a6475'; ctx.beginPath(); ctx.moveTo(px, py); ctx.lineTo(px, py + ph); ctx.lineTo(px + pw, py + ph); ctx.stroke();
+    ctx.fillStyle = '#5a6475';
+    ctx.fillText(ch.xlabel ?? '', px, py + ph + 13 * d);
+    if (ch.hline !== undefined) {
+      ctx.strokeStyle = INK.fail; ctx.setLineDash([4 * d, 3 * d]);
+      ctx.beginPath(); ctx.moveTo(px, Y(ch.hline)); ctx.lineTo(px + pw, Y(ch.hline)); ctx.stroke(); ctx.setLineDash([]);
+      ctx.fillStyle = INK.fail; ctx.fillText(ch.hlabel ?? '', px - 28 * d, Y(ch.hline) + 4 * d);
+    }
+    ctx.strokeStyle = INK.candidate; ctx.lineWidth = 1.5 * d; ctx.beginPath();
+    let started = false;
+    ch.xs.forEach((x, i) => {
+      if (!Number.isFinite(ch.ys[i])) return;
+      (started ? ctx.lineTo : ctx.moveTo).call(ctx, X(x), Y(ch.ys[i])); started = true;
+    });
+    ctx.stroke();
+    ch.xs.forEach((x, i) => {
+      if (!Number.isFinite(ch.ys[i])) return;
+      ctx.fillStyle = ch.ok && !ch.ok[i] ? INK.fail : INK.ok;
+      ctx.beginPath(); ctx.arc(X(x), Y(ch.ys[i]), (i === ch.xs.length - 1 ? 4 : 2.5) * d, 0, 2 * Math.PI); ctx.fill();
+    });
+  }
+
+  // ---- input: wheel / drag / keyboard zoom and pan; clicks go to onPick ------------------------------------------
+
+  wire() {
+    const c = this.canvas;
+    c.addEventListener('wheel', (ev) => {
+      ev.preventDefault();
+      const r = c.getBoundingClientRect();
+      this.zoomAt((ev.clientX - r.left) / r.width, (ev.clientY - r.top) / r.height, Math.exp(ev.deltaY * 0.0015));
+    }, { passive: false });
+    let drag = null;
+    c.addEventListener('pointerdown', (ev) => { drag = { x: ev.clientX, y: ev.clientY, moved: false }; c.setPointerCapture(ev.pointerId); });
+    c.addEventListener('pointermove', (ev) => {
+      if (!drag) return;
+      const dx = ev.clientX - drag.x, dy = ev.clientY - drag.y;
+      if (!drag.moved && Math.hypot(dx, dy) < 4) return;
+      drag.moved = true;
+      this.panBy(dx, dy);
+      drag.x = ev.clientX; drag.y = ev.clientY;
+    });
+    c.addEventListener('pointerup', (ev) => {
+      const click = drag && !drag.moved;
+      drag = null;
+      if (click && this.onPick) {
+        const r = c.getBoundingClientRect();
+        this.onPick(...this.toWorld(ev.clientX - r.left, ev.clientY - r.top));
+      }
+    });
+    c.addEventListener('dblclick', () => this.resetView());
+    c.addEventListener('keydown', (ev) => {
+      const actions = {
+        '+': () => this.zoomAt(0.5, 0.5, 0.8), '=': () => this.zoomAt(0.5, 0.5, 0.8), '-': () => this.zoomAt(0.5, 0.5, 1.25),
+        0: () => this.resetView(), ArrowLeft: () => this.panBy(40, 0), ArrowRight: () => this.panBy(-40, 0),
+        ArrowUp: () => this.panBy(0, 40), ArrowDown: () => this.panBy(0, -40),
+      };
+      if (actions[ev.key]) { ev.preventDefault(); actions[ev.key](); }
+    });
+  }
+
+  dispose() { this.resizeObserver.disconnect(); this.onPick = null; }
+}

@@ -1,0 +1,67 @@
+// Helpers shared by the lessons: the excerpt a lesson starts on, the trace of a package call, and the replay of a
+// trace prefix. Nothing here knows an algorithm: replays only fold the package's own events.
+import { note } from './ui.js';
+
+// The excerpt: cluster `cluster` of `scan` of `dataset` segmented with `segment` (the package's segment()), or the
+// beams `beams: [first, last]` of that scan. Adds the lesson's note (which excerpt and why) to host.controls.
+export async function loadExcerpt(host, ex) {
+  const scan = await host.data.scan(ex.dataset, ex.scan);
+  let chain, indices;
+  if (ex.beams) {
+    const [first, last] = ex.beams;
+    const f = host.data.finite(host.data.beams(scan.points, first, last));
+    chain = f.xy;
+    indices = f.index.map((i) => i + first);
+  } else {
+    ({ points: chain, indices } = host.data.cluster(scan.points, ex.segment, ex.cluster));
+  }
+  const where = `${host.data.describe(ex.dataset, ex.scan)}, ` +
+    (ex.beams ? `beams ${ex.beams[0]}–${ex.beams[1]}` : `cluster ${ex.cluster + 1}`) + ` (${chain.length / 2} points, beams ${indices[0]}–${indices[indices.length - 1]})`;
+  note(host.controls, `<strong>Excerpt:</strong> ${where}. ${ex.why}`);
+  return { scan, chain, indices, where };
+}
+
+// The trace of a traced package call: { trace, missing }. missing is the reason when this build of the package
+// does not record that trace yet (an older dist/: the option is unknown, or the result has no trace); then trace = [].
+export function traced(call, what) {
+  let result;
+  try {
+    result = call();
+  } catch (e) {
+    if ((e instanceof RangeError || e instanceof TypeError) && /unknown option "trace"/.test(e.message)) return { trace: [], missing: missingText(what) };
+    throw e;
+  }
+  const trace = Array.isArray(result.trace) ? result.trace : result;
+  return Array.isArray(trace) ? { trace, missing: null } : { trace: [], missing: missingText(what) };
+}
+const missingText = (what) => `This build of rtl-wasm does not record ${what} traces yet (run "npm run build" with a newer checkout): the figure shows the untraced result only.`;
+
+// Point i of an interleaved chain.
+export const pt = (xy, i) => [xy[2 * i], xy[2 * i + 1]];
+
+// The chain points i in [first, end) as a new array.
+export const slice = (xy, first, end) => xy.slice(2 * first, 2 * end);
+
+// A numbered list of equal values, e.g. for "same as untraced" comparisons.
+export const sameArrays = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+
+// No step to show: the explanation says why (no trace in this build, or a parameter to fix).
+export function explainNoSteps(host, missing) {
+  host.text.innerHTML = '';
+  const p = document.createElement('p');
+  p.className = 'fail';
+  p.textContent = missing ?? 'Fix the marked parameter to see the steps.';
+  host.text.append(p);
+}
+
+// Reads the parameters of `fields` ({ key: field }) through `check(values)` → { key: message } of invalid ones;
+// marks the fields and returns the values, or null when any is invalid.
+export function readParams(fields, check) {
+  const values = Object.fromEntries(Object.entries(fields).map(([k, f]) => [k, f.read()]));
+  const problems = check(values);
+  for (const [k, f] of Object.entries(fields)) f.setError?.(problems[k] ?? null);
+  return Object.keys(problems).length ? null : values;
+}
+
+export const positive = (v) => (Number.isFinite(v) && v > 0 ? null : 'must be a number above 0');
+export const nonNegative = (v) => (Number.isFinite(v) && v >= 0 ? null : 'must be a number ≥ 0');

@@ -1,0 +1,88 @@
+// Douglas–Peucker, step by step from the package's trace (events `start`, `range`; wasm/js/index.d.ts): each range's
+// chord, its farthest interior point and that point's distance against ε, and the vertices kept so far.
+import { INK, Scene } from '../figure.js';
+import { loadExcerpt, pt, readParams, positive, traced, explainNoSteps } from './common.js';
+import { m, numberField } from './ui.js';
+
+const EXCERPT = {
+  dataset: 'intel', scan: 3, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, cluster: 0,
+  why: 'A wall with a doorway bend and sensor noise of a few centimetres: at ε = 0.03 m the noise itself becomes vertices, at 0.09 m only the corners stay, at 0.3 m the bend is cut.',
+};
+
+// kept vertices (sorted) after events 0..k, as the SimplifyTrace.h replay says: start keeps 0 and count-1, each
+// range with split = true keeps its farthest point.
+function keptAfter(trace, k) {
+  const kept = new Set();
+  for (let i = 0; i <= k && i < trace.length; i++) {
+    const e = trace[i];
+    if (e.kind === 'start') { kept.clear(); kept.add(0); kept.add(e.count - 1); }
+    else if (e.kind === 'range' && e.split) kept.add(e.farthest);
+  }
+  return [...kept].sort((a, b) => a - b);
+}
+
+const polylineOf = (xy, keys) => keys.flatMap((i) => pt(xy, i));
+
+export default {
+  id: 'dp',
+  menu: 'DP',
+  title: 'Douglas–Peucker',
+  summary: 'Keep the point farthest from the chord while it is farther than ε, and recurse on both halves.',
+  async create(host) {
+    const { chain, where } = await loadExcerpt(host, EXCERPT);
+    const fields = {
+      epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: max distance from the chord', value: 0.09, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
+    };
+    host.figure.fitPoints(chain);
+    let missing = null, trace = [], untraced = null, params = null;
+
+    return {
+      recompute() {
+        params = readParams(fields, ({ epsilon }) => (positive(epsilon) ? { epsilon: positive(epsilon) } : {}));
+        if (!params) { trace = []; return { steps: 0 }; }
+        untraced = host.rtl.vectorize(chain, { method: 'dp', epsilon: params.epsilon });
+        ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'dp', epsilon: params.epsilon, trace: true }), 'Douglas–Peucker'));
+        return { steps: trace.length };
+      },
+      show(k) {
+        const s = new Scene(`Douglas–Peucker, ε = ${params?.epsilon ?? '–'} m: ${where}`);
+        s.points(chain, { label: 0 });
+        if (k < 0) { if (untraced) s.segments(untraced.segments, { colour: INK.segment, width: 2 }); host.figure.show(s); explainNoSteps(host, missing); return; }
+        const e = trace[k], kept = keptAfter(trace, k);
+        let html;
+        if (e.kind === 'range') {
+          const [ax, ay] = pt(chain, e.first), [bx, by] = pt(chain, e.last), [fx, fy] = pt(chain, e.farthest);
+          s.strip(ax, ay, bx, by, e.epsilon, { colour: e.split ? INK.fail : INK.ok });
+          s.segments([ax, ay, bx, by], { colour: INK.candidate, width: 2.5 });
+          // the distance as a perpendicular from the farthest point to the chord's line
+          const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy || 1, t = ((fx - ax) * dx + (fy - ay) * dy) / l2;
+          s.segments([fx, fy, ax + t * dx, ay + t * dy], { colour: INK.current, width: 2 });
+          s.marker(fx, fy, { colour: INK.current });
+          html = `<p>Range <b>${e.first}–${e.last}</b> (${e.last - e.first - 1} interior points): the chord joins points ${e.first} and ${e.last}. ` +
+            `The farthest interior point is <b>${e.farthest}</b>, ${m(e.distance)} from the chord's line; ε = ${m(e.epsilon)}.</p>` +
+            (e.split
+              ? `<p class="why">${m(e.distance)} &gt; ε: point ${e.farthest} is kept as a vertex, and the two halves ${e.first}–${e.farthest} and ${e.farthest}–${e.last} are examined next (left first).</p>`
+              : `<p class="why">${m(e.distance)} ≤ ε: every point of the range lies inside the band of half-width ε around the chord, so the chord becomes one segment.</p>`);
+        } else {
+          html = `<p>Douglas–Peucker starts with the two end points 0 and ${e.count - 1} of the ${e.count} points and examines the chord between them.</p>`;
+        }
+        if (k === trace.length - 1) {
+          html += `<p><b>Done:</b> ${kept.length} vertices, ${kept.length - 1} segments, the same as the package's untraced result (${untraced.count} segments). Vertices are measured points, so their noise stays in the corners.</p>`;
+        }
+        s.polyline(polylineOf(chain, kept), { colour: INK.segment, width: 2 });
+        s.points(polylineOf(chain, kept), { label: -1, radius: 4, colour: INK.segment });
+        host.figure.show(s);
+        host.text.innerHTML = html;
+        this.step = k;
+      },
+      finalState() {
+        const k = this.step ?? -1, kept = keptAfter(trace, k);
+        // The untraced result's vertices: dp spans are [key_k, key_k+1 + 1) (index.d.ts).
+        const keys = untraced ? [...Array.from(untraced.indices).filter((_, i) => i % 2 === 0), untraced.indices[untraced.indices.length - 1] - 1] : [];
+        return { method: 'dp', chain: Array.from(chain), params, step: k, steps: trace.length,
+          replayed: { vertices: kept }, untraced: { vertices: untraced?.count ? keys : [], segments: Array.from(untraced?.segments ?? []) } };
+      },
+      dispose() {},
+    };
+  },
+};

@@ -1,0 +1,77 @@
+// Reumann–Witkam, step by step from the package's trace (events `start`, `keep`, `strip`, `exit`): the strip of
+// half-width ε around the line from the key point through the next point, and each point that leaves it.
+import { INK, Scene } from '../figure.js';
+import { loadExcerpt, pt, readParams, positive, traced, explainNoSteps } from './common.js';
+import { m, numberField } from './ui.js';
+
+const EXCERPT = {
+  dataset: 'intel', scan: 3, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, cluster: 0,
+  why: 'The same wall as in the Douglas–Peucker lesson, so the two can be compared: RW looks only ahead of its key point, so noise near the key tilts the strip.',
+};
+
+function replay(trace, k) {
+  const kept = [];
+  let strip = null;
+  for (let i = 0; i <= k && i < trace.length; i++) {
+    const e = trace[i];
+    if (e.kind === 'keep') kept.push(e.index);
+    else if (e.kind === 'strip') strip = e;
+  }
+  return { kept, strip };
+}
+
+export default {
+  id: 'rw',
+  menu: 'RW',
+  title: 'Reumann–Witkam',
+  summary: 'Slide a strip of half-width ε along the points; where a point leaves it, the point before becomes a vertex.',
+  async create(host) {
+    const { chain, where } = await loadExcerpt(host, EXCERPT);
+    const fields = {
+      epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: strip half-width', value: 0.09, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
+    };
+    host.figure.fitPoints(chain);
+    let missing = null, trace = [], untraced = null, params = null;
+    return {
+      recompute() {
+        params = readParams(fields, ({ epsilon }) => (positive(epsilon) ? { epsilon: positive(epsilon) } : {}));
+        if (!params) { trace = []; return { steps: 0 }; }
+        untraced = host.rtl.vectorize(chain, { method: 'rw', epsilon: params.epsilon });
+        ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'rw', epsilon: params.epsilon, trace: true }), 'Reumann–Witkam'));
+        return { steps: trace.length };
+      },
+      show(k) {
+        this.step = k;
+        const s = new Scene(`Reumann–Witkam, ε = ${params?.epsilon ?? '–'} m: ${where}`);
+        s.points(chain, { label: 0 });
+        if (k < 0) { if (untraced) s.segments(untraced.segments, { colour: INK.segment, width: 2 }); host.figure.show(s); explainNoSteps(host, missing); return; }
+        const e = trace[k], { kept, strip } = replay(trace, k);
+        if (strip) {
+          const [ax, ay] = pt(chain, strip.key), [bx, by] = pt(chain, strip.through);
+          s.strip(ax, ay, bx, by, strip.epsilon, { colour: INK.candidate });
+          s.marker(ax, ay, { colour: INK.candidate, size: 8 });
+        }
+        s.polyline(kept.flatMap((i) => pt(chain, i)), { colour: INK.segment, width: 2 });
+        for (const i of kept) s.marker(...pt(chain, i), { colour: INK.segment, shape: 'dot', size: 6 });
+        let html;
+        if (e.kind === 'start') html = `<p>${e.count} points, strip half-width ε = ${m(e.epsilon)}. Point 0 is the first key point.</p>`;
+        else if (e.kind === 'keep') html = `<p>Point <b>${e.index}</b> is kept as a vertex${e.index === 0 ? ' (the first point)' : e.index === chain.length / 2 - 1 ? ' (the last point: the polyline ends there)' : ': it was the last point inside the strip'}.</p>`;
+        else if (e.kind === 'strip') html = `<p>New strip: the line from key point <b>${e.key}</b> through point ${e.through}, ε = ${m(e.epsilon)} on each side. The scan continues at point ${e.through + 1} while the points stay inside.</p>`;
+        else if (e.kind === 'exit') {
+          s.marker(...pt(chain, e.index), { colour: INK.fail, shape: 'x' });
+          html = `<p>Point <b>${e.index}</b> lies ${m(e.distance)} from the strip's axis &gt; ε = ${m(e.epsilon)}: it leaves the strip.</p><p class="why">So point ${e.index - 1}, the last one inside, becomes the next key point and a new strip starts there.</p>`;
+        } else html = `<p>${e.kind}</p>`;
+        if (k === trace.length - 1) html += `<p><b>Done:</b> ${kept.length} vertices, ${kept.length - 1} segments, as the package's untraced result (${untraced.count}). One pass, fast, but each strip is aimed by only two noisy points.</p>`;
+        host.figure.show(s);
+        host.text.innerHTML = html;
+      },
+      finalState() {
+        const k = this.step ?? -1;
+        const keys = untraced?.count ? [...Array.from(untraced.indices).filter((_, i) => i % 2 === 0), untraced.indices[untraced.indices.length - 1] - 1] : [];
+        return { method: 'rw', chain: Array.from(chain), params, step: k, steps: trace.length,
+          replayed: { vertices: replay(trace, k).kept }, untraced: { vertices: keys } };
+      },
+      dispose() {},
+    };
+  },
+};

@@ -1,0 +1,142 @@
+// The page's boot: loads the package (through the import map, /dist/index.js), builds the lesson menu from
+// web/lessons/index.js, opens the lesson named by the URL hash, and connects it to the figure, the player and
+// the export buttons. Test hook: window.__rtl = { ready, errors, lessons: [{ id, title, steps, step }], current,
+// revision, finalState(), figureExtent(), clientPoint(x, y) }.
+import init from 'rtl-wasm';
+import { createData } from './data.js';
+import { Figure } from './figure.js';
+import { Player } from './player.js';
+import { download, figureSvg, figureTikz } from './export.js';
+import LESSONS from './lessons/index.js';
+
+const $ = (id) => document.getElementById(id);
+const hook = (window.__rtl = {
+  ready: false, errors: [], revision: 0, current: null,
+  lessons: LESSONS.map(({ id, title }) => ({ id, title, steps: null, step: null })),
+});
+window.addEventListener('error', (e) => hook.errors.push(String(e.message)));
+window.addEventListener('unhandledrejection', (e) => hook.errors.push(String(e.reason?.message ?? e.reason)));
+
+const state = { rtl: null, data: null, lesson: null, instance: null, figure: null, player: null, opening: 0 };
+
+function setStatus(text, isError = false) {
+  const el = $('status');
+  el.textContent = text;
+  el.classList.toggle('error', isError);
+}
+
+function entry(id) { return hook.lessons.find((l) => l.id === id); }
+
+function buildMenu() {
+  const nav = $('lesson-menu');
+  nav.replaceChildren(...LESSONS.map((l) => {
+    const a = document.createElement('a');
+    a.href = `#${l.id}`;
+    a.textContent = l.menu ?? l.title;
+    a.dataset.lesson = l.id;
+    a.title = l.summary;
+    return a;
+  }));
+}
+
+function showStep(k) {
+  const { instance, lesson } = state;
+  if (!instance) return;
+  try {
+    instance.show(k);
+  } catch (e) {
+    reportError(e);
+  }
+  const e = entry(lesson.id);
+  e.step = k;
+  hook.revision += 1;
+}
+
+function reportError(e) {
+  setStatus(`Error: ${e.message}`, true);
+  hook.errors.push(String(e.message));
+  console.error(e);
+}
+
+// Recomputes the open lesson's trace (after a parameter change) and reloads the player, keeping its place.
+function recompute(keepAt) {
+  const { instance, lesson } = state;
+  if (!instance) return;
+  let steps = 0;
+  try {
+    ({ steps } = instance.recompute());
+  } catch (e) {
+    reportError(e);
+  }
+  entry(lesson.id).steps = steps;
+  state.player.load(steps, keepAt ?? state.player.step);
+}
+
+async function open(id) {
+  const lesson = LESSONS.find((l) => l.id === id) ?? LESSONS[0];
+  const ticket = ++state.opening;
+  state.player.pause();
+  if (state.instance) { try { state.instance.dispose(); } catch (e) { reportError(e); } }
+  state.figure?.dispose();
+  state.instance = null;
+  state.lesson = lesson;
+  hook.current = lesson.id;
+  for (const a of $('lesson-menu').querySelectorAll('a')) {
+    if (a.dataset.lesson === lesson.id) a.setAttribute('aria-current', 'page'); else a.removeAttribute('aria-current');
+  }
+  $('lesson-title').textContent = lesson.title;
+  $('lesson-summary').textContent = lesson.summary;
+  document.title = `${lesson.title} · RTL lessons`;
+  for (const el of [$('lesson-controls'), $('lesson-text'), $('lesson-stage')]) el.replaceChildren();
+  // A fresh canvas per lesson: its figure's listeners and zoom die with it.
+  const canvas = document.createElement('canvas');
+  Object.assign(canvas, { id: 'canvas', tabIndex: 0 });
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', `Figure of the lesson ${lesson.title}`);
+  canvas.setAttribute('aria-describedby', 'lesson-text');
+  $('canvas-box').replaceChildren(canvas);
+  state.figure = new Figure(canvas);
+  const host = {
+    rtl: state.rtl, data: state.data, figure: state.figure,
+    controls: $('lesson-controls'), text: $('lesson-text'), stage: $('lesson-stage'),
+    onParamsChanged: () => { if (state.instance && state.lesson === lesson) recompute(); },
+    goTo: (k) => { state.player.pause(); state.player.go(k); },
+  };
+  setStatus(`Loading ${lesson.title}…`);
+  try {
+    const instance = await lesson.create(host);
+    if (ticket !== state.opening) { instance.dispose(); return; }
+    state.instance = instance;
+    recompute(0);
+    setStatus('');
+  } catch (e) {
+    reportError(e);
+  }
+  hook.ready = true;
+  hook.revision += 1;
+}
+
+async function main() {
+  buildMenu();
+  state.player = new Player($('player'), showStep);
+  try {
+    state.rtl = await init();
+  } catch (e) {
+    setStatus(`Could not load the WebAssembly module: ${e.message}. Run "npm run build" first.`, true);
+    hook.errors.push(String(e.message));
+    return;
+  }
+  state.data = createData(state.rtl);
+  hook.version = state.rtl.version;
+  hook.finalState = () => state.instance?.finalState() ?? null;
+  hook.figureExtent = () => state.figure?.extent() ?? null;
+  hook.clientPoint = (x, y) => state.figure.clientPoint(x, y);
+  const name = () => `rtl-${state.lesson.id}-step${state.player.step + 1}`;
+  $('dl-svg').addEventListener('click', () => download(`${name()}.svg`, 'image/svg+xml', figureSvg(state.rtl, state.figure)));
+  $('dl-tikz').addEventListener('click', () => download(`${name()}.tex`, 'text/x-tex', figureTikz(state.rtl, state.figure)));
+  $('reset-view').addEventListener('click', () => state.figure?.resetView());
+  window.addEventListener('hashchange', () => open(location.hash.slice(1)));
+  await open(location.hash.slice(1));
+}
+
+main();
