@@ -8,9 +8,15 @@ import { join } from 'node:path';
 import init from 'rtl-wasm';
 import { DATA, PAGE_TIMEOUT, REPO, openDemoPage } from './helpers.js';
 
-const PATH = process.env.RTL_LESSON_PAGE_TF || '/web/view3d/dev/lessons.html?lesson=tf-tree';
+const PATH = '/web/#tf-tree';
 const SHOTS = join(REPO, 'build', 'test-output', 'screenshots');
-const lessonState = (page) => page.evaluate(() => window.__lesson.finalState());
+const lessonState = (page) => page.evaluate(() => window.__rtl.finalState());
+const entryOf = (page) => page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'tf-tree'));
+// the player's slider is 1-based
+async function goStep(page, k) {
+  await page.fill('[data-act="scrub"]', String(k + 1));
+  await page.dispatchEvent('[data-act="scrub"]', 'input');
+}
 
 // The tree as a user of the package would build it: insert() takes parent -> child, the inverse of a pose.
 function nodeTree(rtl, pose, mount) {
@@ -73,13 +79,12 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
   });
 
   test('the four steps show sensor, robot, map and the chain', async () => {
-    const entry = await page.evaluate(() => window.__rtl.lessons[0]);
-    assert.deepEqual([entry.name, entry.steps], ['tf-tree', 4]);
+    const entry = await entryOf(page);
+    assert.deepEqual([entry.id, entry.steps], ['tf-tree', 4]);
     const texts = [];
     for (let k = 0; k < 4; k++) {
-      await page.fill('#scrub', String(k));
-      await page.dispatchEvent('#scrub', 'input');
-      texts.push(await page.textContent('#text'));
+      await goStep(page, k);
+      texts.push(await page.textContent('#lesson-text'));
     }
     assert.match(texts[0], /sensor frame/);
     assert.match(texts[1], /sensor → robot/);
@@ -94,11 +99,10 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
     await page.fill('#tf-mount-y', '-0.1');
     await page.fill('#tf-mount-angle', '10');
     await page.dispatchEvent('#tf-mount-angle', 'input');
-    await page.waitForFunction(() => window.__lesson.finalState().mount.angle > 0.17, null, { timeout: PAGE_TIMEOUT });
+    await page.waitForFunction(() => window.__rtl.finalState().mount.angle > 0.17, null, { timeout: PAGE_TIMEOUT });
     await check({ x: 0.3, y: -0.1, angle: 10 * Math.PI / 180 });
-    await page.fill('#scrub', '2');
-    await page.dispatchEvent('#scrub', 'input');
-    assert.match(await page.textContent('#text'), /no longer line up/);
+    await goStep(page, 2);
+    assert.match(await page.textContent('#lesson-text'), /no longer line up/);
   });
 
   test('an invalid mount offset is marked and explained, and the last valid mount stays', async () => {
@@ -117,11 +121,10 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
   test('screenshots at 1280x800 and 390x844', async () => {
     mkdirSync(SHOTS, { recursive: true });
     await page.setViewportSize({ width: 1280, height: 800 });
-    await page.fill('#scrub', '2');
-    await page.dispatchEvent('#scrub', 'input');
+    await goStep(page, 2);
     await page.screenshot({ path: join(SHOTS, 'lesson-tf-tree-1280x800.png') });
     await page.setViewportSize({ width: 390, height: 844 });
-    await page.dispatchEvent('#scrub', 'input');
+    await page.dispatchEvent('[data-act="scrub"]', 'input');
     await page.screenshot({ path: join(SHOTS, 'lesson-tf-tree-390x844.png'), fullPage: true });
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 390);
   });

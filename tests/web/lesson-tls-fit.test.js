@@ -8,9 +8,15 @@ import { join } from 'node:path';
 import init from 'rtl-wasm';
 import { PAGE_TIMEOUT, REPO, loadLog, openDemoPage, returnsOf, xyOf } from './helpers.js';
 
-const PATH = process.env.RTL_LESSON_PAGE_TLS || '/web/view3d/dev/lessons.html?lesson=tls-fit';
+const PATH = '/web/#tls-fit';
 const SHOTS = join(REPO, 'build', 'test-output', 'screenshots');
-const lessonState = (page) => page.evaluate(() => window.__lesson.finalState());
+const lessonState = (page) => page.evaluate(() => window.__rtl.finalState());
+const entryOf = (page) => page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'tls-fit'));
+// the player's slider is 1-based
+async function goStep(page, k) {
+  await page.fill('[data-act="scrub"]', String(k + 1));
+  await page.dispatchEvent('[data-act="scrub"]', 'input');
+}
 
 describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
   let page, problems, close, rtl;
@@ -45,13 +51,13 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
   });
 
   test('stepping shows centroid, spread, normal, residuals, RMS vs σ with the numbers of the fit', async () => {
-    const entry = await page.evaluate(() => window.__rtl.lessons[0]);
-    assert.deepEqual([entry.name, entry.steps], ['tls-fit', 5]);
+    const entry = await entryOf(page);
+    assert.deepEqual([entry.id, entry.steps], ['tls-fit', 5]);
     const s = await lessonState(page);
     const texts = [];
     for (let k = 0; k < 5; k++) {
-      if (k > 0) await page.click('#next');
-      texts.push(await page.textContent('#text'));
+      if (k > 0) await page.click('[data-act="forward"]');
+      texts.push(await page.textContent('#lesson-text'));
     }
     assert.match(texts[0], /centroid/);
     assert.ok(texts[0].includes(s.fit.centroid[0].toFixed(3)));
@@ -66,7 +72,7 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
 
   test('moving a point with the keyboard changes the fit, again equal to fitLine', async () => {
     const before = await lessonState(page);
-    await page.focus('#figure canvas');
+    await page.focus('#canvas');
     await page.keyboard.press(']');                                  // select the second point
     for (let i = 0; i < 4; i++) await page.keyboard.press('Shift+ArrowRight');   // 4 x 10 cm off the wall
     const s = await lessonState(page);
@@ -75,22 +81,14 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
     assert.ok(s.fit.rms > 2 * before.fit.rms, `rms ${before.fit.rms} -> ${s.fit.rms}`);
     const f = rtl.fitLine(new Float64Array(s.points));
     assert.ok(Math.abs(s.fit.rms - f.rms) < 1e-12 && Math.abs(s.fit.offset - f.offset) < 1e-12);
-    assert.match(await page.textContent('#text'), /above σ/);
+    assert.match(await page.textContent('#lesson-text'), /above σ/);
     await page.click('#tls-reset');
     assert.deepEqual((await lessonState(page)).points, before.points);
   });
 
   test('dragging a point with the mouse moves it', async () => {
     const before = await lessonState(page);
-    const p = await page.evaluate(() => {
-      const s = window.__lesson.finalState();
-      const c = document.querySelector('#figure canvas'), r = c.getBoundingClientRect();
-      // the canvas maps world to its own pixels; find point 0 on screen by the lesson's figure transform
-      return { r: { x: r.left, y: r.top, w: r.width, h: r.height, cw: c.width, ch: c.height }, s };
-    });
-    const screen = await page.evaluate(([x, y]) => window.__figure.toScreen(x, y), [before.points[0], before.points[1]]);
-    const k = p.r.w / p.r.cw;
-    const x = p.r.x + screen[0] * k, y = p.r.y + screen[1] * k;
+    const { x, y } = await page.evaluate(([px, py]) => window.__rtl.clientPoint(px, py), [before.points[0], before.points[1]]);
     await page.mouse.move(x, y);
     await page.mouse.down();
     await page.mouse.move(x - 30, y, { steps: 4 });
@@ -113,13 +111,12 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
   test('screenshots at 1280x800 and 390x844', async () => {
     mkdirSync(SHOTS, { recursive: true });
     await page.setViewportSize({ width: 1280, height: 800 });
-    await page.focus('#figure canvas');
+    await page.focus('#canvas');
     await page.keyboard.press('Shift+ArrowRight');
-    await page.fill('#scrub', '3');
-    await page.dispatchEvent('#scrub', 'input');
+    await goStep(page, 3);
     await page.screenshot({ path: join(SHOTS, 'lesson-tls-fit-1280x800.png') });
     await page.setViewportSize({ width: 390, height: 844 });
-    await page.dispatchEvent('#scrub', 'input');
+    await page.dispatchEvent('[data-act="scrub"]', 'input');
     await page.screenshot({ path: join(SHOTS, 'lesson-tls-fit-390x844.png'), fullPage: true });
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 390);
     await page.waitForFunction(() => window.__rtl.ready, null, { timeout: PAGE_TIMEOUT });

@@ -1,4 +1,5 @@
 // The lessons in menu order. Each module default-exports { id, title, summary, create(host) } (see README.md).
+import tlsFit from './tls-fit.js';
 import car from './car.js';
 import ia from './ia.js';
 import ftls from './ftls.js';
@@ -7,5 +8,7 @@ import itls from './itls.js';
 import dp from './dp.js';
 import rw from './rw.js';
 import compare from './compare.js';
+import tfTree from './tf-tree.js';
+import lidar3d from './lidar3d.js';
 
-export default [car, ia, ftls, aftls, itls, dp, rw, compare];
+export default [tlsFit, car, ia, ftls, aftls, itls, dp, rw, compare, tfTree, lidar3d];

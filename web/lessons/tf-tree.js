@@ -7,6 +7,8 @@
 // robot frame (the laser at the robot's origin): mount 0 is the log's truth, any other mount misplaces the walls
 // against the log's other scans, drawn grey in the map.
 export const EXCERPT = Object.freeze({ dataset: 'intel', scan: 20, neighbours: [16, 17, 18, 19, 21, 22, 23, 24] });
+import { Scene } from '../figure.js';
+
 const STEPS = ['sensor', 'mount', 'pose', 'chain'];
 const FRAME_COLOURS = { map: '#000000', robot: '#0072B2', sensor: '#D55E00' };
 const f2 = (v) => (Number.isFinite(v) ? v.toFixed(2) : '–');
@@ -38,7 +40,7 @@ export default {
   title: 'Transformation tree',
   summary: 'Sensor → robot → map: a real scan moved through the package\'s TfTree, one frame at a time.',
   async create(host) {
-    const scans = await host.data.carmen(EXCERPT.dataset);
+    const scans = await host.data.load(EXCERPT.dataset);
     const scan = scans[EXCERPT.scan];
     const measured = Array.from(scan.points);        // treated as the sensor's measurement
     const controls = host.controls;
@@ -54,7 +56,7 @@ export default {
     const mx = controls.querySelector('#tf-mount-x'), my = controls.querySelector('#tf-mount-y');
     const ma = controls.querySelector('#tf-mount-angle'), maOut = controls.querySelector('#tf-mount-angle-out');
     const err = controls.querySelector('#tf-mount-error');
-    let mount = { x: 0, y: 0, angle: 0 };
+    let mount = { x: 0, y: 0, angle: 0 }, mountOk = true;
     const readMount = () => {
       let bad = '';
       for (const el of [mx, my]) {
@@ -63,6 +65,7 @@ export default {
         if (invalid) { el.setAttribute('aria-invalid', 'true'); bad = 'The mount offset must be a number between −5 and 5 m.'; } else el.removeAttribute('aria-invalid');
       }
       err.textContent = bad;
+      mountOk = !bad;
       maOut.textContent = ma.value;
       if (!bad) mount = { x: Number(mx.value), y: Number(my.value), angle: Number(ma.value) * Math.PI / 180 };
     };
@@ -71,25 +74,15 @@ export default {
     let tree = null, result = null, step = 0;
     const fig = host.figure;
 
-    const axes = (ctx, tf, name, len) => {
-      // the frame's origin and axes drawn in the current frame (tf maps the frame's coordinates to the drawn frame)
+    // a frame's origin and axes drawn in the current frame (tf maps the frame's coordinates to the drawn frame)
+    const axes = (scene, tf, name, len) => {
       const p = tf([0, 0, len, 0, 0, len]);
-      const [o, x, y] = [0, 1, 2].map((k) => fig.toScreen(p[2 * k], p[2 * k + 1]));
-      ctx.save(); ctx.strokeStyle = FRAME_COLOURS[name]; ctx.fillStyle = FRAME_COLOURS[name]; ctx.lineWidth = 2.5;
-      ctx.beginPath(); ctx.moveTo(...o); ctx.lineTo(...x); ctx.moveTo(...o); ctx.lineTo(...y); ctx.stroke();
-      ctx.font = '13px system-ui, sans-serif';
-      // labels apart, since frames can coincide (the identity mount puts the sensor on the robot's origin)
-      const dy = { map: 16, robot: -8, sensor: 30 }[name];
-      ctx.fillText(`${name} x`, x[0] + 4, x[1] - 4 + (name === 'sensor' ? 16 : 0)); ctx.fillText(name, o[0] + 6, o[1] + dy);
-      ctx.restore();
-    };
-    const dots = (ctx, xy, colour, r = 2.2) => {
-      ctx.fillStyle = colour;
-      for (let i = 0; i < xy.length; i += 2) {
-        if (!Number.isFinite(xy[i])) continue;
-        const [sx, sy] = fig.toScreen(xy[i], xy[i + 1]);
-        ctx.fillRect(sx - r, sy - r, 2 * r, 2 * r);
-      }
+      const colour = FRAME_COLOURS[name];
+      scene.segments([p[0], p[1], p[2], p[3], p[0], p[1], p[4], p[5]], { colour, width: 2.5 });
+      scene.label(p[2], p[3], `${name} x`, { colour });
+      // names apart, since frames can coincide (the identity mount puts the sensor on the robot's origin)
+      const off = { map: [0, -0.25], robot: [0, 0.15], sensor: [0, -0.45] }[name].map((v) => v * len);
+      scene.label(p[0] + off[0], p[1] + off[1], name, { colour });
     };
     const extentOf = (...sets) => {
       let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
@@ -104,6 +97,7 @@ export default {
     const lesson = {
       recompute() {
         readMount();
+        if (!mountOk) return { steps: 0 };
         tree?.dispose();
         tree = buildTree(host.rtl, scan, mount);
         const robotPts = tree.transformPoints('sensor', 'robot', measured);
@@ -124,24 +118,25 @@ export default {
         return { steps: STEPS.length };
       },
       show(k) {
+        if (k < 0 || !result) { host.text.textContent = 'Correct the mount (marked) to see the frames.'; return; }
         step = Math.max(0, Math.min(STEPS.length - 1, k));
-        const ctx = fig.ctx;
         const name = STEPS[step];
         const inFrame = { sensor: 'sensor', mount: 'robot', pose: 'map', chain: 'map' }[name];
         const pts = { sensor: result.sensor, mount: result.robot, pose: result.map, chain: result.chain }[name];
         const frameTf = (frame) => (xy) => (frame === inFrame ? xy : Array.from(tree.transformPoints(frame, inFrame, xy)));
         const mapView = inFrame === 'map';
         fig.setExtent(...extentOf(pts, mapView ? result.background : [], frameTf('map')([0, 0]), frameTf('robot')([0, 0])));
-        fig.clear();
-        if (mapView) dots(ctx, result.background, '#c3c8cf', 1.5);
+        const scene = new Scene(`Intel scan ${EXCERPT.scan} in the ${inFrame} frame`);
+        if (mapView) scene.points(result.background, { colour: '#c3c8cf', radius: 1.5 });
         // the previous step's points, faint, so the move is visible
-        if (name === 'mount') dots(ctx, result.sensor, '#f3c4a8', 1.8);
-        if (name === 'pose') dots(ctx, result.robot, '#a9c8e6', 1.8);
-        dots(ctx, pts, name === 'sensor' ? FRAME_COLOURS.sensor : name === 'mount' ? FRAME_COLOURS.robot : '#222');
+        if (name === 'mount') scene.points(result.sensor, { colour: '#f3c4a8', radius: 1.8 });
+        if (name === 'pose') scene.points(result.robot, { colour: '#a9c8e6', radius: 1.8 });
+        scene.points(pts, { colour: name === 'sensor' ? FRAME_COLOURS.sensor : name === 'mount' ? FRAME_COLOURS.robot : '#222', radius: 2.2 });
         const len = mapView ? 1.5 : 0.8;
-        if (mapView) axes(ctx, frameTf('map'), 'map', len);
-        if (inFrame !== 'sensor') axes(ctx, frameTf('robot'), 'robot', len);
-        axes(ctx, frameTf('sensor'), 'sensor', 0.6 * len);
+        if (mapView) axes(scene, frameTf('map'), 'map', len);
+        if (inFrame !== 'sensor') axes(scene, frameTf('robot'), 'robot', len);
+        axes(scene, frameTf('sensor'), 'sensor', 0.6 * len);
+        fig.show(scene);
 
         const m = mount, pose = scan;
         host.text.textContent = {

@@ -6,6 +6,8 @@
 // frame). Its orthogonal residuals are ~1.5 cm, but its vertical ones are about nine times larger: the case where
 // measuring errors vertically (OLS) is the wrong model.
 export const EXCERPT = Object.freeze({ dataset: 'intel', scan: 28, firstBeam: 124, lastBeam: 131 });
+import { Scene, lineThrough } from '../figure.js';
+
 const STEPS = ['centroid', 'spread', 'normal', 'residuals', 'rms'];
 const NUDGE = 0.01;   // m per arrow key press
 
@@ -26,7 +28,7 @@ export function olsLine(xy) {
 
 // The points of the excerpt, as the package reads the log (robot frame, gaps skipped).
 async function excerptPoints(host) {
-  const scans = await host.data.carmen(EXCERPT.dataset);
+  const scans = await host.data.load(EXCERPT.dataset);
   const p = scans[EXCERPT.scan].points;
   const out = [];
   for (let i = EXCERPT.firstBeam; i <= EXCERPT.lastBeam; i++) {
@@ -59,7 +61,7 @@ export default {
     const sigmaInput = controls.querySelector('#tls-sigma');
     const sigmaError = controls.querySelector('#tls-sigma-error');
     const pointSelect = controls.querySelector('#tls-point');
-    let sigma = 0.03;
+    let sigma = 0.03, sigmaOk = true;
 
     const readSigma = () => {
       const v = Number(sigmaInput.value);
@@ -67,12 +69,13 @@ export default {
       sigmaInput.toggleAttribute('aria-invalid', bad);
       if (bad) sigmaInput.setAttribute('aria-invalid', 'true');
       sigmaError.textContent = bad ? 'σ must be a number above 0 and at most 1 m.' : '';
+      sigmaOk = !bad;
       if (!bad) sigma = v;
     };
     const changed = () => { host.onParamsChanged(); };
     sigmaInput.addEventListener('input', () => { readSigma(); changed(); });
     pointSelect.addEventListener('change', () => { selected = Number(pointSelect.value); lesson.show(step); });
-    controls.querySelector('#tls-reset').addEventListener('click', () => { points = original.slice(); changed(); });
+    controls.querySelector('#tls-reset').addEventListener('click', () => { points = original.slice(); fig.setExtent(...view); changed(); });
 
     // ---- interaction on the figure
     const fig = host.figure;
@@ -86,7 +89,9 @@ export default {
       }
       return bd < 16 ? best : -1;
     };
-    const local = (e) => { const r = canvas.getBoundingClientRect(); return [(e.clientX - r.left) * canvas.width / r.width, (e.clientY - r.top) * canvas.height / r.height]; };
+    const local = (e) => { const r = canvas.getBoundingClientRect(); return [e.clientX - r.left, e.clientY - r.top]; };
+    // The figure pans on drag and on arrow keys; on a point (or with a point selected for the keys) the lesson takes
+    // the event first (capture phase on the canvas) and keeps it from the figure.
     let dragging = -1;
     const onDown = (e) => {
       const i = nearest(...local(e));
@@ -95,14 +100,16 @@ export default {
       pointSelect.value = String(i);
       canvas.setPointerCapture?.(e.pointerId);
       e.preventDefault();
+      e.stopImmediatePropagation();
     };
     const onMove = (e) => {
       if (dragging < 0) return;
+      e.stopImmediatePropagation();
       const [x, y] = fig.toWorld(...local(e));
       points[2 * dragging] = x; points[2 * dragging + 1] = y;
       changed();
     };
-    const onUp = () => { dragging = -1; };
+    const onUp = (e) => { if (dragging >= 0) e.stopImmediatePropagation(); dragging = -1; };
     const onKey = (e) => {
       const n = points.length / 2;
       if (e.key === '[' || e.key === ']') {
@@ -110,6 +117,7 @@ export default {
         pointSelect.value = String(selected);
         lesson.show(step);
         e.preventDefault();
+        e.stopImmediatePropagation();
         return;
       }
       const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[e.key];
@@ -117,12 +125,13 @@ export default {
       const k = e.shiftKey ? 10 * NUDGE : NUDGE;
       points[2 * selected] += d[0] * k; points[2 * selected + 1] += d[1] * k;
       e.preventDefault();
+      e.stopImmediatePropagation();
       changed();
     };
-    canvas.addEventListener('pointerdown', onDown);
-    canvas.addEventListener('pointermove', onMove);
-    canvas.addEventListener('pointerup', onUp);
-    canvas.addEventListener('keydown', onKey);
+    canvas.addEventListener('pointerdown', onDown, true);
+    canvas.addEventListener('pointermove', onMove, true);
+    canvas.addEventListener('pointerup', onUp, true);
+    canvas.addEventListener('keydown', onKey, true);
 
     // The view: the original excerpt with a margin, fixed while dragging so the points do not jump.
     const view = (() => {
@@ -135,24 +144,14 @@ export default {
       return [x0 - m, y0 - m, x1 + m, y1 + m];
     })();
 
-    const drawLine = (ctx, a, b, c, style, width, dash = []) => {
-      // a x + b y + c = 0 clipped to the view (a display computation)
-      const [x0, y0, x1, y1] = view;
-      const ends = Math.abs(b) > Math.abs(a)
-        ? [[x0, -(a * x0 + c) / b], [x1, -(a * x1 + c) / b]]
-        : [[-(b * y0 + c) / a, y0], [-(b * y1 + c) / a, y1]];
-      const [p, q] = ends.map(([x, y]) => fig.toScreen(x, y));
-      ctx.save(); ctx.strokeStyle = style; ctx.lineWidth = width; ctx.setLineDash(dash);
-      ctx.beginPath(); ctx.moveTo(...p); ctx.lineTo(...q); ctx.stroke(); ctx.restore();
-    };
-    const seg = (ctx, x0, y0, x1, y1, style, width = 1.5, dash = []) => {
-      ctx.save(); ctx.strokeStyle = style; ctx.lineWidth = width; ctx.setLineDash(dash);
-      ctx.beginPath(); ctx.moveTo(...fig.toScreen(x0, y0)); ctx.lineTo(...fig.toScreen(x1, y1)); ctx.stroke(); ctx.restore();
-    };
+    fig.setExtent(...view);
+    const reach = 2 * Math.max(view[2] - view[0], view[3] - view[1]);
+    const lineItem = (scene, x, y, dx, dy, opts) => scene.segments(lineThrough(x, y, x + dx, y + dy, reach), opts);
 
     const lesson = {
       recompute() {
         readSigma();
+        if (!sigmaOk) return { steps: 0 };
         fit = host.rtl.fitLine(new Float64Array(points));
         ols = olsLine(points);
         // The spread the text talks about: the covariance entries (display), whose smaller eigenvalue is fitLine's rms².
@@ -166,44 +165,47 @@ export default {
         return { steps: STEPS.length };
       },
       show(k) {
+        if (k < 0 || !fit) {
+          host.text.textContent = 'Correct σ (marked) to see the fit.';
+          fig.show(new Scene('TLS line fit').points(points, { colour: '#222', radius: 4 }));
+          return;
+        }
         step = Math.max(0, Math.min(STEPS.length - 1, k));
-        const ctx = fig.ctx;
-        fig.setExtent(...view);
-        fig.clear();
-        const [cx, cy] = fit.centroid, [a, b] = fit.normal, c = fit.offset;
+        const [cx, cy] = fit.centroid, [a, b] = fit.normal, c = fit.offset, [dx, dy] = fit.direction;
         const n = points.length / 2;
         const name = STEPS[step];
+        const scene = new Scene(`TLS line fit, Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}-${EXCERPT.lastBeam}: ${name}`);
         // line and residuals first, points on top
-        if (step >= 2) drawLine(ctx, a, b, c, '#0072B2', 2.5);
+        if (step >= 2) lineItem(scene, cx, cy, dx, dy, { colour: '#0072B2', width: 2.5 });
         if (step >= 3) {
-          drawLine(ctx, -ols.slope, 1, -ols.intercept, '#D55E00', 1.5, [6, 4]);
+          lineItem(scene, 0, ols.intercept, 1, ols.slope, { colour: '#D55E00', width: 1.5, dash: true });
+          const orth = [], vert = [];
           for (let i = 0; i < n; i++) {
             const x = points[2 * i], y = points[2 * i + 1], d = a * x + b * y + c;
-            seg(ctx, x, y, x - d * a, y - d * b, '#0072B2', 1.5);
-            seg(ctx, x, y, x, ols.slope * x + ols.intercept, '#D55E00', 1, [2, 3]);
+            orth.push(x, y, x - d * a, y - d * b);
+            vert.push(x, y, x, ols.slope * x + ols.intercept);
           }
+          scene.segments(vert, { colour: '#D55E00', width: 1, dash: true });
+          scene.segments(orth, { colour: '#0072B2', width: 1.5 });
         }
         if (step === 1 || step === 2) {
-          // principal axes of the spread, from the package's direction and normal, lengths √λ (display)
+          // principal axes of the spread, along the package's direction and normal, half-lengths 2√λ (display)
           const lmin = fit.rms ** 2, lmax = spread.sxx + spread.syy - lmin;
-          const [dx, dy] = fit.direction;
-          seg(ctx, cx - 2 * Math.sqrt(lmax) * dx, cy - 2 * Math.sqrt(lmax) * dy, cx + 2 * Math.sqrt(lmax) * dx, cy + 2 * Math.sqrt(lmax) * dy, '#009E73', 2);
-          seg(ctx, cx - 2 * Math.sqrt(lmin) * a, cy - 2 * Math.sqrt(lmin) * b, cx + 2 * Math.sqrt(lmin) * a, cy + 2 * Math.sqrt(lmin) * b, '#CC79A7', 3);
+          const L = 2 * Math.sqrt(lmax), S = 2 * Math.sqrt(lmin);
+          scene.segments([cx - L * dx, cy - L * dy, cx + L * dx, cy + L * dy], { colour: '#009E73', width: 2 });
+          scene.segments([cx - S * a, cy - S * b, cx + S * a, cy + S * b], { colour: '#CC79A7', width: 3 });
         }
         if (step === 2) {
-          const len = 0.25 * (view[2] - view[0]);
-          seg(ctx, cx, cy, cx + len * a, cy + len * b, '#CC79A7', 2.5);
-          const [hx, hy] = fig.toScreen(cx + len * a, cy + len * b);
-          ctx.fillStyle = '#CC79A7'; ctx.beginPath(); ctx.arc(hx, hy, 5, 0, 2 * Math.PI); ctx.fill();
+          const len = 0.2 * (view[2] - view[0]);
+          scene.segments([cx, cy, cx + len * a, cy + len * b], { colour: '#CC79A7', width: 2.5 });
+          scene.marker(cx + len * a, cy + len * b, { shape: 'dot', colour: '#CC79A7', size: 8 });
+          scene.label(cx + len * a, cy + len * b, 'normal n', { colour: '#762A83' });
         }
-        for (let i = 0; i < n; i++) {
-          const [sx, sy] = fig.toScreen(points[2 * i], points[2 * i + 1]);
-          ctx.fillStyle = '#222'; ctx.beginPath(); ctx.arc(sx, sy, i === selected ? 6 : 4, 0, 2 * Math.PI); ctx.fill();
-          if (i === selected) { ctx.strokeStyle = '#E69F00'; ctx.lineWidth = 2.5; ctx.beginPath(); ctx.arc(sx, sy, 9, 0, 2 * Math.PI); ctx.stroke(); }
-        }
-        const [csx, csy] = fig.toScreen(cx, cy);
-        ctx.strokeStyle = '#000'; ctx.lineWidth = 2;
-        ctx.beginPath(); ctx.moveTo(csx - 8, csy); ctx.lineTo(csx + 8, csy); ctx.moveTo(csx, csy - 8); ctx.lineTo(csx, csy + 8); ctx.stroke();
+        scene.points(points, { colour: '#222', radius: 4 });
+        scene.marker(points[2 * selected], points[2 * selected + 1], { colour: '#E69F00', size: 9 });
+        scene.marker(cx, cy, { shape: 'x', colour: '#000', size: 7 });
+        scene.label(cx, cy, 'centroid');
+        fig.show(scene);
 
         const olsRms = Math.sqrt(points.reduce((s, v, i) => (i % 2 ? s + (v - ols.slope * points[i - 1] - ols.intercept) ** 2 : s), 0) / n);
         const lmin = fit.rms ** 2, lmax = spread.sxx + spread.syy - lmin;
@@ -224,10 +226,10 @@ export default {
         };
       },
       dispose() {
-        canvas.removeEventListener('pointerdown', onDown);
-        canvas.removeEventListener('pointermove', onMove);
-        canvas.removeEventListener('pointerup', onUp);
-        canvas.removeEventListener('keydown', onKey);
+        canvas.removeEventListener('pointerdown', onDown, true);
+        canvas.removeEventListener('pointermove', onMove, true);
+        canvas.removeEventListener('pointerup', onUp, true);
+        canvas.removeEventListener('keydown', onKey, true);
         controls.replaceChildren();
       },
     };
