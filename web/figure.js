@@ -47,7 +47,8 @@ export class Figure {
     this.zoom = null;                                           // the user's extent after zoom/pan, or null
     this.view = null;                                           // world <-> canvas transform of the last draw
     this.wire();
-    this.resizeObserver = new ResizeObserver(() => this.render());
+    // redraw after layout, not inside the observer (a canvas resize there would re-enter the layout loop)
+    this.resizeObserver = new ResizeObserver(() => requestAnimationFrame(() => this.render()));
     this.resizeObserver.observe(canvas);
   }
 

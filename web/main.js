@@ -62,14 +62,14 @@ function reportError(e) {
 function recompute(keepAt) {
   const { instance, lesson } = state;
   if (!instance) return;
-  let steps = 0;
+  let steps = 0, start = 0;
   try {
-    ({ steps } = instance.recompute());
+    ({ steps, start = 0 } = instance.recompute());
   } catch (e) {
     reportError(e);
   }
   entry(lesson.id).steps = steps;
-  state.player.load(steps, keepAt ?? state.player.step);
+  state.player.load(steps, keepAt === 'start' ? start : keepAt ?? state.player.step);
 }
 
 async function open(id) {
@@ -87,7 +87,9 @@ async function open(id) {
   $('lesson-title').textContent = lesson.title;
   $('lesson-summary').textContent = lesson.summary;
   document.title = `${lesson.title} · RTL lessons`;
-  for (const el of [$('lesson-controls'), $('lesson-text'), $('lesson-stage')]) el.replaceChildren();
+  for (const el of [$('lesson-controls'), $('lesson-text'), $('lesson-stage')]) { el.replaceChildren(); el.className = el.className.replace(/ lidar3d\b/, ''); }
+  $('figure').hidden = Boolean(lesson.noFigure);
+  $('player').hidden = Boolean(lesson.noFigure);
   // A fresh canvas per lesson: its figure's listeners and zoom die with it.
   const canvas = document.createElement('canvas');
   Object.assign(canvas, { id: 'canvas', tabIndex: 0 });
@@ -107,7 +109,7 @@ async function open(id) {
     const instance = await lesson.create(host);
     if (ticket !== state.opening) { instance.dispose(); return; }
     state.instance = instance;
-    recompute(0);
+    recompute('start');
     setStatus('');
   } catch (e) {
     reportError(e);

@@ -6,8 +6,8 @@ import { readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, drawClusters, segFields } from './seg-common.js';
 import { m, note } from './ui.js';
 
-const EXCERPT = { dataset: 'intel', scan: 0, focus: null,
-  why: 'The whole scan is segmented (the threshold depends on the beam count), the view starts on a doorway where the bounds decide whether the two walls join.' };
+const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
+  why: 'The whole scan is segmented (the threshold depends on the beam count); the view starts where, at step 2, the wall breaks between beams 38 and 39. At step 3 point 40 also looks past 39, links to 38, and the wall becomes one cluster (6 clusters of 3+ points become 4).' };
 
 // Labels after events 0..k: start{i} labels i as i, link{i, cluster} gives i j's label, merge{from, into}
 // relabels (the SegTrace.h replay).
@@ -41,7 +41,7 @@ export default {
     const points = scan.points, n = points.length / 2;
     note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)} (${n} beams). ${EXCERPT.why}`);
     const fields = segFields(host, { step: 2, stepLabel: 'step s (compares up to s − 1 previous points)' });
-    if (EXCERPT.focus) host.figure.setExtent(...EXCERPT.focus); else host.figure.fitPoints(points);
+    host.figure.fitPoints(host.data.beams(points, ...EXCERPT.focusBeams));
     let missing = null, trace = [], untraced = null, params = null;
     const first = new Map();   // point -> first event about it (clicking a point jumps there)
     host.figure.onPick = (x, y) => {
@@ -58,7 +58,7 @@ export default {
         ({ trace, missing } = traced(() => host.rtl.segment(points, { ...opts, trace: true }), 'CAR segmentation'));
         first.clear();
         trace.forEach((e, k) => { if (e.i !== undefined && !first.has(e.i)) first.set(e.i, k); });
-        return { steps: trace.length };
+        return { steps: trace.length, start: first.get(EXCERPT.startAt) ?? 0 };
       },
       show(k) {
         this.step = k;

@@ -13,10 +13,16 @@ export async function loadExcerpt(host, ex) {
     chain = f.xy;
     indices = f.index.map((i) => i + first);
   } else {
-    ({ points: chain, indices } = host.data.cluster(scan.points, ex.segment, ex.cluster));
+    // the cluster holding beam `clusterAt` when the scan is segmented with `segment`
+    const { clusters } = host.rtl.segment(scan.points, ex.segment);
+    const k = clusters.findIndex((c) => c.indices.includes(ex.clusterAt));
+    indices = Array.from(clusters[k].indices);
+    chain = host.data.gather(scan.points, indices);
+    ex = { ...ex, cluster: k };
   }
+  const seg = ex.segment ? `, segmented with step ${ex.segment.step}, bounds ${ex.segment.lowerBound}–${ex.segment.upperBound} m` : '';
   const where = `${host.data.describe(ex.dataset, ex.scan)}, ` +
-    (ex.beams ? `beams ${ex.beams[0]}–${ex.beams[1]}` : `cluster ${ex.cluster + 1}`) + ` (${chain.length / 2} points, beams ${indices[0]}–${indices[indices.length - 1]})`;
+    (ex.beams ? `beams ${ex.beams[0]}–${ex.beams[1]}` : `cluster ${ex.cluster + 1}${seg}`) + ` (${chain.length / 2} points, beams ${indices[0]}–${indices[indices.length - 1]})`;
   note(host.controls, `<strong>Excerpt:</strong> ${where}. ${ex.why}`);
   return { scan, chain, indices, where };
 }

@@ -6,7 +6,7 @@ import { readParams, positive } from './common.js';
 import { mm, note, numberField } from './ui.js';
 
 const METHODS = [['ftls', 'FTLS'], ['aftls', 'AFTLS'], ['itls', 'ITLS'], ['dp', 'Douglas–Peucker'], ['rw', 'Reumann–Witkam']];
-const SCAN = { dataset: 'intel', scan: 3, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, minPoints: 10 };
+const SCAN = { dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, minPoints: 10, start: 0 };
 
 function measure(chain, v) {
   const n = chain.length / 2;
@@ -31,13 +31,13 @@ export default {
     const scan = await host.data.scan(SCAN.dataset, SCAN.scan);
     const { clusters } = host.rtl.segment(scan.points, SCAN.segment);
     const big = clusters.map((c, k) => ({ k, indices: Array.from(c.indices) })).filter((c) => c.indices.length >= SCAN.minPoints);
-    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(SCAN.dataset, SCAN.scan)}, segmented with step 3, bounds 0.1–0.5 m; pick a cluster (list, or click it in the figure). The largest one, a wall with a bend, starts selected: on a straight wall every method agrees.`);
+    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(SCAN.dataset, SCAN.scan)}, segmented with step 3, bounds 0.1–0.5 m; pick a cluster (list, or click it in the figure). The room corner of beams 0–32 starts selected: it has bends, so the methods disagree (on a straight wall they all give one segment).`);
     const wrap = document.createElement('div');
     wrap.className = 'field wide';
     wrap.innerHTML = '<label for="cmp-cluster">cluster</label><select id="cmp-cluster" name="cluster"></select>';
     const select = wrap.querySelector('select');
     for (const c of big) { const o = document.createElement('option'); o.value = String(c.k); o.textContent = `cluster ${c.k + 1}: ${c.indices.length} points, beams ${c.indices[0]}–${c.indices[c.indices.length - 1]}`; select.append(o); }
-    select.value = String(big.reduce((a, b) => (b.indices.length > a.indices.length ? b : a)).k);
+    select.value = String((big.find((c) => c.indices[0] === SCAN.start) ?? big[0]).k);
     select.addEventListener('input', () => { pickCluster(); host.onParamsChanged(); });
     host.controls.append(wrap);
     const fields = {

@@ -5,8 +5,8 @@ import { loadExcerpt, pt, readParams, positive, traced, explainNoSteps } from '.
 import { m, numberField } from './ui.js';
 
 const EXCERPT = {
-  dataset: 'intel', scan: 3, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, cluster: 0,
-  why: 'A wall with a doorway bend and sensor noise of a few centimetres: at ε = 0.03 m the noise itself becomes vertices, at 0.09 m only the corners stay, at 0.3 m the bend is cut.',
+  dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
+  why: 'A room corner with a door frame (32 points): ε = 0.02 m keeps 8 segments, 0.05 m 5, 0.2 m only 2, so ε visibly decides which bends are corners.',
 };
 
 // kept vertices (sorted) after events 0..k, as the SimplifyTrace.h replay says: start keeps 0 and count-1, each
@@ -31,7 +31,7 @@ export default {
   async create(host) {
     const { chain, where } = await loadExcerpt(host, EXCERPT);
     const fields = {
-      epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: max distance from the chord', value: 0.09, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
+      epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: max distance from the chord', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
     };
     host.figure.fitPoints(chain);
     let missing = null, trace = [], untraced = null, params = null;

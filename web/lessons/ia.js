@@ -6,8 +6,8 @@ import { nonNegative, readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, segFields } from './seg-common.js';
 import { m, note, numberField } from './ui.js';
 
-const EXCERPT = { dataset: 'intel', scan: 0, focus: null,
-  why: 'The same scan as the CAR lesson, fed point by point as the sensor would; the streaming segmenter has no seam and closes a cluster as soon as it leaves the window.' };
+const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
+  why: 'The CAR lesson\'s scan and wall, fed point by point as the sensor delivers it: no seam, and a cluster closes as soon as none of its points is left in the window.' };
 
 // Window, alive map and closed list after events 0..k (the SegTrace.h IA replay).
 function replay(trace, k) {
@@ -42,7 +42,7 @@ export default {
       ...segFields(host, { step: 3, stepLabel: 'step s (window of the last s points)' }),
       scaling: numberField(host.controls, { key: 'scaling', label: 'scaling (threshold = scaling · range)', kind: 'number', value: 0.05, min: 0, max: 1, step: 0.005, onInput: host.onParamsChanged }),
     };
-    if (EXCERPT.focus) host.figure.setExtent(...EXCERPT.focus); else host.figure.fitPoints(points);
+    host.figure.fitPoints(host.data.beams(points, ...EXCERPT.focusBeams));
     let missing = null, trace = [], untraced = [], params = null;
     const run = (opts, withTrace) => {
       const seg = new host.rtl.StreamSegmenter(withTrace ? { ...opts, trace: true } : opts);
@@ -59,7 +59,8 @@ export default {
         const opts = { dim: 2, step: params.step, lowerBound: params.lowerBound, upperBound: params.upperBound, scaling: params.scaling };
         untraced = run(opts, false);
         ({ trace, missing } = traced(() => run(opts, true), 'streaming (IA) segmentation'));
-        return { steps: trace.length };
+        const start = trace.findIndex((e) => e.i === EXCERPT.startAt);
+        return { steps: trace.length, start: Math.max(0, start) };
       },
       show(k) {
         this.step = k;
