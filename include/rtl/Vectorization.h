@@ -20,6 +20,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "rtl/Core.h"
+#include "rtl/core/Trace.h"
 #include "rtl/vect/ApproximationTlsLine2D.h"
 #include "rtl/vect/ApproximationTlsLine3D.h"
 #include "rtl/vect/ApproximationTlsPlane3D.h"
@@ -32,6 +33,7 @@
 #include "rtl/vect/PrecArray.h"
 #include "rtl/vect/PrecArrayBlocked.h"
 #include "rtl/vect/PrecSums.h"
+#include "rtl/vect/SimplifyTrace.h"
 #include "rtl/vect/VectorizerPointElimination.h"
 
 namespace rtl
@@ -81,8 +83,9 @@ namespace rtl
 
     namespace vect_detail
     {
-        //! Incremental TLS extraction -> projected end points, for 2D and 3D lines.
-        template<class Approximation>
+        //! Incremental TLS extraction -> projected end points, for 2D and 3D lines. An enabled Observer set by
+        //! setObserver() receives the extractor's events and then one ItlsSegment per final range (SimplifyTrace.h).
+        template<class Approximation, class Observer = NoTrace>
         class VectorizerIncremental : public VectorizerBase<Approximation>
         {
             typedef VectorizerBase<Approximation> Base;
@@ -93,6 +96,8 @@ namespace rtl
 
             void setSigma(ElementType sigma) { this->sigma = sigma; }
             void setMaxSize(size_t size) { this->reserveBase(size); }
+            //! Observer of the following calls (nullptr: none); it must outlive them.
+            void setObserver(Observer *observer) { observer_ = observer; extractor.setObserver(observer); }
 
             bool operator()(const std::vector<VectorType> &pts)
             {
@@ -103,19 +108,37 @@ namespace rtl
                     post(pts, this->approx, this->idx);
                     return false;
                 }
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        reportSegments();
                 return true;
             }
             const std::vector<OutputType> &lineSegments() const { return post.output(); }
 
         private:
-            ExtractorChainIncremental<ApproximationType> extractor;
+            void reportSegments() const
+            {
+                constexpr int dims = VectorType::dimensionality();
+                for (size_t r = 0; r < this->idx.size(); ++r)
+                {
+                    const auto &seg = post.output()[r];
+                    const auto b = seg.beg(), e = seg.end();
+                    (*observer_)(ItlsSegment{r, this->idx[r].first, this->idx[r].second, dims,
+                                             static_cast<double>(b[0]), static_cast<double>(b[1]), dims == 3 ? static_cast<double>(b[dims - 1]) : 0.0,
+                                             static_cast<double>(e[0]), static_cast<double>(e[1]), dims == 3 ? static_cast<double>(e[dims - 1]) : 0.0});
+                }
+            }
+
+            Observer *observer_{nullptr};
+            ExtractorChainIncremental<ApproximationType, Observer> extractor;
             PostprocessorProjectEndpoints<ApproximationType> post;
         };
     }
 
-    //! Incremental TLS lines, trimmed by the projections of each range's end points.
-    template<typename Element, typename Compute>
-    class VectorizerITLSProjections2D : public vect_detail::VectorizerIncremental<ApproximationTlsLine2D<Element, Compute>>
+    //! Incremental TLS lines, trimmed by the projections of each range's end points. Observer: see
+    //! vect_detail::VectorizerIncremental (e.g. rtl::ItlsTraceLog).
+    template<typename Element, typename Compute, class Observer = NoTrace>
+    class VectorizerITLSProjections2D : public vect_detail::VectorizerIncremental<ApproximationTlsLine2D<Element, Compute>, Observer>
     {
     public:
         VectorizerITLSProjections2D() = default;
@@ -217,9 +240,9 @@ namespace rtl
         PostprocessorPolyline2D<ApproximationType> polyline;
     };
 
-    //! Incremental TLS 3D lines, trimmed by the projections of each range's end points.
-    template<typename Element, typename Compute>
-    class VectorizerITLSProjections3D : public vect_detail::VectorizerIncremental<ApproximationTlsLine3D<Element, Compute>>
+    //! Incremental TLS 3D lines, trimmed by the projections of each range's end points. Observer as in 2D.
+    template<typename Element, typename Compute, class Observer = NoTrace>
+    class VectorizerITLSProjections3D : public vect_detail::VectorizerIncremental<ApproximationTlsLine3D<Element, Compute>, Observer>
     {
     public:
         VectorizerITLSProjections3D() = default;

@@ -6,18 +6,24 @@
 // it as a 2-point range, or the last two ranges are re-cut so that the final points pair up, or the last ranges
 // are re-partitioned by dynamic programming; only if no partition of that tail keeps every range within sigma is
 // it left out (then indices end at N - 1).
+// Observer (last template parameter, rtl/core/Trace.h): with an enabled one set by setObserver(), every step is
+// reported as the ItlsStart/ItlsAdd/ItlsClose/ItlsTail/ItlsTailRange events of rtl/vect/SimplifyTrace.h; the
+// decisions are the untraced ones (the reports only add RMS computations beside them).
 #pragma once
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Trace.h"
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/SimplifyTrace.h"
 
 namespace rtl
 {
-    template<class Approximation>
+    template<class Approximation, class Observer = NoTrace>
     class ExtractorChainIncremental
     {
     public:
@@ -34,6 +40,8 @@ namespace rtl
         ~ExtractorChainIncremental() = default;
 
         void setSigma(ElementType sigma) { sigma2 = static_cast<ComputeType>(sigma) * static_cast<ComputeType>(sigma); sig = sigma; }
+        //! Observer of the following calls (nullptr: none); it must outlive them.
+        void setObserver(Observer *observer) { observer_ = observer; }
 
         //! Clears the outputs and fills them. False (outputs empty) for fewer than 2 points or an invalid sigma.
         //! Non-finite points are the caller's responsibility (the Vectorizer classes reject them).
@@ -44,6 +52,9 @@ namespace rtl
             const size_t n = pts.size();
             if (n < 2 || !(sig > ElementType(0)) || !std::isfinite(static_cast<ComputeType>(sig)))
                 return false;
+            if constexpr (Observer::enabled)
+                if (observer_)
+                    (*observer_)(ItlsStart{n, static_cast<double>(sig)});
 
             // Hot loop on plain scalars (sums of p - origin); the PrecSums object is only assembled for the test.
             size_t beg = 0;
@@ -55,9 +66,23 @@ namespace rtl
                 for (int k = 0; k < dim; ++k)
                     d[k] = static_cast<ComputeType>(pts[i][k]) - origin[k];
                 add(s, d, ComputeType(1));
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        reportAdd(s, i, beg);
                 if (i - beg >= 2 && !Approximation::errorBelowRaw(s, static_cast<ComputeType>(i + 1 - beg), sigma2))
                 {
+                    [[maybe_unused]] double rmsWithNext = 0;   // for the trace only
+                    if constexpr (Observer::enabled)
+                        if (observer_)
+                            rmsWithNext = rms(makeSums(s, i + 1 - beg));
                     add(s, d, ComputeType(-1));
+                    if constexpr (Observer::enabled)
+                        if (observer_)
+                        {
+                            (*observer_)(ItlsClose{beg, i, rms(makeSums(s, i - beg)), rmsWithNext, static_cast<double>(sig), false});
+                            // Point i starts the next range (its sums relative to itself are zero).
+                            (*observer_)(ItlsAdd{i, i, 1, 0.0, static_cast<double>(sig), false, true});
+                        }
                     emit(approximations, indices, makeSums(s, i - beg), origin, beg, i);
                     beg = i;
                     origin = pts[i].template cast<ComputeType>();
@@ -67,14 +92,54 @@ namespace rtl
             }
             const PrecSumsType sums = makeSums(s, n - beg);
             if (n - beg >= 2)
+            {
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        (*observer_)(ItlsClose{beg, n, rms(sums), std::numeric_limits<double>::quiet_NaN(),
+                                               static_cast<double>(sig), true});
                 emit(approximations, indices, sums, origin, beg, n);
+            }
             else
-                attachLastPoint(pts, approximations, indices);
+            {
+                const TailPlacement tail = attachLastPoint(pts, approximations, indices);
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        reportTail(pts, indices, tail);
+            }
             return true;
         }
 
     private:
+        //! How attachLastPoint placed the last point: the first `kept` ranges are unchanged; ItlsTailMethod.
+        struct TailPlacement { size_t kept; int method; };
+
         ElementType sig{0};
+        Observer *observer_{nullptr};
+
+        static double rms(const PrecSumsType &sums)
+        {
+            return std::sqrt(static_cast<double>(Approximation::errorSquaredCompute(sums)));
+        }
+
+        //! The add event of point i to the range from beg (raw sums s include i), with the loop's own test.
+        void reportAdd(const ComputeType *s, size_t i, size_t beg) const
+        {
+            const size_t count = i + 1 - beg;
+            const bool tested = i - beg >= 2;
+            const bool fits = !tested || Approximation::errorBelowRaw(s, static_cast<ComputeType>(count), sigma2);
+            (*observer_)(ItlsAdd{i, beg, count, rms(makeSums(s, count)), static_cast<double>(sig), tested, fits});
+        }
+
+        //! The tail event after attachLastPoint and the ranges that replaced all but the first `tail.kept`.
+        void reportTail(const std::vector<VectorType> &pts, const std::vector<IndexType> &indices, const TailPlacement &tail) const
+        {
+            (*observer_)(ItlsTail{pts.size() - 1, tail.kept, tail.method});
+            for (size_t r = tail.kept; r < indices.size(); ++r)
+            {
+                const ComputeVectorType o = pts[indices[r].first].template cast<ComputeType>();
+                (*observer_)(ItlsTailRange{indices[r].first, indices[r].second, rms(rangeSums(pts, indices[r].first, indices[r].second, o))});
+            }
+        }
 
         //! Adds (w = 1) or removes (w = -1) the point d to/from the raw sums in PrecSums order.
         static void add(ComputeType *s, const ComputeType *d, ComputeType w)
@@ -117,8 +182,8 @@ namespace rtl
             return s;
         }
 
-        void attachLastPoint(const std::vector<VectorType> &pts, std::vector<Approximation> &approximations,
-                             std::vector<IndexType> &indices) const
+        TailPlacement attachLastPoint(const std::vector<VectorType> &pts, std::vector<Approximation> &approximations,
+                                      std::vector<IndexType> &indices) const
         {
             const size_t n = pts.size();
             IndexType &last = indices.back();
@@ -128,7 +193,7 @@ namespace rtl
             {
                 last.second = n;
                 approximations.back()(with, origin);
-                return;
+                return {indices.size() - 1, itlsTailAppended};
             }
             if (last.second - last.first >= 3)
             {
@@ -139,7 +204,7 @@ namespace rtl
                     approximations.back()(without, origin);
                     const ComputeVectorType o2 = pts[n - 2].template cast<ComputeType>();
                     emit(approximations, indices, rangeSums(pts, n - 2, n, o2), o2, n - 2, n);
-                    return;
+                    return {indices.size() - 2, itlsTailLastSplit};
                 }
             }
             if (last.second - last.first == 2 && indices.size() >= 2)
@@ -156,7 +221,7 @@ namespace rtl
                     last = IndexType(n - 2, n);
                     const ComputeVectorType o2 = pts[n - 2].template cast<ComputeType>();
                     approximations.back()(rangeSums(pts, n - 2, n, o2), o2);
-                    return;
+                    return {indices.size() - 2, itlsTailPrevGrown};
                 }
                 if (prev.second - prev.first >= 3)
                 {
@@ -169,19 +234,22 @@ namespace rtl
                         last = IndexType(n - 4, n - 2);
                         approximations.back()(rangeSums(pts, n - 4, n - 2, o1), o1);
                         emit(approximations, indices, rangeSums(pts, n - 2, n, o2), o2, n - 2, n);
-                        return;
+                        return {indices.size() - 3, itlsTailPrevShrunk};
                     }
                 }
             }
+            size_t kept = indices.size();
             for (size_t reach : {16u, 64u, 256u})
-                if (repartitionTail(pts, approximations, indices, reach))
-                    return;
+                if (repartitionTail(pts, approximations, indices, reach, kept))
+                    return {kept, itlsTailRepartitioned};
+            return {indices.size(), itlsTailLeftOut};
         }
 
         //! Last resort for the final point: re-partitions the last ranges (at least `reach` points back, at most
         //! 512) into the fewest ranges of >= 2 points within sigma, by dynamic programming over window prefix sums.
+        //! On success `kept` is the number of leading ranges left unchanged.
         bool repartitionTail(const std::vector<VectorType> &pts, std::vector<Approximation> &approximations,
-                             std::vector<IndexType> &indices, size_t reach) const
+                             std::vector<IndexType> &indices, size_t reach, size_t &kept) const
         {
             const size_t n = pts.size();
             size_t keep = indices.size(), ws = n - 1;
@@ -210,6 +278,7 @@ namespace rtl
                 return false;
             indices.resize(keep);
             approximations.resize(keep);
+            kept = keep;
             std::vector<IndexType> tail;
             for (size_t y = w; y > 0; y = from[y])
                 tail.emplace_back(from[y], y);

@@ -1,5 +1,8 @@
 // Point-elimination vectorizers in N dimensions: Douglas-Peucker and Reumann-Witkam. Both keep a subset of the
 // input points and return the polyline through them as line segments.
+// Observer (last template parameter, rtl/core/Trace.h): with an enabled one set by setObserver(), each call reports
+// the DpStart/DpRange (RwStart/RwKeep/RwStrip/RwExit) events of rtl/vect/SimplifyTrace.h. The decisions are those
+// of the untraced code; the traced path only adds the distance computations it reports.
 #pragma once
 
 #include <cmath>
@@ -9,7 +12,9 @@
 #include <vector>
 
 #include "rtl/core/LineSegmentND.h"
+#include "rtl/core/Trace.h"
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/SimplifyTrace.h"
 
 namespace rtl
 {
@@ -42,6 +47,18 @@ namespace rtl
             for (size_t i = 0; i + 1 < keys.size(); ++i)
                 out.push_back(makeSegment<Segment>(pts[keys[i]], pts[keys[i + 1]]));
         }
+
+        //! Distance of p from the line through a and b (from a if they coincide), in double; NaN if not finite.
+        template<class Vector>
+        double lineDistance(const Vector &p, const Vector &a, const Vector &b)
+        {
+            const auto pd = p.data().template cast<double>(), ad = a.data().template cast<double>();
+            const auto v = (pd - ad).eval(), u = (b.data().template cast<double>() - ad).eval();
+            const double l2 = u.squaredNorm();
+            if (!(l2 > 0))
+                return v.norm();
+            return (v - u * (v.dot(u) / l2)).norm();
+        }
     }
 
     //! Douglas-Peucker: keeps the end points, then recursively (with an explicit stack) the point farthest from the
@@ -49,7 +66,7 @@ namespace rtl
     //! measure the distance to the point. Ties keep the first farthest point. Points with a NaN or infinite
     //! coordinate are never kept (the end points are always kept). Distances are compared squared, so coordinates
     //! beyond sqrt(max)/4 (about 3e153 in double, 4e18 in float) may overflow.
-    template<int dimensions, typename Element>
+    template<int dimensions, typename Element, class Observer = NoTrace>
     class VectorizerDouglasPeuckerND
     {
     public:
@@ -61,7 +78,9 @@ namespace rtl
         explicit VectorizerDouglasPeuckerND(ElementType eps) { setEpsilon(eps); }
         ~VectorizerDouglasPeuckerND() = default;
 
-        void setEpsilon(ElementType eps) { eps2 = eps * eps; }
+        void setEpsilon(ElementType eps) { eps2 = eps * eps; epsilon = static_cast<double>(eps); }
+        //! Observer of the following calls (nullptr: none); it must outlive them.
+        void setObserver(Observer *observer) { observer_ = observer; }
         //! Reserves the working buffers for inputs of up to `size` points.
         void setMaxSize(size_t size) { keep.reserve(size); stack.reserve(size); keys.reserve(size); soa.reserve(dimensions * size); }
 
@@ -73,6 +92,9 @@ namespace rtl
             if (n < 2) { output.clear(); return; }
             keep.assign(n, 0);
             keep[0] = keep[n - 1] = 1;
+            if constexpr (Observer::enabled)
+                if (observer_)
+                    (*observer_)(DpStart{n, epsilon});
             if constexpr (dimensions == 2 || dimensions == 3)
             {
                 // Coordinates as separate arrays: the distance scans below then run on plain SIMD lanes. `tame`:
@@ -99,6 +121,9 @@ namespace rtl
                 if (b - a < 2)
                     continue;
                 const size_t far = (dimensions == 2 || dimensions == 3) && tame ? farthestSoa(input, a, b) : farthest(input, a, b);
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        reportRange(input, a, b, far);
                 if (far != 0)
                 {
                     keep[far] = 1;
@@ -177,6 +202,28 @@ namespace rtl
         }
 
     private:
+        //! The range event: the split decision is the untraced one (`far`); without a split, the farthest point
+        //! is searched here (in double, finite points only) to show how far it is.
+        void reportRange(const std::vector<VectorType> &pts, size_t a, size_t b, size_t far) const
+        {
+            size_t shown = far;
+            double distance = 0;
+            if (far != 0)
+                distance = vect_detail::lineDistance(pts[far], pts[a], pts[b]);
+            else
+            {
+                shown = a;
+                for (size_t i = a + 1; i < b; ++i)
+                {
+                    if (!finite(pts[i]))
+                        continue;
+                    const double d = vect_detail::lineDistance(pts[i], pts[a], pts[b]);
+                    if (d > distance) { distance = d; shown = i; }
+                }
+            }
+            (*observer_)(DpRange{a, b, shown, distance, epsilon, far != 0});
+        }
+
         //! farthest() on the coordinate arrays in `soa` (same operations per point, so the same result): blocks of
         //! 16 points are compared with the best so far without branches; only a block with a point beyond it is
         //! rescanned in order for its first maximal index.
@@ -232,6 +279,8 @@ namespace rtl
         }
 
         Element eps2{static_cast<Element>(1e-6)};
+        double epsilon{1e-3};
+        Observer *observer_{nullptr};
         std::vector<Element> soa;
         bool tame{false};
         std::vector<char> keep;
@@ -243,7 +292,7 @@ namespace rtl
     //! distinct point; the scan advances while points stay inside, and the last point inside becomes the next key
     //! (the new strip then runs from it through the first point outside). The polyline runs from the first to the
     //! last input point.
-    template<int dimensions, typename Element>
+    template<int dimensions, typename Element, class Observer = NoTrace>
     class VectorizerReumannWitkamND
     {
     public:
@@ -255,8 +304,10 @@ namespace rtl
         explicit VectorizerReumannWitkamND(ElementType eps) { setEpsilon(eps); }
         ~VectorizerReumannWitkamND() = default;
 
-        void setEpsilon(float eps) { eps2 = static_cast<Element>(eps) * static_cast<Element>(eps); }
+        void setEpsilon(float eps) { eps2 = static_cast<Element>(eps) * static_cast<Element>(eps); epsilon = static_cast<double>(eps); }
         void setMaxSize(size_t size) { keys.reserve(size); }
+        //! Observer of the following calls (nullptr: none); it must outlive them.
+        void setObserver(Observer *observer) { observer_ = observer; }
 
         void operator()(const std::vector<VectorType> &input, std::vector<LineSegmentType> &output)
         {
@@ -265,12 +316,22 @@ namespace rtl
             if (n < 2) { output.clear(); return; }
             size_t k = 0;
             keys.push_back(0);
+            if constexpr (Observer::enabled)
+                if (observer_)
+                {
+                    (*observer_)(RwStart{n, epsilon});
+                    (*observer_)(RwKeep{0});
+                }
             size_t j = 1;
             while (j < n && input[j] == input[k])
                 ++j;
             if (j < n)
             {
                 VectorType dir = (input[j] - input[k]).normalized();
+                [[maybe_unused]] size_t through = j;   // the strip's second point, for the trace only
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        (*observer_)(RwStrip{k, j, epsilon});
                 size_t i = j + 1;
                 constexpr size_t block = 8;
                 while (i < n)
@@ -286,6 +347,15 @@ namespace rtl
                     }
                     if (distance2(input[i], input[k], dir) > eps2)
                     {
+                        if constexpr (Observer::enabled)
+                            if (observer_)
+                            {
+                                const double d = vect_detail::lineDistance(input[i], input[k], input[through]);
+                                (*observer_)(RwExit{i, k, d, epsilon});
+                                (*observer_)(RwKeep{i - 1});
+                                (*observer_)(RwStrip{i - 1, i, epsilon});
+                                through = i;
+                            }
                         k = i - 1;
                         keys.push_back(k);
                         dir = (input[i] - input[k]).normalized();
@@ -294,7 +364,12 @@ namespace rtl
                 }
             }
             if (keys.back() != n - 1)
+            {
                 keys.push_back(n - 1);
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        (*observer_)(RwKeep{n - 1});
+            }
             vect_detail::polyline(input, keys, output);
         }
 
@@ -321,6 +396,8 @@ namespace rtl
 
     private:
         Element eps2{static_cast<Element>(1e-6)};
+        double epsilon{1e-3};
+        Observer *observer_{nullptr};
         std::vector<size_t> keys;
     };
 }
