@@ -1,22 +1,26 @@
 #!/usr/bin/env node
-// rtl: the rtl-wasm package's command-line tool. Reads a scan (CARMEN log, organised LiDAR binary or CSV), fits
-// total-least-squares lines, segments and/or vectorizes it with the package's WebAssembly build, and writes JSON, SVG
-// or TikZ. Exit codes: 0 ok, 1 bad input data, 2 bad usage, 3 a function this build of the package does not have.
+// rtl: the rtl-wasm package's command-line tool. Reads a scan (CARMEN log, organised LiDAR binary or CSV), segments
+// it into clusters, fits total-least-squares lines and/or vectorizes each cluster with the package's WebAssembly
+// build, and writes JSON, SVG or TikZ. Exit codes: 0 ok, 1 bad input data, 2 bad usage, 3 a function this build of
+// the package does not have.
 import { readFileSync, writeFileSync } from 'node:fs';
-import { extname } from 'node:path';
-import { parseArgs } from 'node:util';
+import { basename, extname } from 'node:path';
 import init from 'rtl-wasm';
+import { parseCommandLine, UsageError } from './options.js';
 
 const HELP = `Usage: rtl [options] <file>      (use - to read standard input)
 
-Reads ordered 2D/3D points, cuts them into clusters with the batch segmenter and/or
-turns them into line segments (or planes), fits total-least-squares lines, and
-writes JSON, SVG or TikZ (rtl-wasm package).
+Cuts ordered 2D/3D points into clusters with the batch segmenter, then fits
+total-least-squares lines to the clusters and/or turns each cluster into line
+segments (or planes), and writes JSON, SVG or TikZ (rtl-wasm package).
 
 Input
   -t, --type TYPE        carmen | bin | csv; default from the extension
-                         (.log .carmen -> carmen, .bin -> bin, .csv .txt .xyz -> csv)
+                         (.log .carmen .clf -> carmen, .bin -> bin, .csv .txt .xyz -> csv)
       --scan N           scan of a CARMEN log, 0-based (default 0)
+      --max-range M      CARMEN: ranges >= M metres are "no return" (gaps); default: the
+                         log's own no-return value (from its parameters, or the maximum
+                         range that recurs in it)
       --beams N          beams (rings) of an organised binary scan (required for bin)
       --layout L         column | row: point order of the binary scan (default column)
       --ring K           take ring K of the binary scan (default 0)
@@ -24,49 +28,65 @@ Input
   CSV: one point per line, x,y or x,y,z (comma, semicolon or blanks); '#' comments;
        an optional header line; empty, NaN or non-finite coordinates mark gaps.
 
-Line fit
-      --fit              total-least-squares line through the points (with --segment:
-                         through each cluster of at least --min-points points)
-
-Segmentation
-  -s, --segment          run the batch segmenter (the default when neither --vectorize
-                         nor --fit is given)
+Segmentation (always first, unless --no-segment)
+  -s, --segment          segment (the default; accepted for clarity)
+      --no-segment, --raw  do not segment: fit/vectorize the raw chain, i.e. all returns
+                         (non-gap points) in scan order, as one cluster
       --segmenter S      car (batch, the scan as a closed loop; default) | ia (streaming)
-      --step N           neighbours compared, >= 1 (default 3)
+      --step N           car: each point is compared with up to N-1 previous points
+                         (default 2: consecutive points are linked; 1 links nothing);
+                         ia: the window of the last N points (default 3)
       --lower M          lower bound of the distance threshold in metres (default 0.1)
       --upper M          upper bound in metres (default 0.5)
       --scaling K        ia: threshold = K * range, clamped to the bounds (default 0.05)
 
+Line fit
+      --fit              total-least-squares line through each cluster of at least
+                         --min-points points
+
 Vectorization
-  -m, --vectorize METHOD ftls | aftls | itls | dp | rw (with --segment: each cluster)
+  -m, --vectorize METHOD ftls | aftls | itls | dp | rw, applied to each cluster
       --sigma M          max RMS distance of points from a line (TLS methods, default 0.03)
       --delta M          corner tolerance of FTLS/AFTLS (default 0.3)
+      --strict           FTLS/AFTLS: RTL's strict behaviour: a cluster whose corners cannot
+                         all be met within --delta gets no segments ("failed" in the JSON).
+                         Default (split mode): the polyline breaks at such a corner, so the
+                         cluster becomes several polylines ("breaks" in the JSON).
       --epsilon M        tolerance of Douglas-Peucker / Reumann-Witkam (default 0.09)
       --simplex-shift N  AFTLS optimizer start simplex shift (default 1)
       --max-iterations N AFTLS optimizer iteration cap (default 10000)
       --primitive P      line | plane, for 3D points (default line; plane needs aftls)
-      --min-points N     clusters with fewer points are not vectorized (default 3)
-                         Clusters the vectorizer reports failure on (ok = false) are listed
-                         in the JSON as "failed" (cluster numbers; null = all points).
+      --min-points N     clusters with fewer points are not fitted/vectorized (default 3)
 
 Output
-  -f, --format FMT       json | svg | tikz (default json)
+  -f, --format FMT       json | svg | tikz (default json); SVG/TikZ titles name the scan,
+                         the segmenter, the method and their parameters
       --standalone       TikZ: a complete LaTeX document instead of a tikzpicture
   -o, --output FILE      write to FILE instead of standard output
   -h, --help             show this help
       --version          show the package version
+
+JSON indices are the package API's: each segment (or plane) has "cluster" (its number in
+segmentation.clusters, null with --no-segment) and "indices": [begin, end), half-open
+indices into its cluster's chain, the list of point indices segmentation.clusters[cluster]
+(with --no-segment: "chain"), exactly as vectorize() returns them for that chain. So chain
+positions begin..end-1 are the points the segment was fitted to (dp/rw: the span between two
+kept points). FTLS/AFTLS "breaks" and "failed" give "boundary" as a chain index too, with
+the crossing distance and delta. Fits give the cluster, "first" and "last" (point indices of
+the cluster's first and last point) and the line.
 
 Exit status: 0 on success, 1 when the input cannot be read or parsed, 2 on bad options,
 3 when this build of rtl-wasm lacks a function the options need.
 
 Examples
   rtl tests/data/intel.log --scan 3 -m ftls --sigma 0.02 -f svg -o scan3.svg
-  rtl tests/data/rellis3d-os1-4x2048.bin --beams 4 --ring 1 -s --upper 0.8
-  rtl points.csv -m dp --epsilon 0.05
-  rtl points.csv --fit
+  rtl tests/data/rellis3d-os1-4x2048.bin --beams 4 --ring 1 --upper 0.8
+  rtl points.csv --no-segment -m dp --epsilon 0.05
+  rtl points.csv --no-segment --fit
 `;
 
-class UsageError extends Error {}
+const HINT = "Try 'rtl --help' for more information.\n";
+
 class InputError extends Error {}
 class MissingFeature extends Error {}
 
@@ -78,123 +98,7 @@ function need(rtl, name, what) {
   return rtl[name].bind(rtl);
 }
 
-const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
-const FORMATS = ['json', 'svg', 'tikz'];
-const TYPES = ['carmen', 'bin', 'csv'];
-
-function parseCommandLine(argv) {
-  let parsed;
-  try {
-    parsed = parseArgs({
-      args: argv,
-      allowPositionals: true,
-      strict: true,
-      options: {
-        type: { type: 'string', short: 't' },
-        scan: { type: 'string' },
-        beams: { type: 'string' },
-        layout: { type: 'string' },
-        ring: { type: 'string' },
-        column: { type: 'string' },
-        fit: { type: 'boolean' },
-        segment: { type: 'boolean', short: 's' },
-        segmenter: { type: 'string' },
-        scaling: { type: 'string' },
-        step: { type: 'string' },
-        lower: { type: 'string' },
-        upper: { type: 'string' },
-        vectorize: { type: 'string', short: 'm' },
-        sigma: { type: 'string' },
-        delta: { type: 'string' },
-        epsilon: { type: 'string' },
-        'simplex-shift': { type: 'string' },
-        'max-iterations': { type: 'string' },
-        primitive: { type: 'string' },
-        'min-points': { type: 'string' },
-        format: { type: 'string', short: 'f' },
-        standalone: { type: 'boolean' },
-        output: { type: 'string', short: 'o' },
-        help: { type: 'boolean', short: 'h' },
-        version: { type: 'boolean' },
-      },
-    });
-  } catch (e) {
-    throw new UsageError(e.message.replace(/\. To specify a positional argument.*$/s, '.'));
-  }
-  const v = parsed.values;
-  if (v.help || v.version) return { help: v.help, version: v.version };
-  if (parsed.positionals.length !== 1) {
-    throw new UsageError(parsed.positionals.length === 0 ? 'missing input file' : `expected one input file, got ${parsed.positionals.length}: ${parsed.positionals.join(' ')}`);
-  }
-
-  const num = (name, def, { min = -Infinity, integer = false, positive = false } = {}) => {
-    if (v[name] === undefined) return def;
-    const text = v[name].trim();
-    const x = Number(text);
-    if (text === '' || !Number.isFinite(x)) throw new UsageError(`--${name} must be a number, got "${v[name]}"`);
-    if (integer && !Number.isInteger(x)) throw new UsageError(`--${name} must be an integer, got "${v[name]}"`);
-    if (positive && !(x > 0)) throw new UsageError(`--${name} must be > 0, got "${v[name]}"`);
-    if (x < min) throw new UsageError(`--${name} must be >= ${min}, got "${v[name]}"`);
-    return x;
-  };
-  const oneOf = (name, list, def) => {
-    if (v[name] === undefined) return def;
-    const x = v[name].toLowerCase();
-    if (!list.includes(x)) throw new UsageError(`--${name} must be one of ${list.join(', ')}, got "${v[name]}"`);
-    return x;
-  };
-
-  const file = parsed.positionals[0];
-  let type = oneOf('type', TYPES, undefined);
-  if (!type) {
-    const ext = extname(file).toLowerCase();
-    if (ext === '.log' || ext === '.carmen' || ext === '.clf') type = 'carmen';
-    else if (ext === '.bin') type = 'bin';
-    else if (ext === '.csv' || ext === '.txt' || ext === '.xyz') type = 'csv';
-    else throw new UsageError(`cannot tell the input type of "${file}" from its extension; pass --type carmen|bin|csv`);
-  }
-  const opts = {
-    file,
-    type,
-    scan: num('scan', 0, { min: 0, integer: true }),
-    beams: num('beams', undefined, { integer: true, positive: true }),
-    layout: oneOf('layout', ['column', 'row'], 'column'),
-    ring: num('ring', undefined, { min: 0, integer: true }),
-    column: num('column', undefined, { min: 0, integer: true }),
-    fit: Boolean(v.fit),
-    segment: Boolean(v.segment),
-    segmenter: oneOf('segmenter', ['car', 'ia'], 'car'),
-    scaling: num('scaling', 0.05, { min: 0 }),
-    step: num('step', 3, { min: 1, integer: true }),
-    lower: num('lower', 0.1, { min: 0 }),
-    upper: num('upper', 0.5, { min: 0 }),
-    method: oneOf('vectorize', METHODS, undefined),
-    sigma: num('sigma', 0.03, { positive: true }),
-    delta: num('delta', 0.3, { positive: true }),
-    epsilon: num('epsilon', 0.09, { positive: true }),
-    simplexShift: num('simplex-shift', 1, { min: 1, integer: true }),
-    maxIterations: num('max-iterations', 10000, { min: 1, integer: true }),
-    primitive: oneOf('primitive', ['line', 'plane'], 'line'),
-    minPoints: num('min-points', 3, { min: 2, integer: true }),
-    format: oneOf('format', FORMATS, 'json'),
-    standalone: Boolean(v.standalone),
-    output: v.output,
-  };
-  if (opts.lower > opts.upper) throw new UsageError(`--lower (${opts.lower}) must not exceed --upper (${opts.upper})`);
-  if (!opts.method && !opts.fit) opts.segment = true;
-  if (opts.type !== 'bin') {
-    for (const k of ['beams', 'ring', 'column']) if (opts[k] !== undefined) throw new UsageError(`--${k} applies to binary scans only`);
-    if (v.layout !== undefined) throw new UsageError('--layout applies to binary scans only');
-  } else {
-    if (opts.beams === undefined) throw new UsageError('a binary scan needs --beams N (the number of rings)');
-    if (opts.ring !== undefined && opts.column !== undefined) throw new UsageError('pass either --ring or --column, not both');
-  }
-  if (opts.type !== 'carmen' && v.scan !== undefined) throw new UsageError('--scan applies to CARMEN logs only');
-  if (v.scaling !== undefined && opts.segmenter !== 'ia') throw new UsageError('--scaling applies to --segmenter ia only');
-  if (opts.primitive === 'plane' && opts.method !== 'aftls') throw new UsageError('--primitive plane needs --vectorize aftls');
-  if (opts.standalone && opts.format !== 'tikz') throw new UsageError('--standalone applies to --format tikz only');
-  return opts;
-}
+const inputName = (file) => (file === '-' ? 'stdin' : file);
 
 function readInput(file, binary) {
   try {
@@ -230,8 +134,9 @@ function parseCsv(text, name = 'input') {
   rows.forEach((r, i) => out.set(r, i * dim));
   return { points: out, dim };
 }
+
 async function loadPoints(rtl, opts) {
-  const name = opts.file === '-' ? 'stdin' : opts.file;
+  const name = inputName(opts.file);
   if (opts.type === 'csv') {
     const { points, dim } = parseCsv(readInput(opts.file, false), name);
     return { points, dim, source: { type: 'csv', file: opts.file } };
@@ -240,7 +145,7 @@ async function loadPoints(rtl, opts) {
     const text = readInput(opts.file, false);
     let scans;
     try {
-      scans = need(rtl, 'readCarmenLog', 'a CARMEN log')(text);
+      scans = need(rtl, 'readCarmenLog', 'a CARMEN log')(text, opts.maxRange === undefined ? undefined : { maxRange: opts.maxRange });
     } catch (e) {
       if (e instanceof MissingFeature) throw e;
       throw new InputError(`${name}: ${e.message}`);
@@ -250,7 +155,10 @@ async function loadPoints(rtl, opts) {
     const s = scans[opts.scan];
     return {
       points: Float64Array.from(s.points), dim: 2,
-      source: { type: 'carmen', file: opts.file, scan: opts.scan, scans: scans.length, line: s.line, pose: { x: s.x, y: s.y, theta: s.theta } },
+      source: {
+        type: 'carmen', file: opts.file, scan: opts.scan, scans: scans.length, line: s.line,
+        ...(s.maxRange !== undefined ? { maxRange: s.maxRange } : {}), pose: { x: s.x, y: s.y, theta: s.theta },
+      },
     };
   }
   const buf = readInput(opts.file, true);
@@ -324,15 +232,43 @@ function validIndices(points, dim) {
 
 const round = (x) => (Number.isFinite(x) ? Number(x.toPrecision(12)) : null);
 const plain = (a) => Array.from(a, round);
+const usesSplit = (opts, dim) => ['ftls', 'aftls'].includes(opts.method) && dim === 2 && opts.primitive === 'line';
+
+// Segments of one vectorized chain in the JSON shape; indices stay the API's half-open chain indices.
+function segmentsOf(v, cluster, dim) {
+  const offsets = v.polylineOffsets ?? [0, v.count];
+  const polylineOf = (k) => { let p = 0; while (p + 2 < offsets.length && k >= offsets[p + 1]) p++; return p; };
+  const out = [];
+  if (v.primitive === 'plane') {
+    v.polygons.forEach((poly, k) => out.push({
+      cluster, indices: [v.indices[2 * k], v.indices[2 * k + 1]], polygon: plain(poly),
+      params: plain(v.params.subarray(k * v.stride, (k + 1) * v.stride)), rms: round(v.rms[k]),
+    }));
+    return out;
+  }
+  const width = 2 * dim;
+  for (let k = 0; k < v.count; k++) {
+    out.push({
+      cluster, polyline: polylineOf(k), indices: [v.indices[2 * k], v.indices[2 * k + 1]],
+      coordinates: plain(v.segments.subarray(k * width, (k + 1) * width)),
+      params: plain(v.params.subarray(k * v.stride, (k + 1) * v.stride)),
+      rms: round(v.rms[k]),
+    });
+  }
+  return out;
+}
+
+const crossing = (b) => ({ boundary: b.boundary, crossingDistance: round(b.crossingDistance), delta: round(b.delta) });
 
 function run(rtl, opts, input) {
   const { points, dim } = input;
-  const result = { source: input.source, dim, points: points.length / dim, returns: validIndices(points, dim).length };
-  let groups = [{ cluster: null, idx: validIndices(points, dim) }];
+  const returns = validIndices(points, dim);
+  const result = { source: input.source, dim, points: points.length / dim, returns: returns.length };
+  let groups;
   if (opts.segment) {
     const seg = opts.segmenter === 'ia'
       ? streamSegment(rtl, points, dim, opts)
-      : need(rtl, 'segment', '--segment')(points, { dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper });
+      : need(rtl, 'segment', 'segmentation')(points, { dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper });
     result.segmentation = {
       segmenter: opts.segmenter, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper,
       ...(opts.segmenter === 'ia' ? { scaling: opts.scaling } : {}),
@@ -341,12 +277,14 @@ function run(rtl, opts, input) {
     };
     groups = result.segmentation.clusters.map((idx, cluster) => ({ cluster, idx }));
     result.labels = seg.labels;
+  } else {
+    result.chain = returns;
+    groups = [{ cluster: null, idx: returns }];
   }
   const big = groups.filter((g) => g.idx.length >= opts.minPoints);
   if (opts.fit) {
     const fitLine = need(rtl, 'fitLine', '--fit');
-    const name = input.source.file === '-' ? 'stdin' : input.source.file;
-    if (big.length === 0) throw new InputError(`${name}: no ${opts.segment ? 'cluster' : 'set'} of at least ${opts.minPoints} points to fit a line to`);
+    if (big.length === 0) throw new InputError(`${inputName(input.source.file)}: no ${opts.segment ? 'cluster' : 'chain'} of at least ${opts.minPoints} points to fit a line to`);
     result.fits = big.map((g) => {
       const f = fitLine(gather(points, dim, g.idx), { dim });
       return {
@@ -358,49 +296,79 @@ function run(rtl, opts, input) {
   }
   if (opts.method) {
     const vectorize = need(rtl, 'vectorize', '--vectorize');
+    const split = usesSplit(opts, dim);
     const params = {
       dim, method: opts.method, sigma: opts.sigma, delta: opts.delta, epsilon: opts.epsilon,
       simplexShift: opts.simplexShift, maxIterations: opts.maxIterations, primitive: opts.primitive,
+      ...(split ? { split: !opts.strict } : {}),
     };
-    const out = [];
-    const failed = [];
+    const out = [], failed = [], breaks = [];
     for (const g of big) {
-      const v = vectorize(gather(points, dim, g.idx), params);
-      // The C++ vectorizer can report failure (ok = false, no segments); say so instead of dropping it silently.
-      if (!v.ok) { failed.push(g.cluster); continue; }
-      if (v.primitive === 'plane') {
-        v.polygons.forEach((poly, k) => out.push({
-          cluster: g.cluster, polygon: plain(poly),
-          indices: [g.idx[v.indices[2 * k]], g.idx[Math.max(v.indices[2 * k], v.indices[2 * k + 1] - 1)]],
-          params: plain(v.params.subarray(k * v.stride, (k + 1) * v.stride)), rms: round(v.rms[k]),
-        }));
+      let v;
+      try {
+        v = vectorize(gather(points, dim, g.idx), params);
+      } catch (e) {
+        if (/unknown option "split"/.test(e.message)) throw new MissingFeature(`--vectorize ${opts.method} needs vectorize()'s split option, which this build of rtl-wasm (${rtl.version}) does not have`);
+        throw e;
+      }
+      // Strict FTLS/AFTLS (and the 3D vectorizers) can report failure (ok = false, no segments): say where and why.
+      if (!v.ok) {
+        failed.push({ cluster: g.cluster, ...(v.failure ? { ...crossing(v.failure), message: v.failure.message } : {}) });
         continue;
       }
-      const width = 2 * dim;
-      for (let k = 0; k < v.count; k++) {
-        const from = v.indices[2 * k], to = v.indices[2 * k + 1];
-        out.push({
-          cluster: g.cluster,
-          coordinates: plain(v.segments.subarray(k * width, (k + 1) * width)),
-          indices: [g.idx[from], g.idx[Math.max(from, to - 1)]],
-          params: plain(v.params.subarray(k * v.stride, (k + 1) * v.stride)),
-          rms: round(v.rms[k]),
-        });
-      }
+      for (const b of v.breaks ?? []) breaks.push({ cluster: g.cluster, ...crossing(b) });
+      out.push(...segmentsOf(v, g.cluster, dim));
     }
     result.vectorization = {
       method: opts.method, primitive: opts.primitive,
       ...(['dp', 'rw'].includes(opts.method) ? { epsilon: opts.epsilon } : { sigma: opts.sigma }),
       ...(['ftls', 'aftls'].includes(opts.method) ? { delta: opts.delta } : {}),
+      ...(split ? { mode: opts.strict ? 'strict' : 'split' } : {}),
       [opts.primitive === 'plane' ? 'planes' : 'segments']: out,
       failed,
+      breaks,
     };
     if (failed.length) {
-      const what = failed.length === 1 && failed[0] === null ? 'the points' : `${failed.length} cluster(s)`;
-      process.stderr.write(`rtl: warning: ${opts.method} reported failure on ${what}; no segments for them ("failed" in the JSON)\n`);
+      const what = failed.length === 1 && failed[0].cluster === null ? 'the chain' : `${failed.length} cluster(s)`;
+      process.stderr.write(`rtl: warning: ${opts.method} found no segments for ${what} ("failed" in the JSON)\n`);
     }
   }
   return result;
+}
+
+const metres = (x) => `${round(x)} m`;
+
+// What the figure shows, for its title: the scan, the segmentation, the method and their parameters, the extent.
+function titleOf(opts, input, result) {
+  const s = input.source;
+  const parts = [];
+  let what = basename(inputName(s.file));
+  if (s.type === 'carmen') what += ` scan ${s.scan}${opts.maxRange !== undefined ? `, max range ${metres(opts.maxRange)}` : ''}`;
+  if (s.type === 'bin') what += s.column !== undefined ? ` column ${s.column}` : ` ring ${s.ring}`;
+  parts.push(what);
+  if (result.segmentation) {
+    const g = result.segmentation;
+    parts.push(`${g.segmenter.toUpperCase()} step ${g.step}, bounds ${g.lowerBound}-${metres(g.upperBound)}${g.segmenter === 'ia' ? `, scaling ${g.scaling}` : ''}`);
+  } else {
+    parts.push('not segmented');
+  }
+  if (result.vectorization) {
+    const v = result.vectorization;
+    const p = v.epsilon !== undefined ? [`epsilon ${metres(v.epsilon)}`] : [`sigma ${metres(v.sigma)}`];
+    if (v.delta !== undefined) p.push(`delta ${metres(v.delta)}`);
+    if (v.mode) p.push(v.mode);
+    parts.push(`${v.method.toUpperCase()} ${p.join(', ')}`);
+  }
+  if (result.fits) parts.push(`TLS line fit, min ${opts.minPoints} points`);
+  const xs = [], ys = [];
+  for (let i = 0; i < input.points.length; i += 2) {
+    if (Number.isFinite(input.points[i]) && Number.isFinite(input.points[i + 1])) { xs.push(input.points[i]); ys.push(input.points[i + 1]); }
+  }
+  if (xs.length) {
+    const span = (a) => Math.max(...a) - Math.min(...a);
+    parts.push(`${span(xs).toFixed(1)} x ${span(ys).toFixed(1)} m`);
+  }
+  return parts.join('; ');
 }
 
 function render(rtl, opts, input, result) {
@@ -423,7 +391,7 @@ function render(rtl, opts, input, result) {
     points: input.points,
     ...(result.labels ? { labels: result.labels } : {}),
     segments: new Float64Array(segments),
-    title: input.source.file === '-' ? 'stdin' : input.source.file,
+    title: titleOf(opts, input, result),
   };
   return opts.format === 'svg'
     ? need(rtl, 'toSvg', '--format svg')(drawing)
@@ -436,7 +404,7 @@ async function main(argv) {
     opts = parseCommandLine(argv);
   } catch (e) {
     if (e instanceof UsageError) {
-      process.stderr.write(`rtl: ${e.message}\nTry 'rtl --help' for more information.\n`);
+      process.stderr.write(`rtl: ${e.message}\n${HINT}`);
       return 2;
     }
     throw e;
@@ -463,8 +431,11 @@ async function main(argv) {
     }
     return 0;
   } catch (e) {
+    if (e instanceof UsageError) {
+      process.stderr.write(`rtl: ${e.message}\n${HINT}`);
+      return 2;
+    }
     process.stderr.write(`rtl: ${e.message}\n`);
-    if (e instanceof UsageError) return 2;
     if (e instanceof MissingFeature) return 3;
     // Data errors: our own, or a TypeError/RangeError from the package naming what was wrong.
     return 1;

@@ -6,7 +6,7 @@ import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { isReturn, loadLog, runCli as rtl, sameLine, scanPoints, streamClusters, tlsFit, xyOf } from './helpers.js';
+import { isReturn, loadLog, returnsOf, runCli as rtl, sameLine, scanPoints, streamClusters, tlsFit, xyOf } from './helpers.js';
 
 describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
   let tmp, pkg;
@@ -21,7 +21,7 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     const scan = scans[2];
     assert.equal(j.points, 180);
     const { labels, clusters, ...params } = j.segmentation;
-    assert.deepEqual(params, { segmenter: 'car', step: 3, lowerBound: 0.1, upperBound: 0.5 });
+    assert.deepEqual(params, { segmenter: 'car', step: 2, lowerBound: 0.1, upperBound: 0.5 });
     assert.equal(labels.length, 180);
     assert.equal(clusters.flat().length, j.returns);
     labels.forEach((l, i) => assert.equal(l >= 0, isReturn(scan.ranges[i]), `beam ${i}`));
@@ -31,7 +31,29 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     assert.equal(j.fits, undefined);
     // The same labels as segment() called directly on the scan's points.
     const points = scanPoints(scan);
-    assert.deepEqual(labels, Array.from(pkg.segment(points).labels));
+    assert.deepEqual(labels, Array.from(pkg.segment(points, { step: 2, lowerBound: 0.1, upperBound: 0.5 }).labels));
+  });
+
+  test('the default step (2) links consecutive points; step 1 links nothing (CAR compares up to step-1 previous points)', () => {
+    for (const [log, k] of [['intel', 7], ['csail', 4]]) {
+      const scan = loadLog(log)[k];
+      const points = scanPoints(scan);
+      const { labels, clusters } = JSON.parse(rtl([`tests/data/${log}.log`, '--scan', String(k)]).out).segmentation;
+      let linked = 0;
+      for (let i = 0; i + 1 < scan.n; i++) {
+        if (!isReturn(scan.ranges[i]) || !isReturn(scan.ranges[i + 1])) continue;
+        // Closer than the lower bound of the threshold: always the same cluster.
+        if (Math.hypot(points[2 * i + 2] - points[2 * i], points[2 * i + 3] - points[2 * i + 1]) < 0.1) {
+          assert.equal(labels[i + 1], labels[i], `${log} scan ${k}: beams ${i} and ${i + 1}`);
+          linked++;
+        }
+      }
+      assert.ok(linked > 50, `${log}: ${linked} close consecutive pairs`);
+      assert.ok(clusters.length < linked, `${clusters.length} clusters`);
+      const one = JSON.parse(rtl([`tests/data/${log}.log`, '--scan', String(k), '--step', '1']).out).segmentation;
+      assert.equal(one.clusters.length, returnsOf(scan).length, 'step 1: every return is its own cluster');
+      assert.ok(one.clusters.every((c) => c.length === 1));
+    }
   });
 
   test('--segmenter ia: the clusters of StreamSegmenter fed with the scan, as point index sets', () => {
@@ -54,17 +76,18 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     assert.match(bad.err, /--scaling applies to --segmenter ia only/);
   });
 
-  test('tighter bounds and a step of 1 cut more clusters', () => {
+  test('tighter bounds cut more clusters, a larger step fewer', () => {
     const base = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2']).out).segmentation.clusters.length;
     const strict = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2', '--lower', '0.02', '--upper', '0.05']).out);
     assert.deepEqual([strict.segmentation.lowerBound, strict.segmentation.upperBound], [0.02, 0.05]);
     assert.ok(strict.segmentation.clusters.length > base, `${strict.segmentation.clusters.length} vs ${base}`);
-    const step1 = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2', '--step', '1']).out);
-    assert.ok(step1.segmentation.clusters.length >= base);
+    const step4 = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2', '--step', '4']).out);
+    assert.ok(step4.segmentation.clusters.length < base, `${step4.segmentation.clusters.length} vs ${base}`);
   });
 
-  test('--segment --fit fits each cluster of at least --min-points points', () => {
-    const r = rtl(['tests/data/intel.log', '--scan', '5', '-s', '--fit', '--min-points', '10']);
+  test('--fit segments first and fits each cluster of at least --min-points points (-s changes nothing)', () => {
+    const r = rtl(['tests/data/intel.log', '--scan', '5', '--fit', '--min-points', '10']);
+    assert.equal(rtl(['tests/data/intel.log', '--scan', '5', '-s', '--fit', '--min-points', '10']).out, r.out);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
     const big = j.segmentation.clusters.map((c, k) => [c, k]).filter(([c]) => c.length >= 10);
@@ -94,5 +117,9 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     assert.equal(r.code, 0, r.err);
     const n = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2']).out).segmentation.clusters.length;
     assert.equal([...r.out.matchAll(/<g class="cluster" data-cluster="\d+"/g)].length, n);
+    assert.match(r.out, /<title>intel\.log scan 2; CAR step 2, bounds 0\.1-0\.5 m; \d+\.\d x \d+\.\d m<\/title>/);
+    const ia = rtl(['tests/data/intel.log', '--scan', '2', '--segmenter', 'ia', '--step', '4', '--upper', '0.8', '-f', 'tikz']);
+    assert.equal(ia.code, 0, ia.err);
+    assert.match(ia.out, /intel\.log scan 2; IA step 4, bounds 0\.1-0\.8 m, scaling 0\.05;/);
   });
 });

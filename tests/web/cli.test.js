@@ -21,9 +21,14 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     const r = rtl(['--help']);
     assert.equal(r.code, 0, r.err);
     assert.match(r.out, /^Usage: rtl \[options\] <file>/);
-    for (const opt of ['--fit', '--segment', '--vectorize', '--sigma', '--epsilon', '--step', '--beams', '--format', '--output']) {
+    for (const opt of ['--fit', '--segment', '--no-segment', '--raw', '--vectorize', '--sigma', '--epsilon', '--step', '--beams',
+      '--format', '--output', '--max-range', '--strict']) {
       assert.ok(r.out.includes(opt), opt);
     }
+    // The documented conventions: CAR's window, the default step, the JSON's half-open chain indices, split mode.
+    assert.match(r.out, /up to N-1 previous points\s+\(default 2: consecutive points are linked/);
+    assert.match(r.out, /"indices": \[begin, end\),\s+half-open\s+indices into its cluster's chain/);
+    assert.match(r.out, /Default \(split mode\): the polyline breaks/);
   });
 
   test('--version prints the package version', () => {
@@ -33,8 +38,8 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     assert.equal(r.out.trim(), pkg.version);
   });
 
-  test('--fit on a CARMEN scan: the TLS line of its returns, as an independent fit finds it', () => {
-    const r = rtl(['tests/data/intel.log', '--scan', '4', '--fit']);
+  test('--no-segment --fit on a CARMEN scan: the TLS line of its returns (the raw chain), as an independent fit finds it', () => {
+    const r = rtl(['tests/data/intel.log', '--scan', '4', '--no-segment', '--fit']);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
     const scans = loadLog('intel');
@@ -44,6 +49,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     assert.equal(j.points, 180);
     const beams = returnsOf(scan);
     assert.equal(j.returns, beams.length);
+    assert.deepEqual(j.chain, beams, 'the raw chain: the returns in scan order');
     assert.equal(j.fits.length, 1);
     const f = j.fits[0];
     const ref = tlsFit(xyOf(scan, beams));
@@ -65,7 +71,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     rows.push('4,nan', '');
     const csv = join(tmp, 'wall.csv');
     writeFileSync(csv, rows.join('\n'));
-    const r = rtl([csv, '--fit', '-o', join(tmp, 'wall.json')]);
+    const r = rtl([csv, '--raw', '--fit', '-o', join(tmp, 'wall.json')]);
     assert.equal(r.code, 0, r.err);
     assert.equal(r.out, '');
     const j = JSON.parse(readFileSync(join(tmp, 'wall.json'), 'utf8'));
@@ -78,7 +84,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
 
   test('--fit on one ring of the organised binary scan (3D): direction and centroid of its returns', () => {
     const buf = readFileSync(join(DATA, 'rellis3d-os1-4x2048.bin'));
-    const r = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '1', '--fit']);
+    const r = rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--ring', '1', '--no-segment', '--fit']);
     assert.equal(r.code, 0, r.err);
     const j = JSON.parse(r.out);
     assert.equal(j.dim, 3);
@@ -102,33 +108,34 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
       assert.ok(best >= spread(u) * (1 - 1e-9), `spread along ${u}`);
     }
     // A column is a vertical profile of 4 points.
-    const col = JSON.parse(rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--column', '100', '--fit', '--min-points', '2']).out);
+    const col = JSON.parse(rtl(['tests/data/rellis3d-os1-4x2048.bin', '--beams', '4', '--column', '100', '--no-segment', '--fit', '--min-points', '2']).out);
     assert.equal(col.points, 4);
     assert.equal(col.source.column, 100);
   });
 
   test('--fit as SVG (stdout) and as TikZ (a tikzpicture, or a standalone document with -o)', () => {
-    let r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'svg']);
+    let r = rtl(['tests/data/csail.log', '--scan', '3', '--no-segment', '--fit', '-f', 'svg']);
     assert.equal(r.code, 0, r.err);
     const scan = loadLog('csail')[3];
     assert.match(r.out, /^<svg[\s>]/);
     assert.match(r.out, /<\/svg>\s*$/);
-    assert.match(r.out, /<title>tests\/data\/csail\.log<\/title>/);
+    // The title names the scan and what was done, not the file's path.
+    assert.match(r.out, /<title>csail\.log scan 3; not segmented; TLS line fit, min 3 points; \d+\.\d x \d+\.\d m<\/title>/);
     assert.equal(r.out.match(/<circle /g).length, returnsOf(scan).length, 'one dot per return');
     assert.equal(r.out.match(/<line /g).length, 1, 'the fitted line');
-    r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'tikz']);
+    r = rtl(['tests/data/csail.log', '--scan', '3', '--no-segment', '--fit', '-f', 'tikz']);
     assert.equal(r.code, 0, r.err);
     assert.doesNotMatch(r.out, /\\documentclass/);
     assert.match(r.out, /\\begin\{tikzpicture\}[\s\S]*\\end\{tikzpicture\}\s*$/);
     const out = join(tmp, 'fit.tex');
-    r = rtl(['tests/data/csail.log', '--scan', '3', '--fit', '-f', 'tikz', '--standalone', '-o', out]);
+    r = rtl(['tests/data/csail.log', '--scan', '3', '--no-segment', '--fit', '-f', 'tikz', '--standalone', '-o', out]);
     assert.equal(r.code, 0, r.err);
     assert.equal(r.out, '');
     assert.match(readFileSync(out, 'utf8'), /^\\documentclass[\s\S]*\\begin\{tikzpicture\}[\s\S]*\\end\{document\}\s*$/);
   });
 
   test('reads points from standard input with --type', () => {
-    const r = rtl(['-', '--type', 'csv', '--fit'], '0 0\n1 1\n2 2\n3 3\n');
+    const r = rtl(['-', '--type', 'csv', '--no-segment', '--fit'], '0 0\n1 1\n2 2\n3 3\n');
     assert.equal(r.code, 0, r.err);
     const f = JSON.parse(r.out).fits[0];
     assert.ok(sameLine(f, { normal: [Math.SQRT1_2, -Math.SQRT1_2], offset: 0 }, 1e-12), JSON.stringify(f));
@@ -138,7 +145,25 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
   // Each bad invocation: exit code, and a message naming the problem; nothing on stdout.
   const bad = [
     [[], 2, /missing input file/],
-    [['tests/data/intel.log', '--bogus'], 2, /bogus/],
+    [['tests/data/intel.log', '--bogus'], 2, /^rtl: unknown option --bogus\n/],
+    [['tests/data/intel.log', '--scna', '3'], 2, /^rtl: unknown option --scna \(did you mean --scan\?\)/],
+    [['tests/data/intel.log', '-x'], 2, /^rtl: unknown option -x\n/],
+    [['tests/data/intel.log', '--scan', '-1'], 2, /^rtl: --scan must be >= 0, got "-1"/],
+    [['tests/data/intel.log', '--scan'], 2, /^rtl: --scan needs a value/],
+    [['tests/data/intel.log', '--scan', '--fit'], 2, /^rtl: --scan needs a value/],
+    [['tests/data/intel.log', '-m'], 2, /^rtl: -m \(--vectorize\) needs a value/],
+    [['tests/data/intel.log', '--fit=yes'], 2, /^rtl: --fit takes no value/],
+    [['tests/data/intel.log', '--scan', '1', '--scan', '2'], 2, /^rtl: --scan is given more than once/],
+    [['tests/data/intel.log', '--max-range', 'far'], 2, /^rtl: --max-range must be a number, got "far"/],
+    [['tests/data/intel.log', '--max-range', '0'], 2, /^rtl: --max-range must be > 0/],
+    [['tests/data/intel.log', '--no-segment'], 2, /^rtl: --no-segment needs --fit or --vectorize/],
+    [['tests/data/intel.log', '--raw', '--step', '3', '--fit'], 2, /^rtl: --step applies to segmentation, not with --raw/],
+    [['tests/data/intel.log', '-s', '--no-segment', '--fit'], 2, /^rtl: --segment and --no-segment contradict each other/],
+    [['tests/data/intel.log', '--strict'], 2, /^rtl: --strict applies to --vectorize ftls or aftls only/],
+    [['tests/data/intel.log', '--strict', '-m', 'dp'], 2, /^rtl: --strict applies to --vectorize ftls or aftls only/],
+    [['pts.csv', '--max-range', '5', '--fit'], 2, /^rtl: --max-range applies to CARMEN logs only/],
+    [['tests/data/intel.log', '--step', 'NaN'], 2, /^rtl: --step must be a number, got "NaN"/],
+    [['tests/data/intel.log', '--sigma', '1e999', '-m', 'itls'], 2, /^rtl: --sigma must be a number, got "1e999"/],
     [['a.csv', 'b.csv'], 2, /expected one input file, got 2/],
     [['tests/data/intel.log', '-m', 'magic'], 2, /--vectorize must be one of ftls, aftls, itls, dp, rw/],
     [['tests/data/intel.log', '--sigma=-1', '-m', 'ftls'], 2, /--sigma must be > 0, got "-1"/],
@@ -163,6 +188,8 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
       const r = rtl(args);
       assert.equal(r.code, code, r.err);
       assert.match(r.err, message);
+      assert.match(r.err, /^rtl: /, 'the package\'s own message');
+      if (code === 2) assert.match(r.err, /\nTry 'rtl --help' for more information\.\n$/);
       assert.equal(r.out, '');
       assert.ok(!/\n\s+at .*:\d+:\d+/.test(r.err), `no stack trace: ${r.err}`);
     });

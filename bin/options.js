@@ -1,0 +1,191 @@
+// The rtl command's options: its own small argv parser (so that every bad option, e.g. `--scan -1`, an unknown
+// option or a missing value, gets a message of this package rather than Node's), then checks of each value and of
+// the combinations. parseCommandLine throws UsageError (exit code 2); the message is printed after "rtl: ".
+import { extname } from 'node:path';
+
+export class UsageError extends Error {}
+
+// name -> { short, value: true when the option takes a value }
+const SPEC = {
+  type: { short: 't', value: true },
+  scan: { value: true },
+  'max-range': { value: true },
+  beams: { value: true },
+  layout: { value: true },
+  ring: { value: true },
+  column: { value: true },
+  fit: {},
+  segment: { short: 's' },
+  'no-segment': {},
+  raw: {},
+  segmenter: { value: true },
+  step: { value: true },
+  lower: { value: true },
+  upper: { value: true },
+  scaling: { value: true },
+  vectorize: { short: 'm', value: true },
+  sigma: { value: true },
+  delta: { value: true },
+  strict: {},
+  epsilon: { value: true },
+  'simplex-shift': { value: true },
+  'max-iterations': { value: true },
+  primitive: { value: true },
+  'min-points': { value: true },
+  format: { short: 'f', value: true },
+  standalone: {},
+  output: { short: 'o', value: true },
+  help: { short: 'h' },
+  version: {},
+};
+const SHORT = Object.fromEntries(Object.entries(SPEC).filter(([, s]) => s.short).map(([n, s]) => [s.short, n]));
+
+export const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
+const FORMATS = ['json', 'svg', 'tikz'];
+const TYPES = ['carmen', 'bin', 'csv'];
+
+function editDistance(a, b) {
+  let prev = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const row = [i];
+    for (let j = 1; j <= b.length; j++) row[j] = Math.min(prev[j] + 1, row[j - 1] + 1, prev[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1));
+    prev = row;
+  }
+  return prev[b.length];
+}
+
+function unknownOption(name) {
+  const close = Object.keys(SPEC).filter((n) => n.startsWith(name) || editDistance(n, name) <= 2);
+  return new UsageError(`unknown option --${name}${close.length ? ` (did you mean ${close.map((n) => `--${n}`).join(' or ')}?)` : ''}`);
+}
+
+// A value may start with '-' when it is a number (`--scan -1` is then rejected by the range check, with its value),
+// never when it looks like another option (`--scan --fit` means the value is missing).
+const looksLikeOption = (arg) => arg.startsWith('-') && arg !== '-' && !/^-\.?\d/.test(arg);
+
+// argv -> { values: {name: string | true}, positionals }
+export function splitArgv(argv) {
+  const values = {}, positionals = [];
+  const set = (name, value, shown) => {
+    if (name in values) throw new UsageError(`${shown} is given more than once`);
+    values[name] = value;
+  };
+  for (let i = 0; i < argv.length; i++) {
+    const arg = argv[i];
+    if (arg === '--') { positionals.push(...argv.slice(i + 1)); break; }
+    if (arg === '-' || !arg.startsWith('-')) { positionals.push(arg); continue; }
+    const takeValue = (name, shown, inline) => {
+      if (inline !== undefined) return inline;
+      if (i + 1 >= argv.length || looksLikeOption(argv[i + 1])) throw new UsageError(`${shown} needs a value`);
+      return argv[++i];
+    };
+    if (arg.startsWith('--')) {
+      const eq = arg.indexOf('=');
+      const name = eq < 0 ? arg.slice(2) : arg.slice(2, eq);
+      const inline = eq < 0 ? undefined : arg.slice(eq + 1);
+      const spec = SPEC[name];
+      if (!spec) throw unknownOption(name);
+      if (!spec.value && inline !== undefined) throw new UsageError(`--${name} takes no value, got "--${name}=${inline}"`);
+      set(name, spec.value ? takeValue(name, `--${name}`, inline) : true, `--${name}`);
+      continue;
+    }
+    // Short options: booleans may be grouped (-sh); a value follows its letter (-mftls) or is the next argument.
+    for (let k = 1; k < arg.length; k++) {
+      const name = SHORT[arg[k]];
+      if (!name) throw new UsageError(`unknown option -${arg[k]}${arg.length > 2 ? ` (in "${arg}")` : ''}`);
+      if (!SPEC[name].value) { set(name, true, `-${arg[k]}`); continue; }
+      set(name, takeValue(name, `-${arg[k]} (--${name})`, k + 1 < arg.length ? arg.slice(k + 1) : undefined), `-${arg[k]}`);
+      break;
+    }
+  }
+  return { values, positionals };
+}
+
+export function parseCommandLine(argv) {
+  const { values: v, positionals } = splitArgv(argv);
+  if (v.help || v.version) return { help: v.help, version: v.version };
+  if (positionals.length !== 1) {
+    throw new UsageError(positionals.length === 0 ? 'missing input file' : `expected one input file, got ${positionals.length}: ${positionals.join(' ')}`);
+  }
+
+  const num = (name, def, { min = -Infinity, integer = false, positive = false } = {}) => {
+    if (v[name] === undefined) return def;
+    const text = v[name].trim();
+    const x = Number(text);
+    if (text === '' || !Number.isFinite(x)) throw new UsageError(`--${name} must be a number, got "${v[name]}"`);
+    if (integer && !Number.isInteger(x)) throw new UsageError(`--${name} must be an integer, got "${v[name]}"`);
+    if (positive && !(x > 0)) throw new UsageError(`--${name} must be > 0, got "${v[name]}"`);
+    if (x < min) throw new UsageError(`--${name} must be >= ${min}, got "${v[name]}"`);
+    return x;
+  };
+  const oneOf = (name, list, def) => {
+    if (v[name] === undefined) return def;
+    const x = v[name].toLowerCase();
+    if (!list.includes(x)) throw new UsageError(`--${name} must be one of ${list.join(', ')}, got "${v[name]}"`);
+    return x;
+  };
+
+  const file = positionals[0];
+  let type = oneOf('type', TYPES, undefined);
+  if (!type) {
+    const ext = extname(file).toLowerCase();
+    if (ext === '.log' || ext === '.carmen' || ext === '.clf') type = 'carmen';
+    else if (ext === '.bin') type = 'bin';
+    else if (ext === '.csv' || ext === '.txt' || ext === '.xyz') type = 'csv';
+    else throw new UsageError(`cannot tell the input type of "${file}" from its extension; pass --type carmen|bin|csv`);
+  }
+  const noSegment = Boolean(v['no-segment'] || v.raw);
+  if (noSegment && v.segment) throw new UsageError(`--segment and ${v.raw ? '--raw' : '--no-segment'} contradict each other`);
+  const segmenter = oneOf('segmenter', ['car', 'ia'], 'car');
+  const opts = {
+    file,
+    type,
+    scan: num('scan', 0, { min: 0, integer: true }),
+    maxRange: num('max-range', undefined, { positive: true }),
+    beams: num('beams', undefined, { integer: true, positive: true }),
+    layout: oneOf('layout', ['column', 'row'], 'column'),
+    ring: num('ring', undefined, { min: 0, integer: true }),
+    column: num('column', undefined, { min: 0, integer: true }),
+    fit: Boolean(v.fit),
+    segment: !noSegment,
+    segmenter,
+    scaling: num('scaling', 0.05, { min: 0 }),
+    // CAR step s compares up to s-1 previous points, so 2 links consecutive points; IA's window of 3 (the package's).
+    step: num('step', segmenter === 'car' ? 2 : 3, { min: 1, integer: true }),
+    lower: num('lower', 0.1, { min: 0 }),
+    upper: num('upper', 0.5, { min: 0 }),
+    method: oneOf('vectorize', METHODS, undefined),
+    sigma: num('sigma', 0.03, { positive: true }),
+    delta: num('delta', 0.3, { positive: true }),
+    strict: Boolean(v.strict),
+    epsilon: num('epsilon', 0.09, { positive: true }),
+    simplexShift: num('simplex-shift', 1, { min: 1, integer: true }),
+    maxIterations: num('max-iterations', 10000, { min: 1, integer: true }),
+    primitive: oneOf('primitive', ['line', 'plane'], 'line'),
+    minPoints: num('min-points', 3, { min: 2, integer: true }),
+    format: oneOf('format', FORMATS, 'json'),
+    standalone: Boolean(v.standalone),
+    output: v.output,
+  };
+  if (opts.lower > opts.upper) throw new UsageError(`--lower (${opts.lower}) must not exceed --upper (${opts.upper})`);
+  if (noSegment) {
+    if (!opts.method && !opts.fit) throw new UsageError(`${v.raw ? '--raw' : '--no-segment'} needs --fit or --vectorize (there is nothing else to do)`);
+    for (const k of ['segmenter', 'step', 'lower', 'upper', 'scaling']) {
+      if (v[k] !== undefined) throw new UsageError(`--${k} applies to segmentation, not with ${v.raw ? '--raw' : '--no-segment'}`);
+    }
+  }
+  if (opts.type !== 'bin') {
+    for (const k of ['beams', 'ring', 'column', 'layout']) if (v[k] !== undefined) throw new UsageError(`--${k} applies to binary scans only`);
+  } else {
+    if (opts.beams === undefined) throw new UsageError('a binary scan needs --beams N (the number of rings)');
+    if (opts.ring !== undefined && opts.column !== undefined) throw new UsageError('pass either --ring or --column, not both');
+  }
+  if (opts.type !== 'carmen') {
+    for (const k of ['scan', 'max-range']) if (v[k] !== undefined) throw new UsageError(`--${k} applies to CARMEN logs only`);
+  }
+  if (v.scaling !== undefined && opts.segmenter !== 'ia') throw new UsageError('--scaling applies to --segmenter ia only');
+  if (opts.strict && !['ftls', 'aftls'].includes(opts.method)) throw new UsageError('--strict applies to --vectorize ftls or aftls only');
+  if (opts.primitive === 'plane' && opts.method !== 'aftls') throw new UsageError('--primitive plane needs --vectorize aftls');
+  if (opts.standalone && opts.format !== 'tikz') throw new UsageError('--standalone applies to --format tikz only');
+  return opts;
+}
