@@ -95,10 +95,10 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
   });
 
   test('changing the mount recomputes at once; the result is again TfTree in Node', async () => {
-    await page.fill('#tf-mount-x', '0.3');
-    await page.fill('#tf-mount-y', '-0.1');
-    await page.fill('#tf-mount-angle', '10');
-    await page.dispatchEvent('#tf-mount-angle', 'input');
+    await page.fill('input[name="mountX"]', '0.3');
+    await page.fill('input[name="mountY"]', '-0.1');
+    await page.fill('input[name="mountAngle"]', '10');
+    await page.dispatchEvent('input[name="mountAngle"]', 'input');
     await page.waitForFunction(() => window.__rtl.finalState().mount.angle > 0.17, null, { timeout: PAGE_TIMEOUT });
     await check({ x: 0.3, y: -0.1, angle: 10 * Math.PI / 180 });
     await goStep(page, 2);
@@ -106,15 +106,15 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
   });
 
   test('an invalid mount offset is marked and explained, and the last valid mount stays', async () => {
-    await page.fill('#tf-mount-x', '9');
-    assert.equal(await page.getAttribute('#tf-mount-x', 'aria-invalid'), 'true');
-    assert.match(await page.textContent('#tf-mount-error'), /between −5 and 5 m/);
+    await page.fill('input[name="mountX"]', '9');
+    assert.equal(await page.getAttribute('input[name="mountX"]', 'aria-invalid'), 'true');
+    assert.match(await page.textContent('.field[data-key="mountX"] .field-error'), /from −5 to 5 m/);
     assert.ok(Math.abs((await lessonState(page)).mount.x - 0.3) < 1e-12);
-    await page.fill('#tf-mount-x', '0');
-    await page.fill('#tf-mount-y', '0');
-    await page.fill('#tf-mount-angle', '0');
-    await page.dispatchEvent('#tf-mount-angle', 'input');
-    assert.equal(await page.getAttribute('#tf-mount-x', 'aria-invalid'), null);
+    await page.fill('input[name="mountX"]', '0');
+    await page.fill('input[name="mountY"]', '0');
+    await page.fill('input[name="mountAngle"]', '0');
+    await page.dispatchEvent('input[name="mountAngle"]', 'input');
+    assert.equal(await page.getAttribute('input[name="mountX"]', 'aria-invalid'), null);
     await check({ x: 0, y: 0, angle: 0 });
   });
 

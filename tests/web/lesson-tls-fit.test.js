@@ -82,7 +82,7 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
     const f = rtl.fitLine(new Float64Array(s.points));
     assert.ok(Math.abs(s.fit.rms - f.rms) < 1e-12 && Math.abs(s.fit.offset - f.offset) < 1e-12);
     assert.match(await page.textContent('#lesson-text'), /above σ/);
-    await page.click('#tls-reset');
+    await page.click('[data-act="reset-points"]');
     assert.deepEqual((await lessonState(page)).points, before.points);
   });
 
@@ -95,17 +95,17 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
     await page.mouse.up();
     const s = await lessonState(page);
     assert.ok(s.points[0] < before.points[0] - 0.01, `x ${before.points[0]} -> ${s.points[0]}`);
-    await page.click('#tls-reset');
+    await page.click('[data-act="reset-points"]');
   });
 
   test('an invalid σ is marked and explained', async () => {
-    await page.fill('#tls-sigma', '0');
-    assert.equal(await page.getAttribute('#tls-sigma', 'aria-invalid'), 'true');
-    assert.match(await page.textContent('#tls-sigma-error'), /σ must be/);
-    await page.fill('#tls-sigma', '0.005');
-    assert.equal(await page.getAttribute('#tls-sigma', 'aria-invalid'), null);
+    await page.fill('input[name="sigma"]', '0');
+    assert.equal(await page.getAttribute('input[name="sigma"]', 'aria-invalid'), 'true');
+    assert.match(await page.textContent('.field[data-key="sigma"] .field-error'), /σ must be/);
+    await page.fill('input[name="sigma"]', '0.005');
+    assert.equal(await page.getAttribute('input[name="sigma"]', 'aria-invalid'), null);
     assert.equal((await lessonState(page)).accepted, false);
-    await page.fill('#tls-sigma', '0.03');
+    await page.fill('input[name="sigma"]', '0.03');
   });
 
   test('screenshots at 1280x800 and 390x844', async () => {

@@ -8,6 +8,7 @@
 // against the log's other scans, drawn grey in the map.
 export const EXCERPT = Object.freeze({ dataset: 'intel', scan: 20, neighbours: [16, 17, 18, 19, 21, 22, 23, 24] });
 import { Scene } from '../figure.js';
+import { note, numberField } from './ui.js';
 
 const STEPS = ['sensor', 'mount', 'pose', 'chain'];
 const FRAME_COLOURS = { map: '#000000', robot: '#0072B2', sensor: '#D55E00' };
@@ -44,45 +45,36 @@ export default {
     const scan = scans[EXCERPT.scan];
     const measured = Array.from(scan.points);        // treated as the sensor's measurement
     const controls = host.controls;
-    controls.insertAdjacentHTML('beforeend', `
-      <div class="row2">
-        <div><label for="tf-mount-x">Sensor mount x (m)</label><input id="tf-mount-x" type="number" step="0.05" value="0"></div>
-        <div><label for="tf-mount-y">Sensor mount y (m)</label><input id="tf-mount-y" type="number" step="0.05" value="0"></div>
-      </div>
-      <label for="tf-mount-angle">Sensor mount angle (°) <output id="tf-mount-angle-out" for="tf-mount-angle">0</output></label>
-      <input id="tf-mount-angle" type="range" min="-30" max="30" step="1" value="0">
-      <p class="field-error" id="tf-mount-error" aria-live="polite"></p>
-      <p class="hint">Intel scan ${EXCERPT.scan}; grey: scans ${EXCERPT.neighbours[0]}–${EXCERPT.neighbours.at(-1)} placed by their own poses (mount 0). The log's laser sits at the robot's origin, so mount 0 makes the walls agree.</p>`);
-    const mx = controls.querySelector('#tf-mount-x'), my = controls.querySelector('#tf-mount-y');
-    const ma = controls.querySelector('#tf-mount-angle'), maOut = controls.querySelector('#tf-mount-angle-out');
-    const err = controls.querySelector('#tf-mount-error');
+    const field = (key, label, opts) => numberField(controls, { key, label, value: 0, onInput: () => host.onParamsChanged(), ...opts });
+    const mx = field('mountX', 'Sensor mount x', { min: -5, max: 5, step: 0.05, kind: 'number', unit: 'm' });
+    const my = field('mountY', 'Sensor mount y', { min: -5, max: 5, step: 0.05, kind: 'number', unit: 'm' });
+    const ma = field('mountAngle', 'Sensor mount angle', { min: -30, max: 30, step: 1, unit: '°', digits: 0 });
+    note(controls, `Intel scan ${EXCERPT.scan}; grey: scans ${EXCERPT.neighbours[0]}–${EXCERPT.neighbours.at(-1)} placed by their own poses. ` +
+      'The log\'s laser sits at the robot\'s origin, so mount 0 makes the walls agree; any other mount is a miscalibration.');
     let mount = { x: 0, y: 0, angle: 0 }, mountOk = true;
     const readMount = () => {
-      let bad = '';
-      for (const el of [mx, my]) {
-        const v = Number(el.value);
-        const invalid = el.value.trim() === '' || !Number.isFinite(v) || Math.abs(v) > 5;
-        if (invalid) { el.setAttribute('aria-invalid', 'true'); bad = 'The mount offset must be a number between −5 and 5 m.'; } else el.removeAttribute('aria-invalid');
+      mountOk = true;
+      for (const f of [mx, my]) {
+        const v = f.read();
+        const ok = Number.isFinite(v) && Math.abs(v) <= 5;
+        f.setError(ok ? null : 'The mount offset must be a number from −5 to 5 m.');
+        mountOk &&= ok;
       }
-      err.textContent = bad;
-      mountOk = !bad;
-      maOut.textContent = ma.value;
-      if (!bad) mount = { x: Number(mx.value), y: Number(my.value), angle: Number(ma.value) * Math.PI / 180 };
+      if (mountOk) mount = { x: mx.read(), y: my.read(), angle: ma.read() * Math.PI / 180 };
     };
-    for (const el of [mx, my, ma]) el.addEventListener('input', () => host.onParamsChanged());
 
     let tree = null, result = null, step = 0;
     const fig = host.figure;
 
     // a frame's origin and axes drawn in the current frame (tf maps the frame's coordinates to the drawn frame)
-    const axes = (scene, tf, name, len) => {
+    const axes = (scene, tf, name, len, caption = name) => {
       const p = tf([0, 0, len, 0, 0, len]);
       const colour = FRAME_COLOURS[name];
       scene.segments([p[0], p[1], p[2], p[3], p[0], p[1], p[4], p[5]], { colour, width: 2.5 });
       scene.label(p[2], p[3], `${name} x`, { colour });
       // names apart, since frames can coincide (the identity mount puts the sensor on the robot's origin)
       const off = { map: [0, -0.25], robot: [0, 0.15], sensor: [0, -0.45] }[name].map((v) => v * len);
-      scene.label(p[0] + off[0], p[1] + off[1], name, { colour });
+      scene.label(p[0] + off[0], p[1] + off[1], caption, { colour });
     };
     const extentOf = (...sets) => {
       let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
@@ -132,10 +124,12 @@ export default {
         if (name === 'mount') scene.points(result.sensor, { colour: '#f3c4a8', radius: 1.8 });
         if (name === 'pose') scene.points(result.robot, { colour: '#a9c8e6', radius: 1.8 });
         scene.points(pts, { colour: name === 'sensor' ? FRAME_COLOURS.sensor : name === 'mount' ? FRAME_COLOURS.robot : '#222', radius: 2.2 });
-        const len = mapView ? 1.5 : 0.8;
+        const len = mapView ? 2 : 0.8;
         if (mapView) axes(scene, frameTf('map'), 'map', len);
-        if (inFrame !== 'sensor') axes(scene, frameTf('robot'), 'robot', len);
-        axes(scene, frameTf('sensor'), 'sensor', 0.6 * len);
+        // with the identity mount the sensor frame is the robot frame: one set of axes, named so
+        const same = mount.x === 0 && mount.y === 0 && mount.angle === 0;
+        if (inFrame !== 'sensor') axes(scene, frameTf('robot'), 'robot', len, same ? 'robot = sensor' : 'robot');
+        if (inFrame === 'sensor' || !same) axes(scene, frameTf('sensor'), 'sensor', 0.6 * len);
         fig.show(scene);
 
         const m = mount, pose = scan;

@@ -7,6 +7,7 @@
 // measuring errors vertically (OLS) is the wrong model.
 export const EXCERPT = Object.freeze({ dataset: 'intel', scan: 28, firstBeam: 124, lastBeam: 131 });
 import { Scene, lineThrough } from '../figure.js';
+import { note, numberField, selectField } from './ui.js';
 
 const STEPS = ['centroid', 'spread', 'normal', 'residuals', 'rms'];
 const NUDGE = 0.01;   // m per arrow key press
@@ -50,32 +51,27 @@ export default {
 
     // ---- controls: σ, the selected point, reset
     const controls = host.controls;
-    controls.insertAdjacentHTML('beforeend', `
-      <label for="tls-sigma">σ: max RMS distance (m)</label>
-      <input id="tls-sigma" type="number" min="0.001" max="1" step="0.005" value="0.03" aria-describedby="tls-sigma-error">
-      <p class="field-error" id="tls-sigma-error" aria-live="polite"></p>
-      <label for="tls-point">Point to move (then arrow keys on the figure)</label>
-      <select id="tls-point">${original.map((_, k) => (k % 2 ? '' : `<option value="${k / 2}">beam ${EXCERPT.firstBeam + k / 2}</option>`)).join('')}</select>
-      <button type="button" id="tls-reset" class="small">Reset points</button>
-      <p class="hint">Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}: a wall seen nearly edge-on. Drag a point, or focus the figure and use [ ] to pick and arrows to move (Shift ×10).</p>`);
-    const sigmaInput = controls.querySelector('#tls-sigma');
-    const sigmaError = controls.querySelector('#tls-sigma-error');
-    const pointSelect = controls.querySelector('#tls-point');
-    let sigma = 0.03, sigmaOk = true;
-
-    const readSigma = () => {
-      const v = Number(sigmaInput.value);
-      const bad = !(v > 0 && v <= 1);
-      sigmaInput.toggleAttribute('aria-invalid', bad);
-      if (bad) sigmaInput.setAttribute('aria-invalid', 'true');
-      sigmaError.textContent = bad ? 'σ must be a number above 0 and at most 1 m.' : '';
-      sigmaOk = !bad;
-      if (!bad) sigma = v;
-    };
     const changed = () => { host.onParamsChanged(); };
-    sigmaInput.addEventListener('input', () => { readSigma(); changed(); });
-    pointSelect.addEventListener('change', () => { selected = Number(pointSelect.value); lesson.show(step); });
-    controls.querySelector('#tls-reset').addEventListener('click', () => { points = original.slice(); fig.setExtent(...view); changed(); });
+    const sigmaField = numberField(controls, { key: 'sigma', label: 'σ: max RMS distance', value: 0.03, min: 0.005, max: 1,
+      step: 0.005, kind: 'number', unit: 'm', hint: 'FTLS accepts a run of points as one segment while its RMS stays below σ.', onInput: changed });
+    const pointField = selectField(controls, { key: 'point', label: 'Point to move (arrow keys on the figure)',
+      options: Array.from({ length: original.length / 2 }, (_, i) => [String(i), `beam ${EXCERPT.firstBeam + i}`]), value: '0',
+      onInput: () => { selected = Number(pointField.read()); lesson.show(step); } });
+    const pointSelect = pointField.input;
+    const reset = document.createElement('button');
+    Object.assign(reset, { type: 'button', className: 'small wide', textContent: 'Reset the points' });
+    reset.dataset.act = 'reset-points';
+    controls.append(reset);
+    note(controls, `Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}: a wall seen nearly edge-on, so vertical ` +
+      'and orthogonal residuals differ by a factor of about nine. Drag a point, or focus the figure and use [ ] to pick one and the arrow keys to move it (Shift: 10 cm).');
+    let sigma = 0.03, sigmaOk = true;
+    const readSigma = () => {
+      const v = sigmaField.read();
+      sigmaOk = v > 0 && v <= 1;
+      sigmaField.setError(sigmaOk ? null : 'σ must be a number above 0 and at most 1 m.');
+      if (sigmaOk) sigma = v;
+    };
+    reset.addEventListener('click', () => { points = original.slice(); fig.setExtent(...view); changed(); });
 
     // ---- interaction on the figure
     const fig = host.figure;
@@ -178,7 +174,7 @@ export default {
         // line and residuals first, points on top
         if (step >= 2) lineItem(scene, cx, cy, dx, dy, { colour: '#0072B2', width: 2.5 });
         if (step >= 3) {
-          lineItem(scene, 0, ols.intercept, 1, ols.slope, { colour: '#D55E00', width: 1.5, dash: true });
+          lineItem(scene, cx, ols.slope * cx + ols.intercept, 1, ols.slope, { colour: '#D55E00', width: 1.5, dash: true });
           const orth = [], vert = [];
           for (let i = 0; i < n; i++) {
             const x = points[2 * i], y = points[2 * i + 1], d = a * x + b * y + c;
