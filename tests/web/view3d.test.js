@@ -115,3 +115,26 @@ describe('3D view of the Ouster scan (web/view3d) in Chromium', { timeout: 24000
 
   test('no console errors', () => assert.deepEqual(problems, []));
 });
+
+describe('3D view mounted in the lesson page (web/#lidar-3d) in Chromium', { timeout: 180000 }, () => {
+  let page, problems, close;
+  before(async () => ({ page, problems, close } = await openDemoPage('/web/#lidar-3d')));
+  after(() => close?.());
+
+  test('the panel shows a drawn WebGL canvas next to the top view, at both sizes, without sideways scrolling', async () => {
+    await page.waitForSelector('.lidar3d-3d canvas', { timeout: PAGE_TIMEOUT });
+    mkdirSync(SHOTS, { recursive: true });
+    for (const [width, height] of [[1280, 800], [390, 844]]) {
+      await page.setViewportSize({ width, height });
+      await page.waitForFunction((w) => document.querySelector('.lidar3d-3d canvas').getBoundingClientRect().width <= w, width, { timeout: PAGE_TIMEOUT });
+      const { inked, total } = await inkedPixels(page);
+      assert.ok(inked > 0.01 * total, `${width}: inked ${inked} of ${total}`);
+      const top = await page.locator('.lidar3d-top').boundingBox();
+      assert.ok(top && top.width > 100, 'the top view is shown');
+      assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= width);
+      await page.screenshot({ path: join(SHOTS, `view3d-page-${width}x${height}.png`), fullPage: width < 500 });
+    }
+  });
+
+  test('no console errors', () => assert.deepEqual(problems, []));
+});

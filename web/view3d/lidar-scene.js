@@ -10,6 +10,7 @@ export const LIDAR_DEFAULTS = Object.freeze({
   sigma: 0.05,        // m, 3D line fits (FTLS)
   planeSigma: 0.05,   // m, plane fits (AFTLS plane mode)
   planeMinPoints: 24, // planes fitted to fewer points are not drawn (a patch of a few beams says little)
+  planeMinWidth: 0.1, // m: planes whose points spread less than this across their main line are not drawn
   planeBlockColumns: 32, // width of the patches the plane chain runs through (columns; 2048 = 360 degrees)
 });
 
@@ -62,6 +63,7 @@ export function computeLidarScene(rtl, cloud, options = {}) {
     }
   }
   const planes = [];
+  let degenerate = 0;
   const chain = patchChain(cloud, s.planeBlockColumns);
   if (chain.length >= 9) {
     const v = rtl.vectorize(chain, { dim: 3, method: 'aftls', primitive: 'plane', sigma: s.planeSigma });
@@ -69,6 +71,10 @@ export function computeLidarScene(rtl, cloud, options = {}) {
       for (let k = 0; k < v.count; k++) {
         const count = v.indices[2 * k + 1] - v.indices[2 * k];
         if (count < s.planeMinPoints) continue;
+        // A patch whose points lie nearly on one line (e.g. one column across far-apart rings) does not determine a
+        // plane: the package's 3D line fit of its points measures how far they spread across that line.
+        const across = rtl.fitLine(v.polygons[k], { dim: 3 }).rms;
+        if (across < s.planeMinWidth) { degenerate++; continue; }
         planes.push({
           vertices: v.polygons[k], normal: Array.from(v.params.subarray(4 * k, 4 * k + 3)), d: v.params[4 * k + 3],
           rms: v.rms[k], count,
@@ -76,5 +82,5 @@ export function computeLidarScene(rtl, cloud, options = {}) {
       }
     }
   }
-  return { rings, segments, planes, clusters: clusterCount, failed, settings: s };
+  return { rings, segments, planes, degenerate, clusters: clusterCount, failed, settings: s };
 }
