@@ -113,7 +113,7 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.focus('#canvas');
     await page.keyboard.press('Shift+ArrowRight');
-    await goStep(page, 3);
+    await goStep(page, 4);
     await page.screenshot({ path: join(SHOTS, 'lesson-tls-fit-1280x800.png') });
     await page.setViewportSize({ width: 390, height: 844 });
     await page.dispatchEvent('[data-act="scrub"]', 'input');

@@ -201,6 +201,15 @@ export default {
         scene.marker(points[2 * selected], points[2 * selected + 1], { colour: '#E69F00', size: 9 });
         scene.marker(cx, cy, { shape: 'x', colour: '#000', size: 7 });
         scene.label(cx, cy, 'centroid');
+        if (step === 4) {
+          // each point's orthogonal distance against σ (the quantities whose mean square the RMS is)
+          const xs = [], ys = [], ok = [];
+          for (let i = 0; i < n; i++) {
+            const d = Math.abs(a * points[2 * i] + b * points[2 * i + 1] + c);
+            xs.push(EXCERPT.firstBeam + i); ys.push(d); ok.push(d < sigma);
+          }
+          scene.setInset({ title: `|orthogonal residual| per beam, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: 'beam' });
+        }
         fig.show(scene);
 
         const olsRms = Math.sqrt(points.reduce((s, v, i) => (i % 2 ? s + (v - ols.slope * points[i - 1] - ols.intercept) ** 2 : s), 0) / n);
