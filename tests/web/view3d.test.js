@@ -82,6 +82,16 @@ describe('3D view of the Ouster scan (web/view3d) in Chromium', { timeout: 24000
     assert.notDeepEqual(shot0, shot1);
   });
 
+  test('the keyboard orbits too: Shift+arrow keys on the focused view move the camera', async () => {
+    const before = await page.evaluate(() => window.__lidar3d.view.cameraState());
+    await page.focus('.lidar3d-3d canvas');
+    for (let i = 0; i < 5; i++) await page.keyboard.press('Shift+ArrowLeft');
+    const after = await page.evaluate(() => window.__lidar3d.view.cameraState());
+    const moved = Math.hypot(...after.position.map((v, i) => v - before.position[i]));
+    assert.ok(moved > 0.5, `camera moved ${moved} m`);
+    assert.deepEqual(after.target, before.target, 'orbiting keeps the target');
+  });
+
   test('the layer switches and the parameters recompute; an invalid σ is marked', async () => {
     await page.uncheck('input[data-layer="planes"]');
     assert.equal(await page.evaluate(() => window.__lidar3d.view.stats().layers.planes), false);

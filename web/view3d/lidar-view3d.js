@@ -133,7 +133,7 @@ export function createLidarView3D(container, scene, options = {}) {
   canvas.className = 'view3d-canvas';
   canvas.tabIndex = 0;
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', options.label ?? 'LiDAR scan in 3D: drag to orbit, wheel to zoom, arrow keys to pan');
+  canvas.setAttribute('aria-label', options.label ?? 'LiDAR scan in 3D: drag or Shift+arrow keys to orbit, wheel to zoom, arrow keys to pan');
   container.append(canvas);
 
   const camera = new THREE.PerspectiveCamera(50, 1, 0.1, 1000);

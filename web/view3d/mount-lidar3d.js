@@ -77,7 +77,7 @@ export async function mountLidar3D(container, rtl, { url = LIDAR_URL, beams = LI
     caption.textContent = `RELLIS-3D, one Ouster OS1-64 scan, ${cloud.beams} of its 64 beams (every 4th) × ${cloud.columns} columns: ` +
       `${scene.clusters} clusters of ≥ ${settings.minPoints} points (segment, dim 3, step ${settings.step}), ${nSeg} line segments ` +
       `(vectorize FTLS 3D, σ ${settings.sigma} m${scene.failed ? `, ${scene.failed} clusters failed` : ''}) and ${scene.planes.length} planes ` +
-      `(AFTLS plane mode, σ ${settings.planeSigma} m, on a chain that runs back and forth along the rings in blocks of ${settings.planeBlockColumns} columns; light green: planes within 25° of level ground, violet: steeper; ${scene.degenerate} more patches lie nearly on a line and do not determine a plane). Drag to orbit, wheel to zoom, right-drag or arrow keys to pan.`;
+      `(AFTLS plane mode, σ ${settings.planeSigma} m, on a chain that runs back and forth along the rings in blocks of ${settings.planeBlockColumns} columns; light green: planes within 25° of level ground, violet: steeper; ${scene.degenerate} more patches lie nearly on a line and do not determine a plane). Drag (or focus the view and press Shift+arrow keys) to orbit, wheel to zoom, right-drag or arrow keys to pan.`;
   };
   const recompute = () => {
     const next = { ...settings };
