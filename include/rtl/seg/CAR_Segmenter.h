@@ -15,11 +15,17 @@
 // part. grabCluster() hands clusters out in the order of their smallest index. Step 1 gives one cluster per valid
 // point.
 //
+// Tracing (core/Trace.h): CAR_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
+// of loadData as the events of seg/SegTrace.h (use rtl::CarTraceLog to record them). A traced loadData runs the
+// general window algorithm for every step (same clusters); with the default rtl::NoTrace nothing is reported and
+// the code is the untraced code.
+//
 // Bad input: step 0 is treated as 1; an empty scan gives no cluster; loadData throws std::invalid_argument unless
 // 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 1, bounds [0, +inf).
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -28,17 +34,20 @@
 #include <map>
 #include <vector>
 
+#include "rtl/core/Trace.h"
 #include "rtl/core/VectorND.h"
 #include "rtl/seg/ProximityCriterion.h"
+#include "rtl/seg/SegTrace.h"
 
 namespace rtl
 {
-    template<class Vector>
+    template<class Vector, class Observer = NoTrace>
     class CAR_Segmenter
     {
     public:
         typedef typename Vector::ElementType ElementType;
         typedef Vector VectorType;
+        typedef Observer ObserverType;
 
         CAR_Segmenter() = default;
         CAR_Segmenter(size_t step, ElementType lower_bound, ElementType upper_bound)
@@ -48,6 +57,8 @@ namespace rtl
         void setStepSize(size_t step) { step_ = step == 0 ? 1 : step; }
         void setLowerBound(ElementType lb) { lower_ = lb; }
         void setUpperBound(ElementType ub) { upper_ = ub; }
+        //! The observer that receives the steps of the next loadData calls (nullptr: none); not owned.
+        void setObserver(Observer *observer) { observer_ = observer; }
 
         //! Reserves the work buffers for scans of up to max_size points. Optional: larger scans grow them as needed.
         void setMaxSize(size_t max_size)
@@ -71,6 +82,14 @@ namespace rtl
             next_ = 0;
             if (points.empty()) return;
             const ElementType scaling = seg_detail::circularScaling<ElementType>(step_, points.size());
+            if constexpr (traced)
+                if (observer_)
+                {
+                    (*observer_)(car_trace::Scan{points.size(), step_, step_ - 1, static_cast<double>(scaling),
+                                                 static_cast<double>(lower_), static_cast<double>(upper_)});
+                    segmentWindow(points, origin, scaling);
+                    return;
+                }
             if (step_ == 1) segmentAlone(points);
             else if (step_ == 2) segmentNeighbours(points, origin, scaling);
             else segmentWindow(points, origin, scaling);
@@ -92,6 +111,7 @@ namespace rtl
     private:
         static constexpr int D = VectorType::dimensionality();
         static constexpr size_t none = std::numeric_limits<size_t>::max();
+        static constexpr bool traced = Observer::enabled;
         static const ElementType *ptr(const VectorType &v) { return v.data().data(); }
 
         // step 1: the window is empty, every valid point is a cluster of its own.
@@ -195,7 +215,7 @@ namespace rtl
         }
 
         // General step: union-find over point indices, the root of a component being its smallest index; each point
-        // looks s = step - 1 places back.
+        // looks s = step - 1 places back. Also every traced run (any step): the reports compile away untraced.
         void segmentWindow(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
             const size_t n = pts.size(), s = step_ - 1;
@@ -212,19 +232,47 @@ namespace rtl
 
             for (size_t i = 0; i < n; ++i)
             {
-                if (parent_[i] == none) continue;
+                if (parent_[i] == none)
+                {
+                    if constexpr (traced) report(car_trace::Gap{i});
+                    continue;
+                }
                 const ElementType *p = ptr(pts[i]);
+                if constexpr (traced)
+                    if (observer_)
+                    {
+                        const double range = std::sqrt(static_cast<double>(seg_detail::squaredDistance<D>(p, o)));
+                        (*observer_)(car_trace::Threshold{i, range, std::abs(static_cast<double>(scaling)) * range,
+                                                          std::sqrt(static_cast<double>(tsq_[i]))});
+                    }
                 size_t root = none;
                 for (size_t k = 1, kmax = std::min(s, i); k <= kmax; ++k)
                 {
                     const size_t j = i - k, pj = parent_[j];
+                    if constexpr (traced)
+                        if (observer_ && pj != none) reportComparison<car_trace::Compare>(i, j, seg_detail::squaredDistance<D>(p, ptr(pts[j])), tsq_[i]);
                     // pj == root: j is already in i's cluster (the usual case inside a cluster), no need to look
                     if (pj == none || pj == root || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tsq_[i])) continue;
                     const size_t r = find(j);
-                    if (root == none) root = r;
-                    else if (r < root) { parent_[root] = r; root = r; }
-                    else if (r > root) parent_[r] = root;
+                    if (root == none)
+                    {
+                        root = r;
+                        if constexpr (traced) report(car_trace::Link{i, j, r});
+                    }
+                    else if (r < root)
+                    {
+                        if constexpr (traced) report(car_trace::Merge{i, j, root, r});
+                        parent_[root] = r;
+                        root = r;
+                    }
+                    else if (r > root)
+                    {
+                        if constexpr (traced) report(car_trace::Merge{i, j, r, root});
+                        parent_[r] = root;
+                    }
                 }
+                if constexpr (traced)
+                    if (root == none) report(car_trace::Start{i});
                 parent_[i] = root == none ? i : root;
             }
 
@@ -237,6 +285,14 @@ namespace rtl
                 {
                     const size_t j = i + n - k;
                     if (j <= i) break;
+                    if constexpr (traced)
+                        if (observer_ && parent_[j] != none)
+                        {
+                            const ElementType dsq = seg_detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j]));
+                            reportComparison<car_trace::Seam>(i, j, dsq, tsq_[i]);
+                            const size_t a = find(i), b = find(j);
+                            if (dsq <= tsq_[i] && a != b) (*observer_)(car_trace::Merge{i, j, std::max(a, b), std::min(a, b)});
+                        }
                     if (parent_[j] != none && seg_detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j])) <= tsq_[i]) unite(i, j);
                 }
             }
@@ -264,11 +320,16 @@ namespace rtl
                     clusters_.emplace_back();
                     last_.push_back(b);
                     rotate_at_.push_back(0);
+                    if constexpr (traced) trace_first_.push_back(b);
                 }
                 else
                 {
                     c = slot_[r];
-                    if (b - last_[c] > s) rotate_at_[c] = clusters_[c].size();
+                    if (b - last_[c] > s)
+                    {
+                        rotate_at_[c] = clusters_[c].size();
+                        if constexpr (traced) trace_first_[c] = b;
+                    }
                 }
                 clusters_[c].insert(clusters_[c].end(), pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(i));
                 last_[c] = i - 1;
@@ -276,6 +337,32 @@ namespace rtl
             for (size_t c = 0; c < clusters_.size(); ++c)
                 if (rotate_at_[c] > 0)
                     std::rotate(clusters_[c].begin(), clusters_[c].begin() + static_cast<std::ptrdiff_t>(rotate_at_[c]), clusters_[c].end());
+            if constexpr (traced)
+                if (observer_)
+                {
+                    size_t label = 0;
+                    for (size_t c = 0; c < clusters_.size(); ++c, ++label)
+                    {
+                        while (parent_[label] != label) ++label;   // cluster c's label: the c-th root in scan order
+                        (*observer_)(car_trace::Cluster{c, label, trace_first_[c], clusters_[c].size()});
+                    }
+                    trace_first_.clear();
+                }
+        }
+
+        template<class Event>
+        void report(const Event &e)
+        {
+            if (observer_) (*observer_)(e);
+        }
+
+        template<class Event>
+        void reportComparison(size_t i, size_t j, ElementType dsq, ElementType tsq)
+        {
+            double distance, threshold;
+            const bool linked = dsq <= tsq;
+            seg_detail::traceDistances(static_cast<double>(dsq), static_cast<double>(tsq), linked, distance, threshold);
+            (*observer_)(Event{i, j, distance, threshold, linked});
         }
 
         bool closeTo(const VectorType &earlier, const VectorType &later, const VectorType &origin, ElementType scaling) const
@@ -311,5 +398,7 @@ namespace rtl
         std::vector<unsigned char> flags_;
         std::vector<ElementType> tsq_;
         std::vector<size_t> parent_, slot_, last_, rotate_at_;
+        std::vector<size_t> trace_first_;                     // traced runs: the scan index each cluster starts with
+        Observer *observer_ = nullptr;
     };
 }

@@ -16,6 +16,11 @@
 // threshold at step s + 1, both give the same clusters on the same points, except that CAR also links across the
 // seam of a closed scan.
 //
+// Tracing (core/Trace.h): IA_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
+// (addPoint, the window moves of setStepSize and flush) as the events of seg/SegTrace.h (use rtl::IaTraceLog to
+// record them); a traced segmenter skips its step-1 fast path (same clusters). With the default rtl::NoTrace
+// nothing is reported and the code is the untraced code.
+//
 // Bad input: step 0 is treated as 1; addPoint throws std::invalid_argument unless 0 <= lower_bound <= upper_bound
 // (upper may be +inf), the scaling is not NaN and the origin is finite.
 // Defaults: step 1, bounds [0, +inf), scaling 2 pi / 360 (one-degree beams).
@@ -23,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <deque>
 #include <limits>
@@ -31,8 +37,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rtl/core/Trace.h"
 #include "rtl/core/VectorND.h"
 #include "rtl/seg/ProximityCriterion.h"
+#include "rtl/seg/SegTrace.h"
 
 // Keeps the rare paths out of the inlined per-point code.
 #ifndef RTL_SEG_NOINLINE
@@ -47,12 +55,13 @@
 
 namespace rtl
 {
-    template<class Vector>
+    template<class Vector, class Observer = NoTrace>
     class IA_Segmenter
     {
     public:
         typedef typename Vector::ElementType ElementType;
         typedef Vector VectorType;
+        typedef Observer ObserverType;
 
         IA_Segmenter() { resizeWindow(1); }
         IA_Segmenter(size_t step, ElementType lower_bound, ElementType upper_bound, ElementType scaling)
@@ -67,6 +76,8 @@ namespace rtl
         void setLowerBound(ElementType lb) { lower_ = lb; checked_ = false; }
         void setUpperBound(ElementType ub) { upper_ = ub; checked_ = false; }
         void setScaling(ElementType scale) { scaling_ = scale; checked_ = false; }
+        //! The observer that receives the steps from now on (nullptr: none); not owned.
+        void setObserver(Observer *observer) { observer_ = observer; }
 
         // empty() first: polled after every point, and a deque's size() costs a dozen instructions
         [[nodiscard]] size_t closedClustersAvailable() const { return closed_.empty() ? 0 : closed_.size(); }
@@ -89,6 +100,12 @@ namespace rtl
                 oz += o - o;
             }
             const bool valid = pz == ElementType(0), origin_finite = oz == ElementType(0);
+            if constexpr (traced)
+                if (observer_)
+                {
+                    addPointSlow(pt, valid, origin_finite, rsq);
+                    return;
+                }
             // hot path, kept small enough to inline: step 1, the point continues the staged cluster
             const size_t prev = wrec_[0];
             if (step_ == 1 && checked_ && origin_finite && valid && prev == stage_rec_ && prev != none &&
@@ -123,12 +140,24 @@ namespace rtl
     private:
         static constexpr int D = VectorType::dimensionality();
         static constexpr size_t none = std::numeric_limits<size_t>::max();
+        static constexpr bool traced = Observer::enabled;
         typedef std::map<size_t, std::vector<VectorType>> AliveMap;
 
         RTL_SEG_NOINLINE void addPointSlow(const VectorType &pt, bool valid, bool origin_finite, ElementType rsq)
         {
             if (!checked_) checkParameters();
             if (!origin_finite) throw std::invalid_argument("IA_Segmenter::addPoint: the origin must be finite");
+            if constexpr (traced)
+                if (observer_)
+                {
+                    (*observer_)(ia_trace::Add{stream_, !valid});
+                    if (valid)
+                    {
+                        const double range = std::sqrt(static_cast<double>(rsq));
+                        (*observer_)(ia_trace::Threshold{stream_, range, std::abs(static_cast<double>(scaling_)) * range,
+                                                         std::sqrt(static_cast<double>(thr_(rsq)))});
+                    }
+                }
             if (step_ == 1)
             {
                 addToPairWindow(pt, valid, rsq);
@@ -143,10 +172,24 @@ namespace rtl
                 for (size_t w = 0; w < step_; ++w)
                 {
                     const size_t r = wrec_[w];
+                    if constexpr (traced)
+                        if (observer_ && r != none)
+                            reportComparison(stream_, widx_[w], seg_detail::squaredDistance<D>(p, wpts_[w].data().data()), tsq);
                     if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
+                    if constexpr (traced)
+                        if (observer_)
+                        {
+                            if (rec == none) (*observer_)(ia_trace::Link{stream_, widx_[w], recs_[r].id});
+                            else (*observer_)(ia_trace::Merge{stream_, widx_[w], std::max(recs_[rec].id, recs_[r].id),
+                                                              std::min(recs_[rec].id, recs_[r].id)});
+                        }
                     rec = rec == none ? r : merge(rec, r);
                 }
-                if (rec == none) rec = newRecord();
+                if (rec == none)
+                {
+                    rec = newRecord();
+                    if constexpr (traced) report(ia_trace::Open{stream_, recs_[rec].id});
+                }
                 ++recs_[rec].in_window;
             }
             size_t slot;
@@ -213,8 +256,18 @@ namespace rtl
         void addToPairWindow(const VectorType &pt, bool valid, ElementType rsq)
         {
             const size_t prev = wrec_[0];
+            if constexpr (traced)
+                if (observer_ && valid && prev != none)
+                    reportComparison(stream_, stream_ - 1, seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()), thr_(rsq));
             if (valid && prev != none && seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
             {
+                if constexpr (traced)
+                    if (observer_)
+                    {
+                        (*observer_)(ia_trace::Link{stream_, stream_ - 1, recs_[prev].id});
+                        (*observer_)(ia_trace::Slide{stream_ - 1, false});
+                        (*observer_)(ia_trace::Alive{stream_ - 1, recs_[prev].id});
+                    }
                 if (prev == stage_rec_)
                 {
                     stage_[staged_++] = wpts_[0];
@@ -230,6 +283,8 @@ namespace rtl
             }
             else
             {
+                if constexpr (traced)
+                    if (valid) report(ia_trace::Open{stream_, next_id_});   // the id newRecord() gives below
                 if (count_ == 1) evict(0);
                 size_t rec = none;
                 if (valid)
@@ -292,6 +347,13 @@ namespace rtl
         void evict(size_t slot)
         {
             const size_t r = wrec_[slot];
+            if constexpr (traced)
+                if (observer_)
+                {
+                    const size_t i = step_ == 1 ? stream_ - 1 : widx_[slot];
+                    (*observer_)(ia_trace::Slide{i, r == none});
+                    if (r != none) (*observer_)(ia_trace::Alive{i, recs_[r].id});
+                }
             if (r == none) return;
             if (r == stage_rec_) flushStage();
             wrec_[slot] = none;
@@ -300,6 +362,7 @@ namespace rtl
             {
                 // the cluster closes with this point and never had an alive list: skip the alive map
                 closed_.emplace_back(1, wpts_[slot]);
+                if constexpr (traced) report(ia_trace::Close{R.id, 1});
                 R.in_window = 0;
                 free_.push_back(r);
                 return;
@@ -311,12 +374,27 @@ namespace rtl
                 // hand out an exact-size copy and keep the alive list's capacity for the next cluster: growing
                 // vectors from scratch (and faulting in their pages) would cost more than the copy
                 closed_.emplace_back(v.begin(), v.end());
+                if constexpr (traced) report(ia_trace::Close{R.id, v.size()});
                 recycle(std::move(v));
                 alive_.erase(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
                 if (r == stage_rec_) stage_rec_ = none;
             }
+        }
+
+        template<class Event>
+        void report(const Event &e)
+        {
+            if (observer_) (*observer_)(e);
+        }
+
+        void reportComparison(size_t i, size_t j, ElementType dsq, ElementType tsq)
+        {
+            double distance, threshold;
+            const bool linked = dsq <= tsq;
+            seg_detail::traceDistances(static_cast<double>(dsq), static_cast<double>(tsq), linked, distance, threshold);
+            (*observer_)(ia_trace::Compare{i, j, distance, threshold, linked});
         }
 
         // Step 1 streams the points of one cluster into a small staging array first, and appends them to the alive
@@ -446,5 +524,6 @@ namespace rtl
         mutable std::array<VectorType, 256> stage_;             // its newest alive points, not yet in alive_
         mutable size_t staged_ = 0;
         size_t next_id_ = 0, stream_ = 0;
+        Observer *observer_ = nullptr;
     };
 }

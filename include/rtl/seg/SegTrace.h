@@ -24,7 +24,9 @@
 // equals aliveClusters() and the closed list the clusters grabCluster() hands out, in order.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "rtl/core/Trace.h"
 
@@ -225,6 +227,20 @@ namespace rtl
             size_t cluster, size;
             template<class F> void fields(F &&f) const { f("cluster", cluster); f("size", size); }
         };
+    }
+
+    namespace seg_detail
+    {
+        //! The distance and threshold reported for a comparison of squared values (linked = dsq <= tsq): their square
+        //! roots, with the distance nudged above the threshold in the rare case that the square roots of two
+        //! different squares round to the same double, so that linked == (distance <= threshold) always holds.
+        inline void traceDistances(double dsq, double tsq, bool linked, double &distance, double &threshold)
+        {
+            threshold = std::sqrt(tsq);
+            distance = std::sqrt(dsq);
+            if (linked && distance > threshold) distance = threshold;
+            if (!linked && !(distance > threshold)) distance = std::nextafter(threshold, std::numeric_limits<double>::infinity());
+        }
     }
 
     //! Records every step of CAR_Segmenter: CAR_Segmenter<Vector, CarTraceLog>.
