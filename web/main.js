@@ -14,7 +14,9 @@ const hook = (window.__rtl = {
   ready: false, errors: [], revision: 0, current: null,
   lessons: LESSONS.map(({ id, title }) => ({ id, title, steps: null, step: null })),
 });
-window.addEventListener('error', (e) => hook.errors.push(String(e.message)));
+// Chromium reports a ResizeObserver that could not deliver every notification in one frame as an error event; it
+// is a notice (the observers run again next frame), not a failure of the page.
+window.addEventListener('error', (e) => { if (!/^ResizeObserver loop/.test(e.message)) hook.errors.push(String(e.message)); });
 window.addEventListener('unhandledrejection', (e) => hook.errors.push(String(e.reason?.message ?? e.reason)));
 
 const state = { rtl: null, data: null, lesson: null, instance: null, figure: null, player: null, opening: 0 };

@@ -18,14 +18,14 @@ export class Player {
         <button type="button" data-act="play" class="play" aria-label="Play" title="Play / pause (Space)">▶ Play</button>
         <button type="button" data-act="forward" aria-label="Step forward" title="Step forward (→)">Step ▶</button>
         <button type="button" data-act="last" aria-label="Last step" title="Last step (End)">▶▶|</button>
-        <label class="speed">speed <select data-act="speed" aria-label="Playback speed">
-          <option value="slow">slow</option><option value="normal" selected>normal</option><option value="fast">fast</option>
-        </select></label>
       </div>
       <label class="scrub"><span class="visually-hidden">Step</span>
         <input type="range" min="1" max="1" value="1" step="1" data-act="scrub" aria-label="Step of the trace">
       </label>
-      <output class="step-count" aria-live="off">step 0 of 0</output>`;
+      <div class="player-status"><output class="step-count" aria-live="off">step 0 of 0</output>
+        <label class="speed">speed <select data-act="speed" aria-label="Playback speed">
+          <option value="slow">slow</option><option value="normal" selected>normal</option><option value="fast">fast</option>
+        </select></label></div>`;
     this.el = (act) => root.querySelector(`[data-act="${act}"]`);
     this.slider = this.el('scrub');
     this.count = root.querySelector('.step-count');

@@ -203,3 +203,27 @@ export function sameLine(a, b, tol) {
   return Math.abs(a.normal[0] - s * b.normal[0]) < tol && Math.abs(a.normal[1] - s * b.normal[1]) < tol &&
     Math.abs(a.offset - s * b.offset) < tol;
 }
+
+// ---- the lesson page ------------------------------------------------------------------------------------------------
+
+// Opens lesson `id` by its URL hash (if it is not open yet) and waits until it has computed and shown a step.
+export async function openLesson(page, id) {
+  const rev = await page.evaluate(() => window.__rtl.revision);
+  const already = await page.evaluate((h) => window.__rtl.current === h, id);
+  if (!already) {
+    await page.evaluate((h) => { location.hash = h; }, id);
+    await page.waitForFunction(([h, r]) => window.__rtl.current === h && window.__rtl.revision > r &&
+      window.__rtl.lessons.find((l) => l.id === h).steps !== null, [id, rev], { timeout: PAGE_TIMEOUT });
+  }
+  return page.evaluate((h) => window.__rtl.lessons.find((l) => l.id === h), id);
+}
+
+// Moves the player of the open lesson to its last step with the "last step" button; resolves with finalState().
+export async function lastStep(page, id) {
+  const { steps } = await page.evaluate((h) => window.__rtl.lessons.find((l) => l.id === h), id);
+  if (steps > 1) await page.click('#player [data-act="last"]');
+  await page.waitForFunction(([h, n]) => window.__rtl.lessons.find((l) => l.id === h).step === n - 1, [id, steps], { timeout: PAGE_TIMEOUT });
+  return page.evaluate(() => window.__rtl.finalState());
+}
+
+export const SCREENSHOTS = join(REPO, 'build', 'test-output', 'screenshots');

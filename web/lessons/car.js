@@ -52,7 +52,7 @@ export default {
     return {
       recompute() {
         params = readParams(fields, (v) => checkBounds(v));
-        if (!params) { trace = []; return { steps: 0 }; }
+        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
         const opts = { step: params.step, lowerBound: params.lowerBound, upperBound: params.upperBound };
         untraced = host.rtl.segment(points, opts);
         ({ trace, missing } = traced(() => host.rtl.segment(points, { ...opts, trace: true }), 'CAR segmentation'));
@@ -112,7 +112,7 @@ export default {
         labels.forEach((l, i) => { if (l >= 0) { if (!groups.has(l)) groups.set(l, []); groups.get(l).push(i); } });
         return { method: 'car', points: Array.from(points), params, step: k, steps: trace.length,
           replayed: { partition: canonical([...groups.values()], n), clusters: groups.size },
-          untraced: { partition: canonical(untraced.clusters.map((c) => Array.from(c.indices)), n), clusters: untraced.clusters.length } };
+          untraced: untraced && { partition: canonical(untraced.clusters.map((c) => Array.from(c.indices)), n), clusters: untraced.clusters.length } };
       },
       dispose() {},
     };

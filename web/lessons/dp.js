@@ -6,7 +6,7 @@ import { m, numberField } from './ui.js';
 
 const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
-  why: 'A room corner with a door frame (32 points): ε = 0.02 m keeps 8 segments, 0.05 m 5, 0.2 m only 2, so ε visibly decides which bends are corners.',
+  why: 'A room corner with a door frame: ε = 0.02 m keeps 8 segments, 0.05 m 5, 0.2 m only 2, so ε visibly decides which bends are corners.',
 };
 
 // kept vertices (sorted) after events 0..k, as the SimplifyTrace.h replay says: start keeps 0 and count-1, each
@@ -39,7 +39,7 @@ export default {
     return {
       recompute() {
         params = readParams(fields, ({ epsilon }) => (positive(epsilon) ? { epsilon: positive(epsilon) } : {}));
-        if (!params) { trace = []; return { steps: 0 }; }
+        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
         untraced = host.rtl.vectorize(chain, { method: 'dp', epsilon: params.epsilon });
         ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'dp', epsilon: params.epsilon, trace: true }), 'Douglas–Peucker'));
         return { steps: trace.length };

@@ -55,7 +55,7 @@ export default {
     return {
       recompute() {
         params = readParams(fields, (v) => { const out = checkBounds(v); if (nonNegative(v.scaling)) out.scaling = nonNegative(v.scaling); return out; });
-        if (!params) { trace = []; return { steps: 0 }; }
+        if (!params) { trace = []; missing = null; untraced = []; return { steps: 0 }; }
         const opts = { dim: 2, step: params.step, lowerBound: params.lowerBound, upperBound: params.upperBound, scaling: params.scaling };
         untraced = run(opts, false);
         ({ trace, missing } = traced(() => run(opts, true), 'streaming (IA) segmentation'));

@@ -7,7 +7,7 @@ import { mm, numberField } from './ui.js';
 
 const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
-  why: 'A room corner with a door frame (32 points): σ = 0.01 m gives 4 runs, 0.03 m 3, 0.08 m swallows the corner in 1.',
+  why: 'A room corner with a door frame: σ = 0.01 m gives 4 runs, 0.03 m 3, 0.08 m swallows the corner in 1.',
 };
 const TAIL = ['left out (no partition of the tail within σ)', 'appended to the last range', 'paired with the last range\'s last point',
   'taken by the previous range', 'given a point by the previous range', 'placed by re-partitioning the last ranges'];
@@ -41,7 +41,7 @@ export default {
     return {
       recompute() {
         params = readParams(fields, ({ sigma }) => (positive(sigma) ? { sigma: positive(sigma) } : {}));
-        if (!params) { trace = []; return { steps: 0 }; }
+        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
         untraced = host.rtl.vectorize(chain, { method: 'itls', sigma: params.sigma });
         ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'itls', sigma: params.sigma, trace: true }), 'incremental TLS'));
         return { steps: trace.length };

@@ -35,7 +35,7 @@ export default {
     return {
       recompute() {
         params = readParams(fields, ({ epsilon }) => (positive(epsilon) ? { epsilon: positive(epsilon) } : {}));
-        if (!params) { trace = []; return { steps: 0 }; }
+        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
         untraced = host.rtl.vectorize(chain, { method: 'rw', epsilon: params.epsilon });
         ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'rw', epsilon: params.epsilon, trace: true }), 'Reumann–Witkam'));
         return { steps: trace.length };

@@ -63,7 +63,7 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
             if (positive(delta)) out.delta = positive(delta);
             return out;
           });
-          if (!params) { trace = []; return { steps: 0 }; }
+          if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
           let opts = options();
           try { untraced = host.rtl.vectorize(chain, opts); } catch (e) {
             if (!/unknown option "split"/.test(e.message)) throw e;

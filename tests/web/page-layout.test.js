@@ -1,0 +1,91 @@
+// Layout of the lesson page measured in Chromium: at 1280x800 the figure, the lesson's parameters and the player
+// are on screen together without scrolling; at 390x844 nothing is wider than the screen and the comparison table
+// keeps all its columns (it scrolls inside its box). Invalid inputs are marked and explained next to the field.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { PAGE_TIMEOUT, openDemoPage, openLesson } from './helpers.js';
+
+const LESSONS = ['car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw', 'compare'];
+const box = (page, sel) => page.locator(sel).first().boundingBox();
+
+describe('lesson page layout', { timeout: 240000 }, () => {
+  let page, problems, close;
+  before(async () => ({ page, problems, close } = await openDemoPage('/web/')));
+  after(() => close?.());
+
+  test('1280x800: figure, parameters and player of every lesson visible together, no scrolling', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    for (const id of LESSONS) {
+      await openLesson(page, id);
+      assert.equal(await page.evaluate(() => window.scrollY), 0);
+      const fig = await box(page, '#canvas'), controls = await box(page, '#lesson-controls'), player = await box(page, '#player');
+      for (const [name, b] of [['figure', fig], ['parameters', controls], ['player', player]]) {
+        assert.ok(b && b.width > 0 && b.height > 0, `${id}: ${name} shown`);
+        assert.ok(b.x >= 0 && b.y >= 0 && b.x + b.width <= 1280 + 0.5 && b.y + b.height <= 800 + 0.5,
+          `${id}: ${name} inside the screen: ${JSON.stringify(b)}`);
+      }
+      assert.ok(fig.width >= 600 && fig.height >= 380, `${id}: figure big enough: ${fig.width}x${fig.height}`);
+      assert.ok(controls.x + controls.width <= fig.x, `${id}: parameters beside the figure`);
+      // every parameter input itself is on screen
+      for (const b of await page.locator('#lesson-controls input, #lesson-controls select').evaluateAll((els) => els.map((e) => e.getBoundingClientRect().toJSON()))) {
+        assert.ok(b.bottom <= 800 && b.top >= 0, `${id}: input at ${b.top}..${b.bottom}`);
+      }
+      assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
+    }
+  });
+
+  test('390x844: no sideways scrolling, the comparison table keeps its columns', async () => {
+    await page.setViewportSize({ width: 390, height: 844 });
+    for (const id of LESSONS) {
+      await openLesson(page, id);
+      const w = await page.evaluate(() => Math.max(document.documentElement.scrollWidth, document.body.scrollWidth));
+      assert.ok(w <= 390, `${id}: document width ${w}`);
+      const fig = await box(page, '#canvas');
+      assert.ok(fig.width >= 300 && fig.x >= 0 && fig.x + fig.width <= 390, `${id}: figure ${JSON.stringify(fig)}`);
+    }
+    await openLesson(page, 'compare');
+    const cols = await page.$$eval('#lesson-stage table thead th', (ths) => ths.map((th) => th.getBoundingClientRect().width));
+    assert.equal(cols.length, 6);
+    for (const c of cols) assert.ok(c > 20, `column width ${c}`);
+    const cells = await page.$$eval('#lesson-stage table tbody tr', (trs) => trs.map((tr) => tr.children.length));
+    assert.deepEqual(cells, [6, 6, 6, 6, 6]);
+    const wrap = await page.$eval('#lesson-stage .table-wrap', (el) => ({ sw: el.scrollWidth, cw: el.clientWidth, right: el.getBoundingClientRect().right, ox: getComputedStyle(el).overflowX }));
+    assert.ok(wrap.right <= 390, `table box ends at ${wrap.right}`);
+    assert.equal(wrap.ox, 'auto');
+    await page.setViewportSize({ width: 1280, height: 800 });
+  });
+
+  test('an upper bound below the lower bound is marked invalid and explained next to the field; fixing it recomputes', async () => {
+    await openLesson(page, 'car');
+    const upper = page.locator('#lesson-controls input[name="upperBound"]');
+    const rev = await page.evaluate(() => window.__rtl.revision);
+    await upper.fill('0.05');
+    await page.waitForFunction((r) => window.__rtl.revision > r, rev, { timeout: PAGE_TIMEOUT });
+    assert.equal(await upper.getAttribute('aria-invalid'), 'true');
+    const err = page.locator('#lesson-controls .field[data-key="upperBound"] .field-error');
+    assert.ok(await err.isVisible());
+    assert.match(await err.textContent(), /lower bound \(0\.1 m\)/);
+    // the message is tied to the input for screen readers
+    const ids = (await upper.getAttribute('aria-describedby')).split(' ');
+    assert.ok(ids.includes(await err.getAttribute('id')));
+    assert.equal((await page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'car'))).steps, 0);
+    assert.match(await page.textContent('#lesson-text'), /Fix the marked parameter/);
+    await upper.fill('0.5');
+    await page.waitForFunction(() => !document.querySelector('#lesson-controls input[name="upperBound"]').hasAttribute('aria-invalid'), null, { timeout: PAGE_TIMEOUT });
+    assert.ok(!(await err.isVisible()));
+  });
+
+  test('an empty number field is invalid too', async () => {
+    await openLesson(page, 'ia');
+    const scaling = page.locator('#lesson-controls input[name="scaling"]');
+    await scaling.fill('');
+    await page.waitForFunction(() => document.querySelector('#lesson-controls input[name="scaling"]').getAttribute('aria-invalid') === 'true', null, { timeout: PAGE_TIMEOUT });
+    assert.match(await page.textContent('#lesson-controls .field[data-key="scaling"] .field-error'), /number ≥ 0/);
+    await scaling.fill('0.05');
+  });
+
+  test('no console errors', async () => {
+    assert.deepEqual(await page.evaluate(() => window.__rtl.errors), []);
+    assert.deepEqual(problems, []);
+  });
+});
