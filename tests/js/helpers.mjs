@@ -1,5 +1,9 @@
 // Shared helpers of the package tests (tests/js): tolerant comparisons and reference data.
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 
 export function near(actual, expected, tol, what = 'value') {
   assert.ok(Math.abs(actual - expected) <= tol, `${what}: ${actual} differs from ${expected} by more than ${tol}`);
@@ -29,4 +33,19 @@ export function throwsWith(f, type, re) {
     assert.match(e.message, re);
     return true;
   });
+}
+
+// `npm pack` of this repository into `dir`, then an offline `npm install` of the tarball into the empty project
+// `dir/app` (the package has no dependencies), as a user would install it. Returns { app, tarball, pack }, where
+// pack is npm's JSON report of the tarball (files, version).
+export function packAndInstall(dir) {
+  const root = fileURLToPath(new URL('../..', import.meta.url));
+  const npm = (args, cwd) => execFileSync('npm', args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const [pack] = JSON.parse(npm(['pack', '--json', '--pack-destination', dir], root));
+  const app = join(dir, 'app');
+  mkdirSync(app);
+  writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', version: '1.0.0', private: true }));
+  const tarball = join(dir, pack.filename);
+  npm(['install', '--no-audit', '--no-fund', '--offline', tarball], app);
+  return { app, tarball, pack };
 }
