@@ -216,6 +216,7 @@ export function createLidarView3D(container, scene, options = {}) {
       controls.dispose();
       for (const o of Object.values(objects)) if (o) disposeObject(o);
       renderer.dispose();
+      renderer.forceContextLoss();   // browsers cap live WebGL contexts: reopening the lesson must not pile them up
       canvas.remove();
     },
   };
