@@ -118,6 +118,7 @@ namespace rtl
     //! through points first and last (the distance to point first if they coincide), at `distance`. split =
     //! distance > epsilon: farthest is kept and [first, farthest], [farthest, last] are examined next. Points with
     //! a non-finite coordinate are never farthest; without a finite interior point, farthest = first, distance 0.
+    //! The distance is computed in double; the split is the vectorizer's own decision (in its element type).
     struct DpRange
     {
         static constexpr const char *kind = "range";
@@ -158,8 +159,11 @@ namespace rtl
         template<class F> void fields(F &&f) const { f("key", key); f("through", through); f("epsilon", epsilon); }
     };
 
-    //! Point `index` lies outside the strip of key point `key`, at `distance` > epsilon from its axis; the
-    //! point before it (index - 1) becomes the next key (a `keep` and a new `strip` follow).
+    //! Point `index` lies outside the strip of key point `key`, at `distance` > epsilon from its axis (the line
+    //! through the strip's key and through points, computed in double; the vectorizer decides in its element type,
+    //! so in float the two may differ by rounding right at epsilon); the point before it (index - 1) becomes the
+    //! next key (a `keep` and a new `strip` follow). Points between the strip's through point and `index` lie
+    //! inside it.
     struct RwExit
     {
         static constexpr const char *kind = "exit";

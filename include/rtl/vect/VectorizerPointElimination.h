@@ -48,17 +48,28 @@ namespace rtl
                 out.push_back(makeSegment<Segment>(pts[keys[i]], pts[keys[i + 1]]));
         }
 
-        //! Distance of p from the line through a and b (from a if they coincide), in double; NaN if not finite.
+        //! Squared distance of p from the line through a and b (from a if they coincide), in double; NaN if not
+        //! finite.
         template<class Vector>
-        double lineDistance(const Vector &p, const Vector &a, const Vector &b)
+        double lineDistance2(const Vector &p, const Vector &a, const Vector &b)
         {
-            const auto pd = p.data().template cast<double>(), ad = a.data().template cast<double>();
-            const auto v = (pd - ad).eval(), u = (b.data().template cast<double>() - ad).eval();
-            const double l2 = u.squaredNorm();
-            if (!(l2 > 0))
-                return v.norm();
-            return (v - u * (v.dot(u) / l2)).norm();
+            constexpr int d = Vector::dimensionality();
+            double v[d], u[d], uu = 0, vu = 0;
+            for (int k = 0; k < d; ++k)
+            {
+                v[k] = static_cast<double>(p[k]) - static_cast<double>(a[k]);
+                u[k] = static_cast<double>(b[k]) - static_cast<double>(a[k]);
+                uu += u[k] * u[k];
+                vu += v[k] * u[k];
+            }
+            const double t = uu > 0 ? vu / uu : 0;
+            double r2 = 0;
+            for (int k = 0; k < d; ++k)
+                r2 += (v[k] - u[k] * t) * (v[k] - u[k] * t);
+            return r2;
         }
+        template<class Vector>
+        double lineDistance(const Vector &p, const Vector &a, const Vector &b) { return std::sqrt(lineDistance2(p, a, b)); }
     }
 
     //! Douglas-Peucker: keeps the end points, then recursively (with an explicit stack) the point farthest from the
@@ -213,13 +224,13 @@ namespace rtl
             else
             {
                 shown = a;
+                double best2 = 0;
                 for (size_t i = a + 1; i < b; ++i)
                 {
-                    if (!finite(pts[i]))
-                        continue;
-                    const double d = vect_detail::lineDistance(pts[i], pts[a], pts[b]);
-                    if (d > distance) { distance = d; shown = i; }
+                    const double d2 = vect_detail::lineDistance2(pts[i], pts[a], pts[b]);
+                    if (d2 > best2 && finite(pts[i])) { best2 = d2; shown = i; }
                 }
+                distance = std::sqrt(best2);
             }
             (*observer_)(DpRange{a, b, shown, distance, epsilon, far != 0});
         }

@@ -1,0 +1,79 @@
+// Zero cost of the ITLS / Douglas-Peucker / Reumann-Witkam trace hooks when unused: the untraced API only, so the
+// same source compiles against the headers before tracing and after (bench/trace_overhead.sh compares both builds
+// in one run). Setting of bench/b_vect_2d.cpp: semicircle r = 8, noise 0.01, 1e5 points, sigma 0.03, epsilon 0.09.
+// Ratios are to a floor pass (x, y, x2, y2, xy sums) measured in the same run; segment counts let the two
+// builds' results be compared.
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench_util.h"
+#include "rtl/Vectorization.h"
+
+namespace
+{
+    std::vector<rtl::Vector2f> semicircle(size_t n, unsigned seed)
+    {
+        std::mt19937 gen(seed);
+        std::normal_distribution<double> nd(0.0, 0.01);
+        std::vector<rtl::Vector2f> pts;
+        pts.reserve(n);
+        for (size_t i = 0; i < n; ++i)
+        {
+            const double a = M_PI * static_cast<double>(i) / static_cast<double>(n - 1);
+            pts.emplace_back(static_cast<float>(8 * std::cos(a) + nd(gen)), static_cast<float>(8 * std::sin(a) + nd(gen)));
+        }
+        return pts;
+    }
+
+    double floorPass(const std::vector<rtl::Vector2f> &pts)
+    {
+        double x = 0, y = 0, x2 = 0, y2 = 0, xy = 0;
+        for (const auto &p : pts)
+        {
+            const double px = p.x(), py = p.y();
+            x += px; y += py; x2 += px * px; y2 += py * py; xy += px * py;
+        }
+        return x + y + x2 + y2 + xy;
+    }
+}
+
+int main(int argc, char **argv)
+{
+    const auto opt = rtl::bench::parseOptions(argc, argv);
+    const size_t n = opt.smoke ? 1000 : 100000;
+    const auto pts = semicircle(n, 42);
+
+    rtl::VectorizerITLSProjections2D<float, double> itls;
+    rtl::VectorizerDouglasPeucker2f dp(0.09f);
+    rtl::VectorizerReumannWitkam2f rw(0.09f);
+    itls.setSigma(0.03f);
+    itls.setMaxSize(n);
+    dp.setMaxSize(n);
+    rw.setMaxSize(n);
+    std::vector<rtl::LineSegment2f> out;
+    out.reserve(n);
+
+    double sink = 0;
+    size_t s_itls = 0, s_dp = 0, s_rw = 0;
+    bool ok = true;
+    const double t_floor = rtl::bench::medianSeconds([&] { sink += floorPass(pts); }, opt.repetitions);
+    rtl::bench::doNotOptimize(sink);
+    const double t_itls = rtl::bench::medianSeconds([&] { ok &= itls(pts); s_itls = itls.indices().size(); }, opt.repetitions);
+    const double t_dp = rtl::bench::medianSeconds([&] { dp(pts, out); s_dp = out.size(); }, opt.repetitions);
+    const double t_rw = rtl::bench::medianSeconds([&] { rw(pts, out); s_rw = out.size(); }, opt.repetitions);
+
+    rtl::bench::printHeader(("untraced ITLS / DP / RW, 2D semicircle r=8, noise 0.01, " + std::to_string(n) + " points").c_str());
+    rtl::bench::printRow("floor (x, y, x2, y2, xy pass)", n, t_floor, t_floor);
+    rtl::bench::printRow("incremental TLS sigma 0.03", n, t_itls, t_floor, "segs=" + std::to_string(s_itls));
+    rtl::bench::printRow("Douglas-Peucker eps 0.09", n, t_dp, t_floor, "segs=" + std::to_string(s_dp));
+    rtl::bench::printRow("Reumann-Witkam eps 0.09", n, t_rw, t_floor, "segs=" + std::to_string(s_rw));
+    if (!ok)
+    {
+        std::printf("!! the incremental vectorizer returned false\n");
+        return 1;
+    }
+    return 0;
+}
