@@ -11,6 +11,7 @@
 #include <limits>
 #include <list>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -26,6 +27,7 @@
 #include "rtl/vect/ApproximationTlsPlane3D.h"
 #include "rtl/vect/ExtractorChainFast.h"
 #include "rtl/vect/ExtractorChainIncremental.h"
+#include "rtl/vect/FastPolylinePipeline2D.h"
 #include "rtl/vect/OptimizerContinuity2D.h"
 #include "rtl/vect/OptimizerTotalError.h"
 #include "rtl/vect/PostprocessorPolyline2D.h"
@@ -145,99 +147,83 @@ namespace rtl
         ~VectorizerITLSProjections2D() = default;
     };
 
-    //! FTLS: prefix sums, fast chain extraction, continuity repair, polyline of line crossings.
-    template<typename Element, typename Compute>
-    class VectorizerFTLSPolyline2D : public vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>>
+    namespace vect_detail
     {
-        typedef vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>> Base;
-    public:
-        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
-        using typename Base::ApproximationType; using typename Base::IndexType;
-        typedef PrecArrayBlocked<2, Element, Compute> PrecArrayType;   // few range queries: blocked prefix sums
-        typedef typename ApproximationType::ConstrainedType OutputType;
+        //! FTLS (optimize = false) and AFTLS (optimize = true) 2D polylines: see FastPolylinePipeline2D.h.
+        template<class PrecArray, class Approximation, bool optimize>
+        class VectorizerFastPolyline2D : public VectorizerBase<Approximation>
+        {
+            typedef VectorizerBase<Approximation> Base;
+        public:
+            using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
+            using typename Base::ApproximationType; using typename Base::IndexType;
+            typedef PrecArray PrecArrayType;
+            typedef typename ApproximationType::ConstrainedType OutputType;
 
+            void setSigma(ElementType sigma) { this->sigma = sigma; }
+            void setDelta(ElementType delta) { this->delta = delta; }
+            void setMaxSize(size_t size) { pipeline.setMaxSize(size); this->reserveBase(size); }
+
+            //! Split mode (an addition to RTL, default false = RTL's strict behaviour and return values): where a
+            //! corner cannot be met within delta, the polyline breaks there, so the result is several polylines
+            //! that together cover the chain (false then only for invalid input, or 3 points that fit no line).
+            void setSplitAtInfeasibleCorners(bool split) { pipeline.setSplit(split); }
+            [[nodiscard]] bool splitAtInfeasibleCorners() const { return pipeline.split(); }
+
+            bool operator()(const std::vector<VectorType> &pts)
+            {
+                if (pts.size() < 2 || !validParameter(this->sigma) || !validParameter(delta) ||
+                    !pipeline(pts, this->sigma, delta, this->approx, this->idx))
+                {
+                    this->fail();
+                    pipeline.clearOutputs(pts, this->approx, this->idx);
+                    return false;
+                }
+                return true;
+            }
+            //! The segments of all polylines, in chain order (segment i lies on approximations()[i]).
+            std::vector<OutputType> lineSegments() const { return pipeline.lineSegments(); }
+            //! Polyline vertices: segments + 1 per polyline, polyline after polyline (one polyline unless split).
+            const std::vector<VectorType> &vertices() const { return pipeline.vertices(); }
+            //! Segment index where each polyline starts, then the segment count ({0, n} for one polyline; {0, 0}
+            //! after a false return). Polyline p has segments [o[p], o[p+1]) and vertices [o[p] + p, o[p+1] + p].
+            const std::vector<size_t> &polylineOffsets() const { return pipeline.polylineOffsets(); }
+            //! Split mode: each break (boundary = first chain index of the range that starts a new polyline, the
+            //! crossing distance of the two lines there, delta); empty when none.
+            const std::vector<CornerReport> &breaks() const { return pipeline.breaks(); }
+            //! Strict mode, after a false return because no partition meets delta: the corner that cannot be met
+            //! (the furthest one the exact search reached, with the smallest crossing distance tried there);
+            //! empty otherwise (success, invalid input).
+            const std::optional<CornerReport> &failure() const { return pipeline.failure(); }
+
+        protected:
+            ElementType delta{3};
+            FastPolylinePipeline2D<PrecArrayType, ApproximationType, optimize> pipeline;
+        };
+    }
+
+    //! FTLS: prefix sums, fast chain extraction, continuity repair (exact search as the last resort), polyline of
+    //! line crossings. Additions to RTL: setSplitAtInfeasibleCorners, polylineOffsets, breaks, failure.
+    template<typename Element, typename Compute>
+    class VectorizerFTLSPolyline2D
+        : public vect_detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, false>
+    {
+    public:
         VectorizerFTLSPolyline2D() = default;
         ~VectorizerFTLSPolyline2D() = default;
-
-        void setSigma(ElementType sigma) { this->sigma = sigma; }
-        void setDelta(ElementType delta) { this->delta = delta; }
-        void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }
-
-        bool operator()(const std::vector<VectorType> &pts)
-        {
-            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::validParameter(delta))
-                return failAll(pts);
-            prec.precompute(pts);
-            if (!prec.allFinite())
-                return failAll(pts);
-            extractor.setSigma(this->sigma);
-            continuity.setSigma(this->sigma);
-            continuity.setDelta(delta);
-            if (!extractor(prec, this->approx, this->idx) || !continuity(pts, prec, this->approx, this->idx) ||
-                !polyline(pts, this->approx, this->idx))
-                return failAll(pts);
-            return true;
-        }
-        std::vector<OutputType> lineSegments() const { return polyline.lineSegments(); }
-        //! Polyline vertices (one more than the segments).
-        const std::vector<VectorType> &vertices() const { return polyline.vertices(); }
-
-    private:
-        ElementType delta{3};
-        bool failAll(const std::vector<VectorType> &pts) { this->fail(); polyline(pts, this->approx, this->idx); return false; }
-        PrecArrayType prec;
-        ExtractorChainFast<PrecArrayType, ApproximationType> extractor;
-        OptimizerContinuity2D<PrecArrayType, ApproximationType> continuity;
-        PostprocessorPolyline2D<ApproximationType> polyline;
     };
 
-    //! AFTLS: FTLS with the total-error optimizer between extraction and continuity repair.
+    //! AFTLS: FTLS with the total-error optimizer between extraction and continuity repair; keeps FTLS's
+    //! candidate when that has the lower total squared error (so AFTLS is never worse than FTLS).
     template<typename Element, typename Compute>
-    class VectorizerAFTLSPolyline2D : public vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>>
+    class VectorizerAFTLSPolyline2D
+        : public vect_detail::VectorizerFastPolyline2D<PrecArray2D<Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true>
     {
-        typedef vect_detail::VectorizerBase<ApproximationTlsLine2D<Element, Compute>> Base;
     public:
-        using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
-        using typename Base::ApproximationType; using typename Base::IndexType;
-        typedef PrecArray2D<Element, Compute> PrecArrayType;
-        typedef typename ApproximationType::ConstrainedType OutputType;
-
         VectorizerAFTLSPolyline2D() = default;
         ~VectorizerAFTLSPolyline2D() = default;
-
-        void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }
-        void setSigma(ElementType sigma) { this->sigma = sigma; }
-        void setSimplexShift(size_t simplex_shift) { optimizer.setSimplexShift(simplex_shift); }
-        void setMaxIterations(size_t max_iterations) { optimizer.setMaxIterations(max_iterations); }
-        void setDelta(ElementType delta) { this->delta = delta; }
-
-        bool operator()(const std::vector<VectorType> &pts)
-        {
-            if (pts.size() < 2 || !vect_detail::validParameter(this->sigma) || !vect_detail::validParameter(delta))
-                return failAll(pts);
-            prec.precompute(pts);
-            if (!prec.allFinite())
-                return failAll(pts);
-            extractor.setSigma(this->sigma);
-            optimizer.setSigma(this->sigma);
-            continuity.setSigma(this->sigma);
-            continuity.setDelta(delta);
-            if (!extractor(prec, this->approx, this->idx) || !optimizer(pts, prec, this->approx, this->idx) ||
-                !continuity(pts, prec, this->approx, this->idx) || !polyline(pts, this->approx, this->idx))
-                return failAll(pts);
-            return true;
-        }
-        std::vector<OutputType> lineSegments() const { return polyline.lineSegments(); }
-        const std::vector<VectorType> &vertices() const { return polyline.vertices(); }
-
-    private:
-        ElementType delta{3};
-        bool failAll(const std::vector<VectorType> &pts) { this->fail(); polyline(pts, this->approx, this->idx); return false; }
-        PrecArrayType prec;
-        ExtractorChainFast<PrecArrayType, ApproximationType> extractor;
-        OptimizerTotalError<PrecArrayType, ApproximationType> optimizer;
-        OptimizerContinuity2D<PrecArrayType, ApproximationType> continuity;
-        PostprocessorPolyline2D<ApproximationType> polyline;
+        void setSimplexShift(size_t simplex_shift) { this->pipeline.optimizer().setSimplexShift(simplex_shift); }
+        void setMaxIterations(size_t max_iterations) { this->pipeline.optimizer().setMaxIterations(max_iterations); }
     };
 
     //! Incremental TLS 3D lines, trimmed by the projections of each range's end points. Observer as in 2D.

@@ -11,10 +11,12 @@
 //   4. re-partition a window of neighbouring ranges: a small dynamic programme over candidate breakpoints near
 //      the window's boundaries finds the fewest ranges that fit sigma and whose every pair (including the two
 //      pairs with the ranges outside the window) passes (e.g. a 2-point "bridge" range across a step);
-//   5. for chains of <= 160 points, the same programme over the whole chain (exhaustive: if it fails, no valid
-//      result exists and operator() returns false); for longer chains, bridge the two boundary points without
-//      checking and let the loop re-check.
-// The repaired pairs are re-checked; a work budget proportional to the input bounds the total effort.
+//   5. the exact search over the whole chain (PartitionSearch2D, any length): it finds a valid partition if one
+//      exists, so if it finds none, operator() returns false and failure() says where (issue 11 items 5, 6).
+//      Only when the ranges do not span the whole sum array (direct use on a part of it) does it instead bridge
+//      the two boundary points without checking and let the loop re-check.
+// The repaired pairs are re-checked; a work budget proportional to the input bounds the total effort (when it
+// runs out, the exact search decides).
 #pragma once
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/PartitionSearch2D.h"
 
 namespace rtl
 {
@@ -42,9 +45,16 @@ namespace rtl
         OptimizerContinuity2D() = default;
         ~OptimizerContinuity2D() = default;
 
-        void setDelta(ElementType delta) { delta2 = static_cast<ComputeType>(delta) * static_cast<ComputeType>(delta); }
+        void setDelta(ElementType delta)
+        {
+            delta2 = static_cast<ComputeType>(delta) * static_cast<ComputeType>(delta);
+            search.setDelta(delta);
+        }
         //! RMS bound that repaired ranges must respect (default: none, as in the published version).
         void setSigma(ElementType sigma) { sigma2 = static_cast<ComputeType>(sigma) * static_cast<ComputeType>(sigma); }
+
+        //! After a false return: the corner that no partition can meet (see PartitionSearch2D::failure()).
+        const CornerReport &failure() const { return search.failure(); }
 
         //! Repairs `lines`/`indices` in place. False if a pair could not be repaired (inputs then unspecified but
         //! consistent), if the inputs are inconsistent, or if delta is not positive.
@@ -60,7 +70,10 @@ namespace rtl
             while (i + 1 < indices.size())
             {
                 if (pairOk(pts, lines, indices, i)) { ++i; continue; }
-                if (budget-- == 0 || !repair(pts, sum_array, lines, indices, i))
+                if (budget == 0)
+                    return exactSearch(pts, sum_array, lines, indices);
+                --budget;
+                if (!repair(pts, sum_array, lines, indices, i))
                     return false;
                 i = i > 0 ? i - 1 : 0;
             }
@@ -70,6 +83,15 @@ namespace rtl
     private:
         ComputeType delta2{9};
         ComputeType sigma2{std::numeric_limits<ComputeType>::infinity()};
+        PartitionSearch2D<SumArray, Approximation> search;
+
+        //! Replaces the whole partition by the exact search's; false iff no valid partition exists.
+        bool exactSearch(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines, std::vector<IndexType> &indices)
+        {
+            search.setSigmaSquared(sigma2);
+            search.setAllowBreaks(false);
+            return search(pts, a, lines, indices);
+        }
 
         bool fits(const SumArray &a, size_t b, size_t e) const
         {
@@ -78,11 +100,7 @@ namespace rtl
 
         bool crossingOk(const std::vector<VectorType> &pts, const Approximation &l1, const Approximation &l2, size_t boundary) const
         {
-            ComputeVectorType x;
-            if (!Approximation::getCrossingCompute(l1, l2, x))
-                return false;
-            const ComputeVectorType m = (pts[boundary - 1].template cast<ComputeType>() + pts[boundary].template cast<ComputeType>()) * ComputeType(0.5);
-            return (x - m).lengthSquared() <= delta2;
+            return vect_detail::crossingDistanceSquared(pts, l1, l2, boundary) <= delta2;
         }
 
         bool pairOk(const std::vector<VectorType> &pts, const std::vector<Approximation> &l, const std::vector<IndexType> &idx, size_t i) const
@@ -195,7 +213,7 @@ namespace rtl
         }
 
         bool repair(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
-                    std::vector<IndexType> &indices, size_t i) const
+                    std::vector<IndexType> &indices, size_t i)
         {
             const size_t b = indices[i].first, m = indices[i].second, e = indices[i + 1].second;
             // 1. Move the boundary.
@@ -218,11 +236,10 @@ namespace rtl
                 return true;
             if (repartition(pts, a, lines, indices, i > 1 ? i - 2 : 0, std::min(indices.size(), i + 4), 12))
                 return true;
-            // Whole chain, if small enough for the cubic programme; it considers every partition, so if it finds
-            // none, no valid result exists and bridging is pointless.
-            if (indices.back().second - indices.front().first <= 160)
-                return repartition(pts, a, lines, indices, 0, indices.size(), indices.back().second);
-            // 5. Bridge of the two boundary points (re-checked by the caller's loop).
+            // 5. The exact search over the whole chain: if it finds none, no valid result exists.
+            if (indices.front().first == 0 && indices.back().second + 1 == a.size())
+                return exactSearch(pts, a, lines, indices);
+            // Direct use on part of a sum array: bridge of the two boundary points (re-checked by the caller's loop).
             if (m >= b + 3 && m + 3 <= e && tryReplace(pts, a, lines, indices, i, 2, {{b, m - 1}, {m - 1, m + 1}, {m + 1, e}}, false))
                 return true;
             if (m >= b + 3 && tryReplace(pts, a, lines, indices, i, 2, {{b, m - 1}, {m - 1, e}}, false))

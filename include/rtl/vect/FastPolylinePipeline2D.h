@@ -1,0 +1,183 @@
+// FastPolylinePipeline2D: the stages of VectorizerFTLSPolyline2D (optimize = false) and VectorizerAFTLSPolyline2D
+// (optimize = true), shared so that both decide feasibility, failures and split mode the same way.
+//
+//   extraction (ExtractorChainFast) -> [AFTLS: total-error optimizer] -> continuity repair -> polyline
+// - The continuity repair ends, when its local repairs fail, in the exact search (PartitionSearch2D), and so does
+//   a failed extraction: a false return proves that no partition meets sigma and delta (issue 11 item 6).
+// - AFTLS also keeps FTLS's candidate (extraction -> continuity, without the optimizer) and returns whichever has
+//   the lower total squared error, so its error never exceeds FTLS's (issue 11 item 5: the repair after the
+//   optimizer could raise it above the extractor's).
+// - Strict mode (default, RTL's behaviour): false when no partition exists; failure() names the corner.
+//   Split mode (setSplitAtInfeasibleCorners(true), issue 12 item 1): the exact search may break the polyline at
+//   corners that cannot be met within delta (fewest breaks), so the result is several polylines covering the
+//   whole chain; polylineOffsets() and breaks() describe them.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "rtl/vect/ExtractorChainFast.h"
+#include "rtl/vect/OptimizerContinuity2D.h"
+#include "rtl/vect/OptimizerTotalError.h"
+#include "rtl/vect/PartitionSearch2D.h"
+#include "rtl/vect/PostprocessorPolyline2D.h"
+
+namespace rtl::vect_detail
+{
+    template<class PrecArrayType, class Approximation, bool optimize>
+    class FastPolylinePipeline2D
+    {
+    public:
+        typedef typename Approximation::ElementType ElementType;
+        typedef typename Approximation::ComputeType ComputeType;
+        typedef typename Approximation::VectorType VectorType;
+        typedef typename Approximation::ConstrainedType OutputType;
+        typedef std::pair<size_t, size_t> IndexType;
+
+        void setMaxSize(size_t size)
+        {
+            prec.resize(size);
+            if constexpr (optimize)
+            {
+                cand_lines.reserve(size / 2 + 1);
+                cand_idx.reserve(size / 2 + 1);
+            }
+            offsets.reserve(2);
+        }
+        void setSplit(bool split) { split_ = split; }
+        [[nodiscard]] bool split() const { return split_; }
+        OptimizerTotalError<PrecArrayType, Approximation> &optimizer() { return optimizer_; }
+
+        //! Runs the stages on finite points with valid sigma and delta; false (outputs to be cleared by the caller)
+        //! if no valid result exists or the points are not finite.
+        bool operator()(const std::vector<VectorType> &pts, ElementType sigma, ElementType delta, std::vector<Approximation> &lines,
+                        std::vector<IndexType> &idx)
+        {
+            failure_.reset();
+            breaks_.clear();
+            multi = false;
+            prec.precompute(pts);
+            if (!prec.allFinite())
+                return false;
+            extractor.setSigma(sigma);
+            continuity.setSigma(sigma);
+            continuity.setDelta(delta);
+            search.setSigma(sigma);
+            search.setDelta(delta);
+            bool ok = extractor(prec, lines, idx);
+            if (ok)
+            {
+                if constexpr (optimize)
+                {
+                    cand_lines = lines;
+                    cand_idx = idx;
+                    const bool ftls_ok = continuity(pts, prec, cand_lines, cand_idx);
+                    optimizer_.setSigma(sigma);
+                    ok = optimizer_(pts, prec, lines, idx) && continuity(pts, prec, lines, idx);
+                    if (ftls_ok && (!ok || totalError(cand_lines) < totalError(lines)))
+                    {
+                        lines.swap(cand_lines);
+                        idx.swap(cand_idx);
+                        ok = true;
+                    }
+                }
+                else
+                    ok = continuity(pts, prec, lines, idx);
+                if (!ok)
+                    failure_ = continuity.failure();
+            }
+            else
+            {
+                search.setAllowBreaks(false);
+                ok = search(pts, prec, lines, idx);
+                if (!ok)
+                    failure_ = search.failure();
+            }
+            if (!ok && split_)
+            {
+                search.setAllowBreaks(true);
+                ok = search(pts, prec, lines, idx);
+                if (ok)
+                {
+                    breaks_ = search.breaks();
+                    multi = search.polylineStarts().size() > 1;
+                }
+            }
+            if (!ok)
+                return false;
+            failure_.reset();
+            return makePolylines(pts, lines, idx);
+        }
+
+        //! Builds the outputs for `lines` (empty after a failure), as a single polyline.
+        void clearOutputs(const std::vector<VectorType> &pts, const std::vector<Approximation> &lines, const std::vector<IndexType> &idx)
+        {
+            multi = false;
+            breaks_.clear();
+            polyline(pts, lines, idx);
+            offsets.clear();
+            offsets.push_back(0);
+            offsets.push_back(0);
+        }
+
+        std::vector<OutputType> lineSegments() const { return multi ? segments_ : polyline.lineSegments(); }
+        const std::vector<VectorType> &vertices() const { return multi ? vertices_ : polyline.vertices(); }
+        const std::vector<size_t> &polylineOffsets() const { return offsets; }
+        const std::vector<CornerReport> &breaks() const { return breaks_; }
+        const std::optional<CornerReport> &failure() const { return failure_; }
+
+    private:
+        PrecArrayType prec;
+        ExtractorChainFast<PrecArrayType, Approximation> extractor;
+        OptimizerTotalError<PrecArrayType, Approximation> optimizer_;
+        OptimizerContinuity2D<PrecArrayType, Approximation> continuity;
+        PartitionSearch2D<PrecArrayType, Approximation> search;
+        PostprocessorPolyline2D<Approximation> polyline;
+        std::vector<Approximation> cand_lines;
+        std::vector<IndexType> cand_idx;
+        bool split_{false}, multi{false};
+        std::optional<CornerReport> failure_;
+        std::vector<CornerReport> breaks_;
+        std::vector<size_t> offsets;
+        std::vector<OutputType> segments_;
+        std::vector<VectorType> vertices_;
+
+        static ComputeType totalError(const std::vector<Approximation> &lines)
+        {
+            ComputeType s = 0;
+            for (const auto &l : lines)
+                s += l.errSquaredCompute() * l.count();
+            return s;
+        }
+
+        bool makePolylines(const std::vector<VectorType> &pts, const std::vector<Approximation> &lines, const std::vector<IndexType> &idx)
+        {
+            offsets.clear();
+            if (!multi)
+            {
+                offsets.push_back(0);
+                offsets.push_back(lines.size());
+                return polyline(pts, lines, idx);
+            }
+            const auto &starts = search.polylineStarts();
+            segments_.clear();
+            vertices_.clear();
+            for (size_t p = 0; p < starts.size(); ++p)
+            {
+                const size_t b = starts[p], e = p + 1 < starts.size() ? starts[p + 1] : lines.size();
+                const std::vector<Approximation> sub_lines(lines.begin() + static_cast<std::ptrdiff_t>(b), lines.begin() + static_cast<std::ptrdiff_t>(e));
+                const std::vector<IndexType> sub_idx(idx.begin() + static_cast<std::ptrdiff_t>(b), idx.begin() + static_cast<std::ptrdiff_t>(e));
+                if (!polyline(pts, sub_lines, sub_idx))
+                    return false;
+                const auto segs = polyline.lineSegments();
+                segments_.insert(segments_.end(), segs.begin(), segs.end());
+                vertices_.insert(vertices_.end(), polyline.vertices().begin(), polyline.vertices().end());
+                offsets.push_back(b);
+            }
+            offsets.push_back(lines.size());
+            return true;
+        }
+    };
+}
