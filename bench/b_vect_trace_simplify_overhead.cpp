@@ -1,8 +1,9 @@
 // Zero cost of the ITLS / Douglas-Peucker / Reumann-Witkam trace hooks when unused: the untraced API only, so the
 // same source compiles against the headers before tracing and after (bench/trace_overhead.sh compares both builds
 // in one run). Setting of bench/b_vect_2d.cpp: semicircle r = 8, noise 0.01, 1e5 points, sigma 0.03, epsilon 0.09.
-// Ratios are to a floor pass (x, y, x2, y2, xy sums) measured in the same run; segment counts let the two
-// builds' results be compared.
+// Ratios are to a floor pass (x, y, x2, y2, xy sums) measured in the same run. For bench/trace_overhead.sh it
+// prints `time_ns <case> <median ns per call>` and `check <case> <segments> <checksum>` (the results of both builds
+// must agree).
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -26,6 +27,16 @@ namespace
             pts.emplace_back(static_cast<float>(8 * std::cos(a) + nd(gen)), static_cast<float>(8 * std::sin(a) + nd(gen)));
         }
         return pts;
+    }
+
+    //! Sum of the segments' end coordinates: equal results give equal sums.
+    template<class Segments>
+    double checksum(const Segments &segs)
+    {
+        double s = 0;
+        for (const auto &g : segs)
+            s += static_cast<double>(g.beg().x()) + 2.0 * g.beg().y() + 3.0 * g.end().x() + 5.0 * g.end().y();
+        return s;
     }
 
     double floorPass(const std::vector<rtl::Vector2f> &pts)
@@ -58,18 +69,25 @@ int main(int argc, char **argv)
 
     double sink = 0;
     size_t s_itls = 0, s_dp = 0, s_rw = 0;
+    double c_itls = 0, c_dp = 0, c_rw = 0;
     bool ok = true;
     const double t_floor = rtl::bench::medianSeconds([&] { sink += floorPass(pts); }, opt.repetitions);
     rtl::bench::doNotOptimize(sink);
     const double t_itls = rtl::bench::medianSeconds([&] { ok &= itls(pts); s_itls = itls.indices().size(); }, opt.repetitions);
+    c_itls = checksum(itls.lineSegments());
     const double t_dp = rtl::bench::medianSeconds([&] { dp(pts, out); s_dp = out.size(); }, opt.repetitions);
+    c_dp = checksum(out);
     const double t_rw = rtl::bench::medianSeconds([&] { rw(pts, out); s_rw = out.size(); }, opt.repetitions);
+    c_rw = checksum(out);
 
     rtl::bench::printHeader(("untraced ITLS / DP / RW, 2D semicircle r=8, noise 0.01, " + std::to_string(n) + " points").c_str());
     rtl::bench::printRow("floor (x, y, x2, y2, xy pass)", n, t_floor, t_floor);
     rtl::bench::printRow("incremental TLS sigma 0.03", n, t_itls, t_floor, "segs=" + std::to_string(s_itls));
     rtl::bench::printRow("Douglas-Peucker eps 0.09", n, t_dp, t_floor, "segs=" + std::to_string(s_dp));
     rtl::bench::printRow("Reumann-Witkam eps 0.09", n, t_rw, t_floor, "segs=" + std::to_string(s_rw));
+    std::printf("time_ns floor %.0f\ntime_ns itls %.0f\ntime_ns dp %.0f\ntime_ns rw %.0f\n", t_floor * 1e9, t_itls * 1e9,
+                t_dp * 1e9, t_rw * 1e9);
+    std::printf("check itls %zu %.9e\ncheck dp %zu %.9e\ncheck rw %zu %.9e\n", s_itls, c_itls, s_dp, c_dp, s_rw, c_rw);
     if (!ok)
     {
         std::printf("!! the incremental vectorizer returned false\n");
