@@ -16,6 +16,7 @@
 #include "rtl/core/VectorND.h"
 #include "rtl/core/Matrix.h"
 #include "rtl/core/Quaternion.h"
+#include "rtl/tf/UnitDirection.h"
 
 namespace rtl
 {
@@ -150,10 +151,9 @@ namespace rtl
             using EV = typename VectorType::EigenType;
             using EM = typename MatrixType::EigenType;
             const Element eps = std::numeric_limits<Element>::epsilon();
-            const Element na = a.norm(), nb = b.norm();
-            if (!(na > Element(0)) || !(nb > Element(0)) || !std::isfinite(na) || !std::isfinite(nb))
+            EV u1, bh;   // unit directions, computed without overflow for elements near the type's limits
+            if (!tf_detail::unitDirection(a, u1) || !tf_detail::unitDirection(b, bh))
                 return EM::Identity();
-            const EV u1 = a / na, bh = b / nb;
             EV w = bh - u1.dot(bh) * u1;
             w -= u1.dot(w) * u1;                 // second Gram-Schmidt pass keeps u2 orthogonal to u1 for tiny angles
             Element nw = w.norm();
@@ -233,7 +233,14 @@ namespace rtl
 
         void setRot(const VectorType &v1, const VectorType &v2)
         {
-            const auto &a = v1.data(), &b = v2.data();
+            // Unit directions first: the cross and dot products of raw elements near 1e30 (float) overflow to inf
+            // and atan2(inf - inf, ...) is NaN.
+            typename VectorType::EigenType a, b;
+            if (!tf_detail::unitDirection(v1.data(), a) || !tf_detail::unitDirection(v2.data(), b))
+            {
+                setAngle(Element(0));
+                return;
+            }
             setAngle(std::atan2(a[0] * b[1] - a[1] * b[0], a.dot(b)));
         }
 
@@ -287,13 +294,14 @@ namespace rtl
         //! The shortest rotation taking v1's direction to v2's (zero vectors give the identity).
         void setRot(const VectorType &v1, const VectorType &v2)
         {
-            if (!(v1.data().squaredNorm() > Element(0)) || !(v2.data().squaredNorm() > Element(0)))
+            EigenVector a, b;   // (Eigen normalises through the squared norm, which overflows near the limits)
+            if (!tf_detail::unitDirection(v1.data(), a) || !tf_detail::unitDirection(v2.data(), b))
             {
                 setQuaternion(Eigen::Quaternion<Element>::Identity());
                 return;
             }
             Eigen::Quaternion<Element> q;
-            q.setFromTwoVectors(v1.data(), v2.data());
+            q.setFromTwoVectors(a, b);
             setQuaternion(q);
         }
 
@@ -322,11 +330,11 @@ namespace rtl
         void setAxis(const VectorND<3, Element> &axis) { setAngleAxis(rotAngle(), axis); }
         void setAngleAxis(Element angle, const VectorND<3, Element> &axis)
         {
-            const Element n = axis.data().norm();
-            if (!(n > Element(0)))
+            EigenVector unit;
+            if (!tf_detail::unitDirection(axis.data(), unit))
                 int_aa = Eigen::AngleAxis<Element>(Element(0), EigenVector::UnitX());
             else
-                int_aa = Eigen::AngleAxis<Element>(angle, EigenVector(axis.data() / n));
+                int_aa = Eigen::AngleAxis<Element>(angle, unit);
             // Eigen's formula gives exact 0/1 entries for axis-aligned axes (bounding boxes rely on it).
             this->int_rot_mat.data() = int_aa.toRotationMatrix();
         }
@@ -338,9 +346,9 @@ namespace rtl
 
         void setQuaternion(const Eigen::Quaternion<Element> &q)
         {
-            const Element n = q.norm();
-            const Eigen::Quaternion<Element> u = n > Element(0) ? Eigen::Quaternion<Element>(q.coeffs() / n)
-                                                                 : Eigen::Quaternion<Element>::Identity();
+            typename Eigen::Quaternion<Element>::Coefficients c;
+            const Eigen::Quaternion<Element> u = tf_detail::unitDirection(q.coeffs(), c) ? Eigen::Quaternion<Element>(c)
+                                                                                      : Eigen::Quaternion<Element>::Identity();
             this->int_rot_mat.data() = u.toRotationMatrix();
             int_aa = Eigen::AngleAxis<Element>(u);
         }

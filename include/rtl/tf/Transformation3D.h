@@ -11,6 +11,7 @@
 #include "rtl/core/Matrix.h"
 #include "rtl/core/Quaternion.h"
 #include "rtl/core/VectorND.h"
+#include "rtl/tf/UnitDirection.h"
 
 namespace rtl
 {
@@ -34,8 +35,8 @@ namespace rtl
         }
         Transformation3D(const Quaternion<Element> &quat, const VectorType &shift) : int_tr(shift.data())
         {
-            const Element n = quat.data().norm();
-            int_q = n > Element(0) ? EQ(quat.data().coeffs() / n) : EQ::Identity();
+            typename EQ::Coefficients c;
+            int_q = tf_detail::unitDirection(quat.data().coeffs(), c) ? EQ(c) : EQ::Identity();
         }
         //! Rx(roll) Ry(pitch) Rz(yaw), then `shift`.
         Transformation3D(ElementType roll, ElementType pitch, ElementType yaw, const VectorType &shift)
@@ -65,8 +66,8 @@ namespace rtl
         void setAxis(const VectorType &axis) { setAngleAxis(rotAngle(), axis); }
         void setAngleAxis(Element angle, const VectorType &axis)
         {
-            const Element n = axis.data().norm();
-            int_q = n > Element(0) ? EQ(Eigen::AngleAxis<Element>(angle, EV(axis.data() / n))) : EQ::Identity();
+            EV unit;
+            int_q = tf_detail::unitDirection(axis.data(), unit) ? EQ(Eigen::AngleAxis<Element>(angle, unit)) : EQ::Identity();
         }
         void setTranslation(const VectorType &shift) { int_tr = shift.data(); }
         void setTranslationX(Element x) { int_tr[0] = x; }
