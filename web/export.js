@@ -46,7 +46,7 @@ export function sceneDrawing(scene, e, pxPerMetre = 100) {
       case 'circle': lineList(polygon(it.x, it.y, it.r)); break;
       case 'strip': {
         const dx = it.x1 - it.x0, dy = it.y1 - it.y0, l = Math.hypot(dx, dy) || 1, nx = (-dy / l) * it.half, ny = (dx / l) * it.half;
-        const [a, b, c, d] = lineThrough(it.x0, it.y0, it.x1, it.y1, reach);
+        const [a, b, c, d] = it.bounded ? [it.x0, it.y0, it.x1, it.y1] : lineThrough(it.x0, it.y0, it.x1, it.y1, reach);
         line(a + nx, b + ny, c + nx, d + ny); line(a - nx, b - ny, c - nx, d - ny); line(a, b, c, d);
         break;
       }

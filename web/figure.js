@@ -15,7 +15,8 @@ export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2
 //   { type: 'segments', xy (x0,y0,x1,y1,...), colour?, width?, dash? }
 //   { type: 'polyline', xy, colour?, width?, dash? }
 //   { type: 'circle', x, y, r, colour?, fill?, dash? }     r in metres
-//   { type: 'strip', x0, y0, x1, y1, half, colour? }      the band of half-width `half` around the line through both
+//   { type: 'strip', x0, y0, x1, y1, half, colour?, bounded? } the band of half-width `half` around the line through
+//                                                         both points (bounded: only between them)
 //   { type: 'marker', x, y, colour?, size?, shape? }       a highlighted point (size in CSS px), shape 'ring' | 'dot' | 'x'
 //   { type: 'label', x, y, text, colour? }
 // and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
@@ -166,7 +167,8 @@ export class Figure {
       case 'strip': {
         const reach = (v.maxX - v.minX) + (v.maxY - v.minY);
         const dx = it.x1 - it.x0, dy = it.y1 - it.y0, l = Math.hypot(dx, dy) || 1, nx = -dy / l * it.half, ny = dx / l * it.half;
-        const [a, b, c, e] = lineThrough(it.x0, it.y0, it.x1, it.y1, reach);
+        // bounded: only between the two points (a DP chord); else the whole line (an RW strip runs ahead)
+        const [a, b, c, e] = it.bounded ? [it.x0, it.y0, it.x1, it.y1] : lineThrough(it.x0, it.y0, it.x1, it.y1, reach);
         ctx.fillStyle = (it.colour ?? INK.candidate) + '22';
         ctx.beginPath();
         ctx.moveTo(v.X(a + nx), v.Y(b + ny)); ctx.lineTo(v.X(c + nx), v.Y(e + ny));

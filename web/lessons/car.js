@@ -7,7 +7,7 @@ import { checkBounds, drawClusters, segFields } from './seg-common.js';
 import { m, note } from './ui.js';
 
 const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
-  why: 'The whole scan is segmented (the threshold depends on the beam count); the view starts where, at step 2, the wall breaks between beams 38 and 39. At step 3 point 40 also looks past 39, links to 38, and the wall becomes one cluster (6 clusters of 3+ points become 4).' };
+  why: 'The whole scan is segmented (the threshold depends on the beam count); the view shows a wall that, at step 2, breaks between beams 38 and 39: they are 0.132 m apart and the threshold there is the lower bound, 0.100 m. At step 3 the threshold grows with the step (0.135 m) and each point also looks two points back, so the wall stays one cluster (6 clusters of 3+ points become 4).' };
 
 // Labels after events 0..k: start{i} labels i as i, link{i, cluster} gives i j's label, merge{from, into}
 // relabels (the SegTrace.h replay).

@@ -52,7 +52,7 @@ export default {
         let html;
         if (e.kind === 'range') {
           const [ax, ay] = pt(chain, e.first), [bx, by] = pt(chain, e.last), [fx, fy] = pt(chain, e.farthest);
-          s.strip(ax, ay, bx, by, e.epsilon, { colour: e.split ? INK.fail : INK.ok });
+          s.strip(ax, ay, bx, by, e.epsilon, { colour: e.split ? INK.fail : INK.ok, bounded: true });
           s.segments([ax, ay, bx, by], { colour: INK.candidate, width: 2.5 });
           // the distance as a perpendicular from the farthest point to the chord's line
           const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy || 1, t = ((fx - ax) * dx + (fy - ay) * dy) / l2;

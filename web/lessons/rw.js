@@ -48,7 +48,9 @@ export default {
         const e = trace[k], { kept, strip } = replay(trace, k);
         if (strip) {
           const [ax, ay] = pt(chain, strip.key), [bx, by] = pt(chain, strip.through);
-          s.strip(ax, ay, bx, by, strip.epsilon, { colour: INK.candidate });
+          // the strip runs from the key point ahead, through the next point
+          const l = Math.hypot(bx - ax, by - ay) || 1, far = 1000;
+          s.strip(ax, ay, ax + ((bx - ax) / l) * far, ay + ((by - ay) / l) * far, strip.epsilon, { colour: INK.candidate, bounded: true });
           s.marker(ax, ay, { colour: INK.candidate, size: 8 });
         }
         s.polyline(kept.flatMap((i) => pt(chain, i)), { colour: INK.segment, width: 2 });
