@@ -131,6 +131,21 @@ export class Figure {
     this.drawScale();
     for (const item of this.scene.items) this.drawItem(item);
     if (this.scene.inset) this.drawInset(this.scene.inset);
+    this.drawTitle();
+  }
+
+  // The scene's title on top, as in the exported SVG/TikZ (shortened with an ellipsis when it does not fit).
+  drawTitle() {
+    const { ctx } = this, v = this.view, d = v.dpr, t = this.scene.title;
+    if (!t) return;
+    ctx.font = `${12 * d}px system-ui, sans-serif`;
+    let text = t;
+    while (text.length > 8 && ctx.measureText(text).width > v.W - 16 * d) text = text.slice(0, -2);
+    if (text !== t) text = text.slice(0, -1) + '…';
+    ctx.fillStyle = 'rgba(255,255,255,0.85)';
+    ctx.fillRect(0, 0, Math.min(v.W, ctx.measureText(text).width + 16 * d), 20 * d);
+    ctx.fillStyle = '#1c2330';
+    ctx.fillText(text, 8 * d, 14 * d);
   }
 
   drawItem(it) {
@@ -219,7 +234,7 @@ export class Figure {
   // A small chart in the top right corner: values against their index, with a horizontal limit line.
   drawInset(ch) {
     const { ctx } = this, v = this.view, d = v.dpr;
-    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35), x0 = v.W - w - 8 * d, y0 = 8 * d;
+    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35), x0 = v.W - w - 8 * d, y0 = 26 * d;
     ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * d;
     ctx.fillRect(x0, y0, w, h); ctx.strokeRect(x0, y0, w, h);
     ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330';

@@ -40,7 +40,7 @@ export function traced(call, what) {
   const trace = Array.isArray(result.trace) ? result.trace : result;
   return Array.isArray(trace) ? { trace, missing: null } : { trace: [], missing: missingText(what) };
 }
-const missingText = (what) => `This build of rtl-wasm does not record ${what} traces yet (run "npm run build" with a newer checkout): the figure shows the untraced result only.`;
+const missingText = (what) => `No step-by-step trace: this build of rtl-wasm does not record ${what} traces yet (a newer "npm run build" will). The figure shows the result.`;
 
 // Point i of an interleaved chain.
 export const pt = (xy, i) => [xy[2 * i], xy[2 * i + 1]];
@@ -55,7 +55,7 @@ export const sameArrays = (a, b) => a.length === b.length && a.every((v, i) => v
 export function explainNoSteps(host, missing) {
   host.text.innerHTML = '';
   const p = document.createElement('p');
-  p.className = 'fail';
+  p.className = missing ? 'why' : 'fail';
   p.textContent = missing ?? 'Fix the marked parameter to see the steps.';
   host.text.append(p);
 }

@@ -14,11 +14,13 @@ const fmtField = (k, v) => (typeof v === 'boolean' ? `${k} ${v ? 'yes' : 'no'}` 
 
 // What the figure marks for a failure or a break: the boundary point, δ around it, and the text with the fix.
 export function failureText(f, kind) {
-  const over = f.crossingDistance > f.delta;
-  return `<p class="fail">${kind === 'break' ? 'Split' : 'Failed'} at the corner before point ${f.boundary}: the two neighbouring lines cross ` +
-    `${Number.isFinite(f.crossingDistance) ? `${m(f.crossingDistance, 2)} from the boundary point` : 'nowhere (they are parallel)'}, δ = ${m(f.delta, 2)}.</p>` +
-    `<p class="fix">Fix: ${Number.isFinite(f.crossingDistance) && over ? `raise δ above ${m(f.crossingDistance, 2)}, or ` : ''}` +
-    `${kind === 'break' ? 'keep the split there (this is split mode)' : 'split the polyline there (tick "split where a corner fails")'}; a smaller σ can also move the boundary.</p>`;
+  const finite = Number.isFinite(f.crossingDistance), over = finite && f.crossingDistance > f.delta;
+  const raise = finite ? Math.ceil((f.crossingDistance + 0.005) * 100) / 100 : null;
+  return `<p class="fail">${kind === 'break' ? 'Split' : 'Failed'} at the corner between points ${f.boundary - 1} and ${f.boundary}: the lines fitted on either side cross ` +
+    `${finite ? `${m(f.crossingDistance, 2)} from that boundary (red circle)` : 'nowhere (they are parallel)'}, but δ = ${m(f.delta, 2)} (green circle).</p>` +
+    `<p class="fix">Fix: ${over && raise <= 2 ? `<button type="button" class="small" data-fix="delta" data-value="${raise}">raise δ to ${raise.toFixed(2)} m</button> or ` : ''}` +
+    (kind === 'break' ? 'keep the split there (split mode is on).' : '<button type="button" class="small" data-fix="split">split the polyline there</button>.') +
+    ' A different σ also moves the boundary.</p>';
 }
 
 export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = () => ({}) }) {
@@ -44,8 +46,16 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
 
       const drawResult = (s, res) => {
         s.segments(res.segments, { colour: INK.segment, width: 2.5 });
-        for (const b of res.breaks ?? []) { s.circle(...pt(chain, b.boundary), b.delta, { colour: INK.fail, dash: true }); s.marker(...pt(chain, b.boundary), { colour: INK.fail, shape: 'x' }); }
-        if (res.failure) { s.circle(...pt(chain, res.failure.boundary), res.failure.delta, { colour: INK.fail, dash: true }); s.marker(...pt(chain, res.failure.boundary), { colour: INK.fail, shape: 'x', size: 9 }); }
+        // a failed corner: δ around the boundary point (allowed) and the circle on which the crossing lies
+        // (the package measures the crossing from the midpoint of points boundary - 1 and boundary)
+        const corner = (f) => {
+          const [ax, ay] = pt(chain, Math.max(0, f.boundary - 1)), [bx, by] = pt(chain, f.boundary), c = [(ax + bx) / 2, (ay + by) / 2];
+          s.circle(...c, f.delta, { colour: INK.ok, dash: true });
+          if (Number.isFinite(f.crossingDistance)) s.circle(...c, f.crossingDistance, { colour: INK.fail, dash: true });
+          s.marker(...c, { colour: INK.fail, shape: 'x', size: 9 });
+        };
+        for (const b of res.breaks ?? []) corner(b);
+        if (res.failure) corner(res.failure);
       };
       const resultText = (res) => {
         let html = res.ok ? `<p>${res.count} segments${res.polylineOffsets && res.polylineOffsets.length > 2 ? ` in ${res.polylineOffsets.length - 1} polylines` : ''}, RMS ${Array.from(res.rms).map((r) => mm(r)).join(', ')}.</p>` : '<p class="fail">The vectorizer reports failure: no segments for this cluster.</p>';
@@ -55,6 +65,13 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
         return html;
       };
 
+      const onFix = (ev) => {
+        const b = ev.target.closest('[data-fix]');
+        if (!b) return;
+        if (b.dataset.fix === 'delta') fields.delta.set(Number(b.dataset.value)); else split.checked = true;
+        host.onParamsChanged();
+      };
+      host.text.addEventListener('click', onFix);
       return {
         recompute() {
           params = readParams(fields, ({ sigma, delta }) => {
@@ -103,7 +120,7 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
           return { method, chain: Array.from(chain), params: params && { ...params, split: split.checked }, step: this.step ?? -1, steps: trace.length,
             untraced: untraced && { ok: untraced.ok, count: untraced.count, indices: Array.from(untraced.indices), segments: Array.from(untraced.segments), failure: untraced.failure ?? null, breaks: untraced.breaks ?? [] } };
         },
-        dispose() {},
+        dispose() { host.text.removeEventListener('click', onFix); },
       };
     },
   };
