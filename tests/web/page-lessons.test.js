@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { SCREENSHOTS as SHOTS, lastStep, openDemoPage, openLesson, streamClusters } from './helpers.js';
+import { PAGE_TIMEOUT, SCREENSHOTS as SHOTS, lastStep, openDemoPage, openLesson, streamClusters } from './helpers.js';
 const TRACE_LESSONS = ['car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw'];
 
 // The same call the lesson makes, in Node, traced and untraced.
@@ -80,6 +80,27 @@ describe('lesson page: traces, final states, screenshots', { timeout: 300000 }, 
       assert.match(await page.textContent('#lesson-text'), /Done|segments|failure|Failed/);
     });
   }
+
+  test('why a cluster fails: FTLS strict mode at δ = 0.05 m names the corner and the package\'s numbers, and the fix works', async () => {
+    await openLesson(page, 'ftls');
+    const rev = await page.evaluate(() => window.__rtl.revision);
+    await page.evaluate(() => { const i = document.querySelector('#lesson-controls input[name="delta"]'); i.value = '0.05'; i.dispatchEvent(new Event('input')); });
+    await page.waitForFunction((r) => window.__rtl.revision > r && window.__rtl.finalState().params?.delta === 0.05, rev, { timeout: PAGE_TIMEOUT });
+    const s = await page.evaluate(() => window.__rtl.finalState());
+    const v = rtl.vectorize(new Float64Array(s.chain), { method: 'ftls', sigma: 0.03, delta: 0.05, split: false });
+    assert.equal(v.ok, false, 'the excerpt fails at δ = 0.05 m');
+    assert.ok(v.failure && v.failure.crossingDistance > 0.05);
+    assert.deepEqual(s.untraced.failure && [s.untraced.failure.boundary, s.untraced.failure.crossingDistance], [v.failure.boundary, v.failure.crossingDistance]);
+    const text = await page.textContent('#lesson-text');
+    assert.ok(text.includes(`corner between points ${v.failure.boundary - 1} and ${v.failure.boundary}`), text);
+    assert.ok(text.includes(`cross ${v.failure.crossingDistance.toFixed(2)} m from that boundary`), text);
+    assert.ok(text.includes('δ = 0.05 m'), text);
+    await page.click('#lesson-text [data-fix="delta"]');
+    await page.waitForFunction(() => window.__rtl.finalState().params.delta > 0.05, null, { timeout: PAGE_TIMEOUT });
+    const fixed = await page.evaluate(() => window.__rtl.finalState());
+    assert.ok(fixed.params.delta > v.failure.crossingDistance);
+    assert.equal(fixed.untraced.ok, rtl.vectorize(new Float64Array(s.chain), { method: 'ftls', sigma: 0.03, delta: fixed.params.delta, split: false }).ok);
+  });
 
   test('screenshots of every lesson at 1280x800 and 390x844', async () => {
     const ids = await page.evaluate(() => window.__rtl.lessons.map((l) => l.id));
