@@ -27,7 +27,7 @@ test('10,000,000 points: fitLine, segment, vectorize (dp) with memory growth', {
     near(f.rms, 0.01, 1e-6, 'rms');
     assert.ok(rtl.memoryBytes() > 16 * n && mem0 < 16 * n, `memory grew (${mem0} -> ${rtl.memoryBytes()})`);
 
-    const s = rtl.segment(xy, { step: 1, lowerBound: 0.1, upperBound: 0.5 });
+    const s = rtl.segment(xy, { step: 2, lowerBound: 0.1, upperBound: 0.5 });
     assert.equal(s.labels.length, n);
     assert.equal(s.clusters.length, 10_000);
     for (const k of [0, 1, 4999, 9999]) assert.deepEqual(Array.from(s.clusters[k].ranges), [1000 * k, 1000 * k + 1000], `cluster ${k}`);

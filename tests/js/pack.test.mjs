@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -15,8 +15,8 @@ test('npm pack -> npm install into an empty folder -> import and require work', 
   try {
     const out = JSON.parse(npm(['pack', '--json', '--pack-destination', dir], ROOT));
     const files = out[0].files.map((f) => f.path);
-    for (const f of ['package.json', 'dist/index.mjs', 'dist/index.node.mjs', 'dist/index.cjs', 'dist/index.d.ts',
-      'dist/rtl.wasm', 'dist/rtl.mjs', 'dist/rtl.cjs', 'dist/api.mjs', 'dist/api.cjs']) {
+    for (const f of ['package.json', 'LICENSE', 'dist/NOTICE.md', 'dist/index.mjs', 'dist/index.node.mjs', 'dist/index.cjs',
+      'dist/index.d.ts', 'dist/index.d.cts', 'dist/rtl.wasm', 'dist/rtl.mjs', 'dist/rtl.cjs', 'dist/api.mjs', 'dist/api.cjs']) {
       assert.ok(files.includes(f), `tarball contains ${f}`);
     }
     assert.ok(!files.some((f) => f.startsWith('wasm/') || f.startsWith('tests/') || f.startsWith('include/')),
@@ -26,6 +26,11 @@ test('npm pack -> npm install into an empty folder -> import and require work', 
     writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', version: '1.0.0', private: true }));
     npm(['install', '--no-audit', '--no-fund', '--offline', join(dir, out[0].filename)], app);
     assert.ok(readdirSync(join(app, 'node_modules', 'rtl-wasm', 'dist')).includes('rtl.wasm'));
+    const installed = join(app, 'node_modules', 'rtl-wasm');
+    assert.match(readFileSync(join(installed, 'LICENSE'), 'utf8'), /^MIT License\n/);
+    const notice = readFileSync(join(installed, 'dist', 'NOTICE.md'), 'utf8');
+    for (const s of ['Intel Research Lab', 'MIT CSAIL', 'Radish', 'Schaefer et al., IROS 2018', 'RELLIS-3D', 'Jiang et al., 2021'])
+      assert.ok(notice.includes(s), `NOTICE.md attributes ${s}`);
     writeFileSync(join(app, 'esm.mjs'), `import init from 'rtl-wasm';
       const r = await init(); const f = r.fitLine(new Float64Array([0, 2, 1, 2, 5, 2]));
       console.log(JSON.stringify({ n: Array.from(f.normal), c: f.offset, v: r.version }));

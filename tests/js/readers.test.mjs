@@ -68,7 +68,7 @@ const ERRORS = [
   ['beams 2.5', () => rtl.readOrganizedLidar(bin, { beams: 2.5 }), RangeError, /option beams must be an integer/],
   ['bad layout', () => rtl.readOrganizedLidar(bin, { beams: 4, layout: 'column' }), RangeError, /layout must be 'column-major' or 'row-major'/],
   ['truncated record', () => rtl.readOrganizedLidar(bin.subarray(0, 16 * 8 + 5), { beams: 4 }), RangeError,
-    /organised LiDAR: truncated record at byte offset 128 \(133 bytes is not a multiple of 16\)/],
+    /^readOrganizedLidar: truncated record at byte offset 128 \(133 bytes is not a multiple of 16\)/],
   ['incomplete column', () => rtl.readOrganizedLidar(bin.subarray(0, 16 * 10), { beams: 4 }), RangeError,
     /incomplete column at byte offset 128 \(10 records is not a multiple of 4 beams\)/],
   ['ring out of range', () => rtl.readOrganizedLidar(bin, { beams: 4 }).ring(4), RangeError, /ring: beam must be an integer in \[0, 3\], got 4/],
@@ -143,7 +143,7 @@ test('readCarmenLog: intel (180 beams) and csail (361 beams) against an independ
 
 const CARMEN_ERRORS = [
   ['not text', () => rtl.readCarmenLog(42), TypeError, /readCarmenLog: text must be a string, an ArrayBuffer or a typed array/],
-  ['bad number', () => rtl.readCarmenLog('# c\nFLASER 2 1.0 x1 0 0 0 0 0 0 1 h 2\n'), RangeError, /CARMEN log, line 2: bad range 2 'x1'/],
+  ['bad number', () => rtl.readCarmenLog('# c\nFLASER 2 1.0 x1 0 0 0 0 0 0 1 h 2\n'), RangeError, /^readCarmenLog: line 2: bad range 2 'x1'/],
   ['short line', () => rtl.readCarmenLog('FLASER 3 1 2 3 0 0\n'), RangeError, /line 1: FLASER with 3 beams needs 14 fields, found 7/],
   ['bad beam count', () => rtl.readCarmenLog('FLASER -2 1\n'), RangeError, /line 1: bad beam count '-2'/],
   ['unknown record', () => rtl.readCarmenLog('ODOM 1 2 3\nhello world\n'), RangeError, /line 2: unknown record 'hello'/],

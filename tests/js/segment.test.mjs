@@ -51,22 +51,34 @@ test('segment: a cluster across the seam starts with its end-of-scan part; 3D wo
 });
 
 test('segment: thresholds follow the options (adaptive bound, origin)', () => {
-  // Two returns 0.3 apart at range 20 in a 360-beam scan (the rest gaps): with step 1 the adaptive threshold is
-  // 2pi/360 * 20 = 0.349, clamped to [lowerBound, upperBound].
+  // Two returns 0.3 apart at range 20 in a 360-beam scan (the rest gaps): at step 2 the adaptive threshold is
+  // 2 * 2pi/360 * 20 = 0.698, clamped to [lowerBound, upperBound].
   const pts = new Float64Array(720).fill(NaN);
   pts.set([20, 0, 20, 0.3]);
-  const clusters = (o) => rtl.segment(pts, { step: 1, ...o }).clusters.length;
+  const clusters = (o) => rtl.segment(pts, { step: 2, ...o }).clusters.length;
   assert.equal(clusters({ lowerBound: 0.1, upperBound: 0.5 }), 1);
   assert.equal(clusters({ lowerBound: 0.1, upperBound: 0.2 }), 2);
   assert.equal(clusters({ lowerBound: 0.1, upperBound: Infinity }), 1);
   assert.equal(clusters({ lowerBound: 0.31, upperBound: 0.31 }), 1);
+  assert.equal(clusters({ lowerBound: 0.29, upperBound: 0.29 }), 2);
   // Origin next to the points: the adaptive part vanishes, the lower bound 0.1 decides -> split.
   assert.equal(clusters({ lowerBound: 0.1, upperBound: 0.5, origin: [20, 0.15] }), 2);
-  // step 3 on 360 beams: threshold 3 * 0.349 -> upper bound 0.5 -> joined even with a 0.45 gap.
-  pts.set([20, 0, 20, 0.45]);
-  assert.equal(rtl.segment(pts, { step: 3, lowerBound: 0.1, upperBound: 0.5 }).clusters.length, 1);
+  // Step 1 threshold 0.349 would join them, but step 1 compares no previous point: one cluster per point.
+  assert.equal(rtl.segment(pts, { step: 1, lowerBound: 0.1, upperBound: 0.5 }).clusters.length, 2);
   assert.deepEqual(rtl.segment([], {}).clusters, []);
   assert.deepEqual(Array.from(rtl.segment([NaN, NaN, NaN, 1]).labels), [-1, -1]);
+});
+
+test('segment: step s compares each point with up to s - 1 previous points; the default step 2 links neighbours', () => {
+  // Points 0.05 apart along x at range ~10 in a 360-beam scan, with gaps (NaN) at 3 and at 6, 7.
+  const pts = new Float64Array(720).fill(NaN);
+  for (const i of [0, 1, 2, 4, 5, 8, 9]) pts.set([10 + 0.05 * i, 0], 2 * i);
+  const runs = (o) => rtl.segment(pts, { lowerBound: 0.1, upperBound: 0.5, ...o }).clusters.map((c) => Array.from(c.indices));
+  assert.deepEqual(runs({}), [[0, 1, 2], [4, 5], [8, 9]], 'default: consecutive points linked, a one-beam gap splits');
+  assert.deepEqual(runs({ step: 2 }), runs({}), 'the default is step 2');
+  assert.deepEqual(runs({ step: 1 }), [[0], [1], [2], [4], [5], [8], [9]], 'step 1 links nothing');
+  assert.deepEqual(runs({ step: 3 }), [[0, 1, 2, 4, 5], [8, 9]], 'step 3 reaches across one gap, not two');
+  assert.deepEqual(runs({ step: 4 }), [[0, 1, 2, 4, 5, 8, 9]], 'step 4 reaches across two');
 });
 
 // FLASER lines of a CARMEN log -> points (beam i at -pi/2 + i*res), max-range beams as NaN.
@@ -88,18 +100,19 @@ function carmenScans(name) {
 
 test('segment: real scans (intel, csail): every return in one cluster, complete merging, no close pair split', () => {
   for (const name of ['intel.log', 'csail.log']) {
-    for (const xy of carmenScans(name)) {
-      const n = xy.length / 2, step = 3, lower = 0.1, upper = 0.5;
+    for (const [xy, step] of carmenScans(name).flatMap((scan) => [[scan, 2], [scan, 3]])) {
+      const n = xy.length / 2, lower = 0.1, upper = 0.5;
       const s = rtl.segment(xy, { step, lowerBound: lower, upperBound: upper });
       const seen = new Uint8Array(n);
       s.clusters.forEach((c, k) => { for (const i of c.indices) { assert.equal(s.labels[i], k); seen[i]++; } });
       for (let i = 0; i < n; i++) assert.equal(seen[i], Number.isNaN(xy[2 * i]) ? 0 : 1, `${name}: point ${i} in exactly one cluster`);
-      // The criterion (same formula as the C++ header): i joins j = i-k (k <= step, cyclic) if |pi-pj|^2 <= t(pi)^2.
+      // The criterion (same formula as the C++ header): i joins j = i-k (k <= step - 1, cyclic) if
+      // |pi-pj|^2 <= t(pi)^2 with t(pi) = clamp(step * 2pi/N * |pi|, lower, upper).
       const scaling = step * 2 * Math.PI / n;
       for (let i = 0; i < n; i++) {
         if (Number.isNaN(xy[2 * i])) continue;
         const t = Math.min(Math.max(scaling * Math.hypot(xy[2 * i], xy[2 * i + 1]), lower), upper);
-        for (let k = 1; k <= step; k++) {
+        for (let k = 1; k < step; k++) {
           const j = (i - k + n) % n;
           if (Number.isNaN(xy[2 * j])) continue;
           const d2 = (xy[2 * i] - xy[2 * j]) ** 2 + (xy[2 * i + 1] - xy[2 * j + 1]) ** 2;
@@ -157,11 +170,13 @@ test('StreamSegmenter: a stream of arcs closes clusters in order; flush closes t
   s.dispose();  // idempotent
 });
 
-test('StreamSegmenter: same clusters as segment() on real scans when scaling = step * 2pi / N (away from the seam)', () => {
+// IA's window holds `step` points, CAR's step - 1: IA step s is CAR step s + 1 with the threshold scaling of CAR
+// step s + 1, (s + 1) * 2pi / N.
+test('StreamSegmenter: same clusters as segment() at step + 1 on real scans, scaling (step + 1) * 2pi / N (away from the seam)', () => {
   const xy = carmenScans('intel.log')[5];
   const n = xy.length / 2, step = 3;
-  const batch = rtl.segment(xy, { step, lowerBound: 0.1, upperBound: 0.5 });
-  const s = new rtl.StreamSegmenter({ step, lowerBound: 0.1, upperBound: 0.5, scaling: step * 2 * Math.PI / n });
+  const batch = rtl.segment(xy, { step: step + 1, lowerBound: 0.1, upperBound: 0.5 });
+  const s = new rtl.StreamSegmenter({ step, lowerBound: 0.1, upperBound: 0.5, scaling: (step + 1) * 2 * Math.PI / n });
   s.addPoints(xy);
   s.flush();
   const stream = s.takeClosedClusters().map((c) => Array.from(c).join(',')).sort();

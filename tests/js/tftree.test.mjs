@@ -89,7 +89,7 @@ test('TfTree errors on a live tree, which keeps working', () => {
   throwsWith(() => t.insert('a', 'r', { quaternion: [1, 0, 0, 0], angle: 1, axis: [1, 0, 0] }), TypeError, /either quaternion or angle \+ axis/);
   throwsWith(() => t.insert('a', 'r', { rotation: 1 }), TypeError, /unknown option "rotation"/);
   throwsWith(() => t.insert(5, 'r', {}), TypeError, /TfTree\.insert: name must be a string/);
-  throwsWith(() => t.tf('r', 'nope'), RangeError, /TfTree: unknown frame 'nope'/);
+  throwsWith(() => t.tf('r', 'nope'), RangeError, /^TfTree\.tf: unknown frame 'nope'$/);
   throwsWith(() => t.transformPoints('r', 'r', [1, 2]), RangeError, /TfTree\.transformPoints: points has 2 numbers, not a multiple of dim 3/);
   throwsWith(() => t.transformPoints('r', 'r', [1, 2, Infinity]), RangeError, /non-finite coordinate \(Infinity\)/);
   assert.equal(t.insert('a', 'r', { translation: [1, 2, 3] }), true);

@@ -1,27 +1,67 @@
-// TypeScript: the hand-written dist/index.d.ts type-checks a consumer (tests/ts-consumer, ESM and CJS) with
-// tsc --noEmit in strict mode, and declares every member the runtime module has.
+// TypeScript: the hand-written dist/index.d.ts and its CommonJS twin dist/index.d.cts type-check an ESM and a
+// CommonJS consumer (tests/ts-consumer) with tsc --noEmit in strict mode; the CommonJS one (`import init =
+// require('rtl-wasm'); init()`) also compiles and runs; both declare every member the runtime module has.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, rmSync } from 'node:fs';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import init from 'rtl-wasm';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
-
-test('tsc --noEmit on tests/ts-consumer passes (strict, nodenext, @ts-expect-error on misuse)', { timeout: 120_000 }, () => {
-  const tsc = fileURLToPath(new URL('../../node_modules/typescript/bin/tsc', import.meta.url));
+const tsc = fileURLToPath(new URL('../../node_modules/typescript/bin/tsc', import.meta.url));
+const runTsc = (args) => {
   try {
-    execFileSync(process.execPath, [tsc, '-p', 'tests/ts-consumer'], { cwd: ROOT, encoding: 'utf8', stdio: 'pipe' });
+    execFileSync(process.execPath, [tsc, ...args], { cwd: ROOT, encoding: 'utf8', stdio: 'pipe' });
   } catch (e) {
-    assert.fail(`tsc failed:\n${e.stdout}${e.stderr}`);
+    assert.fail(`tsc ${args.join(' ')} failed:\n${e.stdout}${e.stderr}`);
+  }
+};
+
+test('tsc --noEmit on tests/ts-consumer passes (ESM and CommonJS, strict, nodenext, @ts-expect-error on misuse)', { timeout: 120_000 }, () => {
+  runTsc(['-p', 'tests/ts-consumer']);
+});
+
+test('the CommonJS consumer compiled by tsc runs: import init = require(...); init()', { timeout: 120_000 }, () => {
+  // Inside the repository, so that require('rtl-wasm') resolves to this package (self-reference).
+  const out = join(ROOT, 'build', 'wasm', 'ts-consumer-run');
+  rmSync(out, { recursive: true, force: true });
+  mkdirSync(out, { recursive: true });
+  try {
+    runTsc(['-p', 'tests/ts-consumer', '--noEmit', 'false', '--outDir', out]);
+    const r = JSON.parse(execFileSync(process.execPath, ['-e',
+      `require(${JSON.stringify(join(out, 'consumer-cjs.cjs'))})().then((r) => console.log(JSON.stringify(r)))`],
+    { cwd: ROOT, encoding: 'utf8' }));
+    const pkg = JSON.parse(readFileSync(join(ROOT, 'package.json'), 'utf8'));
+    assert.equal(r.version, pkg.version);
+    assert.equal(r.count, 1, 'dp on 4 collinear points: one segment');
+    assert.equal(r.same, true);
+    // TLS RMS of (0,0) (1,1) (2,2.02): the square root of the smaller eigenvalue of the covariance matrix.
+    const xs = [0, 1, 2], ys = [0, 1, 2.02], mx = 1, my = 3.02 / 3;
+    const sxx = xs.reduce((a, x) => a + (x - mx) ** 2, 0) / 3, syy = ys.reduce((a, y) => a + (y - my) ** 2, 0) / 3;
+    const sxy = xs.reduce((a, x, i) => a + (x - mx) * (ys[i] - my), 0) / 3;
+    const lmin = (sxx + syy) / 2 - Math.sqrt(((sxx - syy) / 2) ** 2 + sxy ** 2);
+    assert.ok(Math.abs(r.rms - Math.sqrt(lmin)) < 1e-12, `rms ${r.rms} vs ${Math.sqrt(lmin)}`);
+  } finally {
+    rmSync(out, { recursive: true, force: true });
   }
 });
 
-test('index.d.ts declares every member of the runtime module', async () => {
-  const dts = readFileSync(new URL('../../dist/index.d.ts', import.meta.url), 'utf8');
-  const body = dts.slice(dts.indexOf('export interface RTL {'));
-  const declared = new Set([...body.matchAll(/^ {2}(?:readonly )?([A-Za-z]+)[(:?]/gm)].map((m) => m[1]));
-  const rtl = await init();
-  for (const k of Object.keys(rtl)) assert.ok(declared.has(k), `${k} is declared in interface RTL`);
+test('package.json types conditions point at the ESM and the CommonJS declarations', () => {
+  const pkg = JSON.parse(readFileSync(join(ROOT, 'package.json'), 'utf8'));
+  assert.equal(pkg.exports['.'].import.types, './dist/index.d.ts');
+  assert.equal(pkg.exports['.'].require.types, './dist/index.d.cts');
+  const cts = readFileSync(join(ROOT, 'dist', 'index.d.cts'), 'utf8');
+  assert.match(cts, /^export = init;$/m);
 });
+
+for (const file of ['index.d.ts', 'index.d.cts']) {
+  test(`${file} declares every member of the runtime module`, async () => {
+    const dts = readFileSync(new URL(`../../dist/${file}`, import.meta.url), 'utf8');
+    const body = dts.slice(dts.indexOf('export interface RTL {'));
+    const declared = new Set([...body.matchAll(/^ *(?:readonly )?([A-Za-z]+)[(:?]/gm)].map((m) => m[1]));
+    const rtl = await init();
+    for (const k of Object.keys(rtl)) assert.ok(declared.has(k), `${k} is declared in interface RTL`);
+  });
+}

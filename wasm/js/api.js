@@ -89,11 +89,16 @@ function boundsOptions(o, fn, lowerDefault, upperDefault) {
 
 
 const ERRORS = { TypeError, RangeError, Error };
+const MAX_MEMORY = 2 ** 31;  // -sMAXIMUM_MEMORY of wasm/CMakeLists.txt
 const DISPOSE = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
 // The C++ side returns {error, kind} instead of throwing (an exception crossing into JS leaks the wasm stack).
-function check(r) {
-  if (r !== null && typeof r === 'object' && typeof r.error === 'string') throw new (ERRORS[r.kind] || Error)(r.error);
+// Every message starts with the name of the function the caller called (fn).
+function check(r, fn) {
+  if (r !== null && typeof r === 'object' && typeof r.error === 'string') {
+    const msg = r.error.startsWith(`${fn}:`) ? r.error : `${fn}: ${r.error}`;
+    throw new (ERRORS[r.kind] || Error)(msg);
+  }
   return r;
 }
 
@@ -299,12 +304,12 @@ function wrap(m) {
   // Copies `arrays` (Float64Array or Uint8Array) into the wasm heap, calls f(ptr0, len0, ptr1, len1, ...) with lengths
   // in elements, frees them again. HEAP* views are read after every _malloc: memory growth replaces the buffer and
   // detaches older views.
-  function withHeap(arrays, f) {
+  function withHeap(fn, arrays, f) {
     const ptrs = [];
     try {
       for (const a of arrays) {
         const p = m._malloc(Math.max(8, a.byteLength));
-        if (!p) throw new RangeError(`out of wasm memory allocating ${a.byteLength} bytes`);
+        if (!p) throw new RangeError(`${fn}: out of wasm memory allocating ${a.byteLength} bytes`);
         ptrs.push(p);
       }
       const args = [];
@@ -313,7 +318,7 @@ function wrap(m) {
         else m.HEAPU8.set(a, ptrs[i]);
         args.push(ptrs[i], a.length);
       });
-      return check(f(...args));
+      return check(f(...args), fn);
     } finally {
       for (const p of ptrs) m._free(p);
     }
@@ -324,18 +329,19 @@ function wrap(m) {
     const o = options(opts, fn, ['dim']);
     const dim = dimOption(o, fn);
     const xy = toF64(points, fn, 'points');
-    return withHeap([xy], (p, n) => m.fitLine(p, n, dim));
+    return withHeap(fn, [xy], (p, n) => m.fitLine(p, n, dim));
   }
 
   function segment(points, opts) {
     const fn = 'segment';
     const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin']);
     const dim = dimOption(o, fn);
-    const step = num(o, 'step', fn, 3, { min: 1, integer: true, max: 2 ** 31 });
+    // Default 2: CAR compares each point with up to step - 1 previous points, so 2 links consecutive points.
+    const step = num(o, 'step', fn, 2, { min: 1, integer: true, max: 2 ** 31 });
     const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
-    const r = withHeap([xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2]));
+    const r = withHeap(fn, [xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2]));
     lastComputeMs = r.computeMs;
     const clusters = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
@@ -364,11 +370,12 @@ function wrap(m) {
     const sigma = num(o, 'sigma', fn, 0.03, { min: 0, exclusiveMin: true });
     const delta = num(o, 'delta', fn, 0.3, { min: 0, exclusiveMin: true });
     const epsilon = num(o, 'epsilon', fn, 0.09, { min: 0, exclusiveMin: true });
-    const maxSize = num(o, 'maxSize', fn, 0, { min: 0, integer: true, max: 2 ** 32 - 1 });
+    // maxSize is a reservation hint: 2 GB of wasm memory (the module's maximum) cannot hold more points than this.
+    const maxSize = num(o, 'maxSize', fn, 0, { min: 0, integer: true, max: Math.floor(MAX_MEMORY / (8 * dim)) });
     const simplexShift = num(o, 'simplexShift', fn, 1, { min: 1, integer: true, max: 2 ** 32 - 1 });
     const maxIterations = num(o, 'maxIterations', fn, 10000, { min: 1, integer: true, max: 2 ** 32 - 1 });
     const xyz = toF64(points, fn, 'points');
-    const r = withHeap([xyz], (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
+    const r = withHeap(fn, [xyz], (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
       sigma, delta, epsilon, maxSize, simplexShift, maxIterations));
     lastComputeMs = r.computeMs;
     const polygons = [];
@@ -400,7 +407,7 @@ function wrap(m) {
       const step = num(o, 'step', fn, 3, { min: 1, integer: true, max: 1 << 24 });
       const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
       const scaling = num(o, 'scaling', fn, 0.05, { min: 0 });
-      const h = check(m.streamCreate(this.#dim, step, lower, upper, scaling));
+      const h = check(m.streamCreate(this.#dim, step, lower, upper, scaling), fn);
       this.#h = h;
       registry?.register(this, () => m.streamDestroy(h), this);
     }
@@ -415,13 +422,13 @@ function wrap(m) {
       const h = this.#handle('addPoints');
       const o = originOption(origin === undefined ? {} : { origin }, fn, this.#dim);
       const xyz = toF64(points, fn, 'points');
-      withHeap([xyz], (p, n) => m.streamAdd(h, p, n, this.#dim, o[0], o[1], o[2]));
+      withHeap(fn, [xyz], (p, n) => m.streamAdd(h, p, n, this.#dim, o[0], o[1], o[2]));
     }
     get closedClustersAvailable() { return m.streamClosed(this.#handle('closedClustersAvailable')); }
     get aliveClustersAvailable() { return m.streamAlive(this.#handle('aliveClustersAvailable')); }
-    takeClosedClusters() { return splitClusters(check(m.streamTakeClosed(this.#handle('takeClosedClusters'))), this.#dim); }
-    aliveClusters() { return splitClusters(check(m.streamAliveClusters(this.#handle('aliveClusters'))), this.#dim); }
-    flush() { check(m.streamFlush(this.#handle('flush'))); }
+    takeClosedClusters() { return splitClusters(check(m.streamTakeClosed(this.#handle('takeClosedClusters')), 'StreamSegmenter.takeClosedClusters'), this.#dim); }
+    aliveClusters() { return splitClusters(check(m.streamAliveClusters(this.#handle('aliveClusters')), 'StreamSegmenter.aliveClusters'), this.#dim); }
+    flush() { check(m.streamFlush(this.#handle('flush')), 'StreamSegmenter.flush'); }
     dispose() {
       if (this.#h === 0) return;
       registry?.unregister(this);
@@ -480,7 +487,7 @@ function wrap(m) {
       frameName(root, fn, 'root');
       const o = options(opts, fn, ['dim']);
       this.#dim = dimOption(o, fn);
-      const h = check(m.tfCreate(this.#dim, root));
+      const h = check(m.tfCreate(this.#dim, root), fn);
       this.#h = h;
       registry?.register(this, () => m.tfDestroy(h), this);
     }
@@ -496,14 +503,14 @@ function wrap(m) {
       const h = this.#handle('insert');
       frameName(name, fn, 'name');
       frameName(parent, fn, 'parent');
-      return check(m.tfInsert(h, name, parent, ...rigid(tf, fn, this.#dim)));
+      return check(m.tfInsert(h, name, parent, ...rigid(tf, fn, this.#dim)), fn);
     }
     erase(name) { return m.tfErase(this.#handle('erase'), frameName(name, 'TfTree.erase', 'name')); }
     contains(name) { return m.tfContains(this.#handle('contains'), frameName(name, 'TfTree.contains', 'name')); }
     tf(from, to) {
       const fn = 'TfTree.tf';
       const h = this.#handle('tf');
-      return check(m.tfGet(h, frameName(from, fn, 'from'), frameName(to, fn, 'to')));
+      return check(m.tfGet(h, frameName(from, fn, 'from'), frameName(to, fn, 'to')), fn);
     }
     transformPoints(from, to, points) {
       const fn = 'TfTree.transformPoints';
@@ -511,7 +518,7 @@ function wrap(m) {
       frameName(from, fn, 'from');
       frameName(to, fn, 'to');
       const xyz = toF64(points, fn, 'points');
-      return withHeap([xyz], (p, n) => m.tfApply(h, from, to, p, n, this.#dim));
+      return withHeap(fn, [xyz], (p, n) => m.tfApply(h, from, to, p, n, this.#dim));
     }
     dispose() {
       if (this.#h === 0) return;
@@ -533,7 +540,7 @@ function wrap(m) {
     else throw new TypeError(`${fn}: text must be a string, an ArrayBuffer or a typed array of the file, got ${describe(text)}`);
     const o = options(opts, fn, ['maxRange']);
     const maxRange = num(o, 'maxRange', fn, 80, { min: 0, exclusiveMin: true });
-    const r = withHeap([u8], (p, n) => m.readCarmenLog(p, n, maxRange));
+    const r = withHeap(fn, [u8], (p, n) => m.readCarmenLog(p, n, maxRange));
     const scans = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
       const b = r.offsets[k], e = r.offsets[k + 1];
@@ -561,7 +568,7 @@ function wrap(m) {
     if (typeof layout !== 'string') throw new TypeError(`${fn}: option layout must be a string, got ${describe(layout)}`);
     if (layout !== 'column-major' && layout !== 'row-major')
       throw new RangeError(`${fn}: option layout must be 'column-major' or 'row-major', got '${layout}'`);
-    const r = withHeap([u8], (p, n) => m.readOrganizedLidar(p, n, beams, layout === 'row-major' ? 1 : 0));
+    const r = withHeap(fn, [u8], (p, n) => m.readOrganizedLidar(p, n, beams, layout === 'row-major' ? 1 : 0));
     const { columns, points } = r;
     return {
       beams, columns, points, intensity: r.intensity,
@@ -621,4 +628,31 @@ function initOptions(o) {
   return out;
 }
 
-export { wrap, initOptions };
+// Starts the Emscripten module and wraps it, the same way for the three entries (Node ESM, CommonJS, browsers).
+// The module gets its own print/printErr/onAbort, so that a failed start prints nothing (Emscripten would print
+// "Aborted(...)" to stderr) and becomes the package's TypeError; after a successful start they forward to the console.
+async function start(createModule, options, loadDefaultBinary) {
+  const o = initOptions(options);
+  if (o.wasmBinary !== undefined) {
+    const bytes = o.wasmBinary instanceof ArrayBuffer ? new Uint8Array(o.wasmBinary) : o.wasmBinary;
+    if (!WebAssembly.validate(bytes)) throw new TypeError(`init: wasmBinary is not a valid WebAssembly module (${bytes.length} bytes)`);
+  } else if (loadDefaultBinary) {
+    o.wasmBinary = await loadDefaultBinary();
+  }
+  let started = false, reason = null;
+  const say = (log) => (...a) => { if (started) log(...a); else reason ??= a.join(' '); };
+  o.print = say((...a) => console.log(...a));
+  o.printErr = say((...a) => console.error(...a));
+  o.onAbort = (what) => { if (!started) reason ??= String(what); };
+  let module;
+  try {
+    module = await createModule(o);
+    if (typeof module.fitLine !== 'function') throw new Error('the module has no rtl-wasm bindings');
+  } catch (e) {
+    throw new TypeError(`init: the WebAssembly module could not be started: ${reason ?? (e && e.message) ?? e}`);
+  }
+  started = true;
+  return wrap(module);
+}
+
+export { start };

@@ -8,7 +8,9 @@
 // A point with a NaN coordinate is a gap (a laser beam without return) where a function says so.
 //
 // Errors: every function checks its arguments and throws TypeError (wrong type) or RangeError (bad value) with a
-// message naming the argument; no C++ exception reaches JS and the module keeps working after any error.
+// message that starts with the function's name ("vectorize: ...", "TfTree.tf: ...", "readCarmenLog: line 7: ...")
+// and names the argument; no C++ exception reaches JS and the module keeps working after any error.
+// fitLine and vectorize accept coordinates within +-1e18 (RangeError beyond: their squares are summed).
 
 export type PointArray = Float64Array | Float32Array | ArrayLike<number>;
 export type Dim = 2 | 3;
@@ -20,7 +22,9 @@ export interface InitOptions {
   locateFile?: (path: string, scriptDirectory: string) => string;
 }
 
-/** Loads and instantiates the WebAssembly module. Each call makes an independent instance. */
+/** Loads and instantiates the WebAssembly module. Each call makes an independent instance. A wasmBinary that is
+ *  not a WebAssembly module, or not this package's, rejects with a TypeError whose message starts with "init:"
+ *  (nothing is printed). */
 export default function init(options?: InitOptions): Promise<RTL>;
 export { init };
 
@@ -54,7 +58,9 @@ export interface LineFit3D {
 // ---------------------------------------------------------------------------------------------- segmentation
 export interface SegmentOptions {
   dim?: Dim;                 // default 2
-  /** neighbours compared (CAR step), integer >= 1; default 3 */
+  /** CAR step, integer >= 1; default 2. Step s compares each point with up to s - 1 previous points (cyclically
+   *  across the seam): step 1 links nothing, step 2 (the default) links consecutive points. The threshold scales
+   *  with it: t = clamp(s * 2 pi / N * |p - origin|, lowerBound, upperBound) for a scan of N points. */
   step?: number;
   /** lower bound of the adaptive distance threshold (m), >= 0; default 0.1 */
   lowerBound?: number;
@@ -90,7 +96,9 @@ export interface VectorizeOptions {
   delta?: number;
   /** dp/rw: tolerance (m), > 0; default 0.09 */
   epsilon?: number;
-  /** ftls/aftls/dp/rw: buffer reservation hint, integer >= 0 */
+  /** ftls/aftls/dp/rw: buffer reservation hint, integer >= 0 and at most the points 2 GB of wasm memory can hold
+   *  (2^31 / (8 * dim): 134217728 in 2D, 89478485 in 3D; RangeError beyond, before any allocation). A call never
+   *  reserves more than its own point count, so a large hint does not grow the memory. */
   maxSize?: number;
   /** aftls: initial simplex shift of the total-error optimizer, integer >= 1; default 1 */
   simplexShift?: number;
@@ -195,14 +203,15 @@ export interface OrganizedCloud {
 // ---------------------------------------------------------------------------------------------- stateful classes
 export interface StreamSegmenterOptions {
   dim?: Dim;          // default 2
-  /** sliding window length (points compared with each new one), integer >= 1; default 3 */
+  /** sliding window length: each new point is compared with up to `step` previous points (IA), integer >= 1;
+   *  default 3. IA step s corresponds to segment()'s (CAR) step s + 1 with scaling (s + 1) * 2 pi / N. */
   step?: number;
   /** lower bound of the distance threshold (m), >= 0; default 0.1 */
   lowerBound?: number;
   /** upper bound (m), >= lowerBound, may be Infinity; default 0.5 */
   upperBound?: number;
   /** threshold = scaling * |p - origin| clamped to [lowerBound, upperBound]; >= 0, default 0.05
-   *  (step * 2 pi / N gives segment()'s criterion for a scan of N beams) */
+   *  ((step + 1) * 2 pi / N gives segment()'s criterion at CAR step step + 1 for a scan of N beams) */
   scaling?: number;
 }
 /** Streaming (IA) segmenter over rtl::IA_Segmenter. Construct it through the module: `new rtl.StreamSegmenter(options)`.

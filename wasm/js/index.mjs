@@ -1,9 +1,9 @@
 // rtl-wasm entry for browsers and bundlers: the ES6 glue finds rtl.wasm next to itself
 // (new URL('rtl.wasm', import.meta.url), which Vite and other bundlers rewrite).
 import createRtlModule from './rtl.mjs';
-import { wrap, initOptions } from './api.mjs';
+import { start } from './api.mjs';
 
 export async function init(options) {
-  return wrap(await createRtlModule(initOptions(options)));
+  return start(createRtlModule, options);
 }
 export default init;

@@ -1,6 +1,8 @@
-// Shared helpers of the embind adapter. Rules (see /work/shared/wasm-toolchain.md):
-//  * no C++ exception may cross into JS (it leaks the wasm stack): every binding runs inside guarded(), which turns
-//    an exception into a returned {error, kind} object that the JS layer rethrows as RangeError/TypeError/Error;
+// Shared helpers of the embind adapter. Rules:
+//  * no C++ exception may cross into JS (with Emscripten 3.1.6 a C++ exception thrown through an embind call leaves
+//    the wasm stack pointer moved): every binding runs inside guarded(), which turns an exception into a returned
+//    {error, kind} object that the JS layer rethrows as RangeError/TypeError/Error, prefixed with the JS function's
+//    name when the message does not start with it;
 //  * large arrays come in as (pointer, count) into the wasm heap, written by JS with HEAPF64.set;
 //  * results leave as JS typed arrays copied in C++, so JS never holds a view that memory growth could detach.
 #pragma once
@@ -12,6 +14,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <streambuf>
 #include <string>
@@ -34,26 +38,42 @@ inline val errorValue(const char* kind, const char* message) {
   return r;
 }
 
+// The library's own label of a message ("CARMEN log, line 3: ..." -> "line 3: ...", "TfTree: unknown ..." ->
+// "unknown ..."): the JS layer puts the name of the function the user called in front instead.
+inline std::string withoutLabel(const char* message, const char* label) {
+  std::string m(message);
+  if (label == nullptr) return m;
+  const std::string l(label);
+  if (m.compare(0, l.size(), l) != 0) return m;
+  std::size_t k = l.size();
+  if (k < m.size() && (m[k] == ',' || m[k] == ':')) ++k;
+  while (k < m.size() && m[k] == ' ') ++k;
+  return m.substr(k);
+}
+
 // Runs f() and returns its val; any exception becomes {error, kind} (kind: TypeError, RangeError or Error).
+// `label`: the library's name for the failing part, dropped from the message (see withoutLabel).
 template <class F>
-val guarded(F&& f) noexcept {
+val guarded(F&& f, const char* label = nullptr) noexcept {
   try {
-    return f();
-  } catch (const type_error& e) {
-    return errorValue("TypeError", e.what());
-  } catch (const std::invalid_argument& e) {
-    return errorValue("RangeError", e.what());
-  } catch (const std::out_of_range& e) {
-    return errorValue("RangeError", e.what());
-  } catch (const std::length_error& e) {
-    return errorValue("RangeError", e.what());
-  } catch (const std::runtime_error& e) {  // the library's readers: malformed input data
-    return errorValue("RangeError", e.what());
-  } catch (const std::bad_alloc&) {
-    return errorValue("RangeError", "out of wasm memory");
-  } catch (const std::exception& e) {
-    return errorValue("Error", e.what());
-  } catch (...) {
+    try {
+      return f();
+    } catch (const type_error& e) {
+      return errorValue("TypeError", withoutLabel(e.what(), label).c_str());
+    } catch (const std::invalid_argument& e) {
+      return errorValue("RangeError", withoutLabel(e.what(), label).c_str());
+    } catch (const std::out_of_range& e) {
+      return errorValue("RangeError", withoutLabel(e.what(), label).c_str());
+    } catch (const std::length_error& e) {
+      return errorValue("RangeError", withoutLabel(e.what(), label).c_str());
+    } catch (const std::runtime_error& e) {  // the library's readers: malformed input data
+      return errorValue("RangeError", withoutLabel(e.what(), label).c_str());
+    } catch (const std::bad_alloc&) {
+      return errorValue("RangeError", "out of wasm memory");
+    } catch (const std::exception& e) {
+      return errorValue("Error", withoutLabel(e.what(), label).c_str());
+    }
+  } catch (...) {  // also whatever building the message above threw
     return errorValue("Error", "unknown C++ exception");
   }
 }
@@ -86,10 +106,16 @@ inline std::string str(std::size_t v) { return std::to_string(v); }
 // itself as `computeMs`, so that benchmarks can split a call into compute and array transfer.
 inline double nowMs() { return emscripten_get_now(); }
 
+// Largest coordinate magnitude that fitLine and vectorize accept. The TLS fits keep sums of squared coordinates
+// over up to 2^27 points, and their solvers square those sums again: with |coordinate| <= 1e18 the largest of these
+// stays below 1e90, far from overflow (a point near 1e200 used to give a normal (0, 1) and an RMS of Infinity).
+constexpr double kMaxCoordinate = 1e18;
+
 // Checks an interleaved point array: a whole number of points, at least `minPoints`, all finite (unless gaps are
-// allowed, where a point with any NaN coordinate is a gap; +-Infinity is always rejected).
+// allowed, where a point with any NaN coordinate is a gap; +-Infinity is always rejected) and, if given, none larger
+// than maxMagnitude in absolute value.
 inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::size_t dim, std::size_t minPoints,
-                        bool allowGaps) {
+                        bool allowGaps, double maxMagnitude = HUGE_VAL) {
   if (len % dim != 0)
     throw std::invalid_argument(std::string(fn) + ": points has " + str(len) + " numbers, not a multiple of dim " +
                                 str(dim) + " (interleaved coordinates expected)");
@@ -98,7 +124,16 @@ inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::
     throw std::invalid_argument(std::string(fn) + ": needs at least " + str(minPoints) + " points, got " + str(n));
   for (std::size_t i = 0; i < len; ++i) {
     const double v = xy[i];
-    if (std::isfinite(v)) continue;
+    if (std::isfinite(v)) {
+      if (std::fabs(v) <= maxMagnitude) continue;
+      char buf[32];
+      for (int digits = 1; digits <= 17; ++digits) {  // the shortest text that reads back as v
+        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (std::strtod(buf, nullptr) == v) break;
+      }
+      throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has the coordinate " + buf +
+                                  " at index " + str(i) + "; coordinates must be within +-1e18 (their squares are summed)");
+    }
     if (std::isnan(v) && allowGaps) continue;
     throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has a non-finite coordinate (" +
                                 (std::isnan(v) ? "NaN" : (v > 0 ? "Infinity" : "-Infinity")) + ") at index " + str(i));

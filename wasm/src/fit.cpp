@@ -87,7 +87,7 @@ val fitLine(std::uintptr_t ptr, std::size_t len, int dim) {
   return guarded([&] {
     if (dim != 2 && dim != 3) throw std::invalid_argument("fitLine: dim must be 2 or 3, got " + std::to_string(dim));
     const double* xy = doubles(ptr);
-    checkPoints("fitLine", xy, len, static_cast<std::size_t>(dim), 2, false);
+    checkPoints("fitLine", xy, len, static_cast<std::size_t>(dim), 2, false, kMaxCoordinate);
     return dim == 2 ? fitLineImpl<2>(xy, len / 2) : fitLineImpl<3>(xy, len / 3);
   });
 }

@@ -26,7 +26,7 @@ val readOrganizedLidar(std::uintptr_t ptr, std::size_t len, std::size_t beams, i
     r.set("points", f64(xyz));
     r.set("intensity", f32(intensity));
     return r;
-  });
+  }, "organised LiDAR");
 }
 
 // All scans flat: points/ranges concatenated, scan k = beams offsets[k]..offsets[k+1]; per-scan pose and line.
@@ -57,7 +57,7 @@ val readCarmenLog(std::uintptr_t ptr, std::size_t len, double maxRange) {
     r.set("timestamp", f64(stamp));
     r.set("line", f64(line));
     return r;
-  });
+  }, "CARMEN log");
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ struct Tree final : TreeBase {
 
   Tf squashed(const std::string& from, const std::string& to) const {
     for (const std::string* k : {&from, &to})
-      if (!tree.contains(*k)) throw std::out_of_range("TfTree: unknown frame '" + *k + "'");
+      if (!tree.contains(*k)) throw std::out_of_range("unknown frame '" + *k + "'");
     return tree.tf(from, to).squash();
   }
   val tf(const std::string& from, const std::string& to) const override {

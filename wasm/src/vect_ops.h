@@ -116,6 +116,10 @@ void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::v
   }
 }
 
+// maxSize only reserves buffers; one call never uses more than its n points, and memory that wasm grows into stays
+// allocated for good, so the reservation is capped at n.
+inline std::size_t reservation(const VectorizeParams& p, std::size_t n) { return p.maxSize < n ? p.maxSize : n; }
+
 }  // namespace detail
 
 template <int D>
@@ -137,11 +141,11 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
     std::vector<rtl::LineSegmentND<D, double>> segs;
     if (p.method == Method::DP) {
       rtl::VectorizerDouglasPeuckerND<D, double> vz(p.epsilon);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       vz(pts, segs);
     } else {
       rtl::VectorizerReumannWitkamND<D, double> vz(p.epsilon);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       vz(pts, segs);
     }
     o.ok = n >= 2;
@@ -155,14 +159,14 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
     if (p.method == Method::ITLS) {
       rtl::VectorizerITLSProjections2D<double, double> vz;
       vz.setSigma(p.sigma);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     } else if (p.method == Method::FTLS) {
       rtl::VectorizerFTLSPolyline2D<double, double> vz;
       vz.setSigma(p.sigma);
       vz.setDelta(p.delta);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     } else {
@@ -171,7 +175,7 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
       vz.setDelta(p.delta);
       vz.setSimplexShift(p.simplexShift);
       vz.setMaxIterations(p.maxIterations);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     }
@@ -181,7 +185,7 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
       vz.setSigma(p.sigma);
       vz.setSimplexShift(p.simplexShift);
       vz.setMaxIterations(p.maxIterations);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       o.ok = vz(pts);
       if (o.ok) {
         for (const auto& poly : vz.polygons()) {
@@ -195,13 +199,13 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
     } else if (p.method == Method::ITLS) {
       rtl::VectorizerITLSProjections3D<double, double> vz;
       vz.setSigma(p.sigma);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     } else if (p.method == Method::FTLS) {
       rtl::VectorizerFTLSProjections3D<double, double> vz;
       vz.setSigma(p.sigma);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     } else {
@@ -209,7 +213,7 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
       vz.setSigma(p.sigma);
       vz.setSimplexShift(p.simplexShift);
       vz.setMaxIterations(p.maxIterations);
-      if (p.maxSize) vz.setMaxSize(p.maxSize);
+      if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     }

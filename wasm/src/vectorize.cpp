@@ -11,7 +11,7 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     if (dim != 2 && dim != 3) throw std::invalid_argument("vectorize: dim must be 2 or 3, got " + std::to_string(dim));
     if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
     const double* xyz = doubles(ptr);
-    checkPoints("vectorize", xyz, len, static_cast<std::size_t>(dim), 2, false);
+    checkPoints("vectorize", xyz, len, static_cast<std::size_t>(dim), 2, false, kMaxCoordinate);
     rtl_ops::VectorizeParams p;
     p.method = static_cast<rtl_ops::Method>(method);
     p.dim = dim;
