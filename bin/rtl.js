@@ -30,8 +30,8 @@ Input
 
 Segmentation (always first, unless --no-segment)
   -s, --segment          segment (the default; accepted for clarity)
-      --no-segment, --raw  do not segment: fit/vectorize the raw chain, i.e. all returns
-                         (non-gap points) in scan order, as one cluster
+      --no-segment       do not segment: fit/vectorize the raw chain, i.e. all returns
+      --raw              (non-gap points) in scan order, as one cluster
       --segmenter S      car (batch, the scan as a closed loop; default) | ia (streaming)
       --step N           car: each point is compared with up to N-1 previous points
                          (default 2: consecutive points are linked; 1 links nothing);
