@@ -1,7 +1,10 @@
 // Readers for CARMEN logs and organised LiDAR binaries, on the excerpts in tests/data and on crafted bad input.
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -164,6 +167,212 @@ TEST(CarmenLog, MalformedLinesNameTheLine)
 
     std::istringstream empty("");
     EXPECT_TRUE(rtl::readCarmenLog<double>(empty).empty());
+}
+
+// ---- the no-return value of a log (issue 12 item 2)
+
+namespace
+{
+    std::string readText(const std::string &path)
+    {
+        std::ifstream f(path);
+        std::ostringstream os;
+        os << f.rdbuf();
+        return os.str();
+    }
+
+    //! The log without its PARAM lines (line numbers of the scans change; their content does not).
+    std::string withoutParams(const std::string &text)
+    {
+        std::istringstream is(text);
+        std::string out, line;
+        while (std::getline(is, line))
+            if (line.rfind("PARAM", 0) != 0)
+                out += line + "\n";
+        return out;
+    }
+
+    //! An aces-like log (Radish "aces": 50.0 means no return, no PARAM lines): 12 scans of 16 beams over 180
+    //! degrees, a room with walls 3-49 m away and 5 beams per scan without a return.
+    std::string acesLikeLog(const std::string &params = "")
+    {
+        std::string s = "# aces-like log\n" + params + "ODOM 0 0 0 0 0 0 1 h 1\n";
+        for (int k = 0; k < 12; ++k)
+        {
+            s += "FLASER 16";
+            for (int i = 0; i < 16; ++i)
+            {
+                if (i % 3 == 1 && i < 15)
+                    s += " 50.0";
+                else
+                {
+                    char buf[32];
+                    std::snprintf(buf, sizeof buf, " %.2f", 3.0 + 0.37 * i + 0.11 * k + (i == 9 ? 41.5 : 0.0));
+                    s += buf;
+                }
+            }
+            s += " 1.5 2.5 0.1 1.5 2.5 0.1 " + std::to_string(100 + k) + ".25 aces " + std::to_string(100 + k) + ".5\n";
+        }
+        return s;
+    }
+
+    size_t gapsOf(const std::vector<rtl::CarmenScan<double>> &scans)
+    {
+        size_t n = 0;
+        for (const auto &s : scans) n += gaps(s.points);
+        return n;
+    }
+}
+
+TEST(CarmenNoReturn, IntelIsDetectedFromTheRecurringMaximum)
+{
+    const auto log = rtl::readCarmenLogFileDetailed<double>(data_dir + "/intel.log");
+    EXPECT_EQ(log.max_range_source, rtl::CarmenMaxRangeSource::Recurring);   // intel.log has no max-range PARAM
+    EXPECT_DOUBLE_EQ(log.max_range, 81.83);
+    EXPECT_EQ(log.no_return_beams, 481u);
+    EXPECT_EQ(gapsOf(log.scans), 481u);
+    for (const auto &s : log.scans) EXPECT_DOUBLE_EQ(s.max_range, 81.83);
+    const auto f = rtl::readCarmenLogFileDetailed<float>(data_dir + "/intel.log");
+    EXPECT_FLOAT_EQ(f.max_range, 81.83f);
+    EXPECT_EQ(f.no_return_beams, 481u);
+}
+
+TEST(CarmenNoReturn, CsailIsDetectedFromItsParameterOrItsRecurringMaximum)
+{
+    const std::string text = readText(data_dir + "/csail.log");
+    std::istringstream in(text);
+    const auto log = rtl::readCarmenLogDetailed<double>(in);
+    EXPECT_EQ(log.max_range_source, rtl::CarmenMaxRangeSource::Parameter);
+    EXPECT_EQ(log.max_range_parameter, "robot_front_laser_max");
+    EXPECT_EQ(log.max_range_line, 12u);
+    EXPECT_DOUBLE_EQ(log.max_range, 50.0);
+    EXPECT_EQ(log.no_return_beams, 922u);   // every 81.91; no return lies in [50, 81.91)
+    EXPECT_EQ(gapsOf(log.scans), 922u);
+    std::istringstream bare(withoutParams(text));   // without parameters the 81.91 recurs
+    const auto b = rtl::readCarmenLogDetailed<double>(bare);
+    EXPECT_EQ(b.max_range_source, rtl::CarmenMaxRangeSource::Recurring);
+    EXPECT_DOUBLE_EQ(b.max_range, 81.91);
+    EXPECT_EQ(b.no_return_beams, 922u);
+    ASSERT_EQ(b.scans.size(), log.scans.size());
+    for (size_t k = 0; k < b.scans.size(); ++k)
+        for (size_t i = 0; i < b.scans[k].points.size(); ++i)
+            ASSERT_EQ(b.scans[k].points[i].hasNaN(), log.scans[k].points[i].hasNaN());
+}
+
+TEST(CarmenNoReturn, AcesLikeFiftyMetresAreGapsByDefault)
+{
+    std::istringstream in(acesLikeLog());
+    const auto scans = rtl::readCarmenLog<double>(in);
+    ASSERT_EQ(scans.size(), 12u);
+    EXPECT_EQ(gapsOf(scans), 12u * 5u);   // the five 50.0 beams of each scan; the 47.8-49.0 m return stays a point
+    for (const auto &s : scans)
+    {
+        EXPECT_DOUBLE_EQ(s.max_range, 50.0);
+        for (size_t i = 0; i < 16; ++i) EXPECT_EQ(s.points[i].hasNaN(), s.ranges[i] == 50.0) << i;
+        EXPECT_GT(s.ranges[9], 47.0);
+        EXPECT_FALSE(s.points[9].hasNaN());
+    }
+    std::istringstream in2(acesLikeLog());
+    const auto log = rtl::readCarmenLogDetailed<double>(in2);
+    EXPECT_EQ(log.max_range_source, rtl::CarmenMaxRangeSource::Recurring);
+    EXPECT_EQ(log.no_return_beams, 60u);
+
+    // An explicit max range overrides the detection: 60 m keeps the 50.0 beams as points.
+    std::istringstream in3(acesLikeLog());
+    const auto kept = rtl::readCarmenLog<double>(in3, 60.0);
+    EXPECT_EQ(gapsOf(kept), 0u);
+    EXPECT_DOUBLE_EQ(kept[0].max_range, 60.0);
+    rtl::CarmenOptions o;
+    o.max_range = 45;   // and 45 m drops the 47.8-49.0 m return too
+    std::istringstream in4(acesLikeLog());
+    const auto cut = rtl::readCarmenLogDetailed<double>(in4, o);
+    EXPECT_EQ(cut.max_range_source, rtl::CarmenMaxRangeSource::Explicit);
+    EXPECT_EQ(gapsOf(cut.scans), 12u * 6u);
+    std::istringstream in5(acesLikeLog());
+    EXPECT_EQ(gapsOf(rtl::readCarmenLog<double>(in5, std::nan(""))), 60u);   // NaN: detect
+}
+
+TEST(CarmenNoReturn, ParametersAndTheirLimits)
+{
+    // A parameter of 40 m: ranges >= 40 are gaps (the 47.8-49.0 m return too).
+    std::istringstream a(acesLikeLog("PARAM robot_front_laser_max 40 1 h 1\n"));
+    const auto pa = rtl::readCarmenLogDetailed<double>(a);
+    EXPECT_EQ(pa.max_range_source, rtl::CarmenMaxRangeSource::Parameter);
+    EXPECT_EQ(pa.max_range_line, 2u);
+    EXPECT_EQ(gapsOf(pa.scans), 72u);
+    // A parameter above the recurring maximum: the recurring 50.0 still means no return.
+    std::istringstream b(acesLikeLog("PARAM laser_front_laser_max_range 80\n"));
+    const auto pb = rtl::readCarmenLogDetailed<double>(b);
+    EXPECT_EQ(pb.max_range_source, rtl::CarmenMaxRangeSource::Recurring);
+    EXPECT_DOUBLE_EQ(pb.max_range, 50.0);
+    // An unusable value leaves the parameter unused; the first usable one counts.
+    std::istringstream c(acesLikeLog("PARAM robot_front_laser_max abc 1 h 1\nPARAM robot_front_laser_max -5\n"
+                                     "PARAM robot_front_laser_max 30\nPARAM robot_front_laser_max 20\n"));
+    const auto pc = rtl::readCarmenLogDetailed<double>(c);
+    EXPECT_EQ(pc.max_range_line, 4u);
+    EXPECT_DOUBLE_EQ(pc.max_range, 30.0);
+    // No evidence (every range distinct, no parameter): 80 m, the former default.
+    std::istringstream d("FLASER 4 1 2 85 3 0 0 0 0 0 0 1 h 1\nFLASER 4 1.5 2.5 79 3.5 0 0 0 0 0 0 2 h 2\n");
+    const auto pd = rtl::readCarmenLogDetailed<double>(d);
+    EXPECT_EQ(pd.max_range_source, rtl::CarmenMaxRangeSource::Default);
+    EXPECT_DOUBLE_EQ(pd.max_range, 80.0);
+    EXPECT_TRUE(pd.scans[0].points[2].hasNaN());
+    EXPECT_FALSE(pd.scans[1].points[2].hasNaN());
+    // A maximum hit by many beams but no more often than a value below it is a real return, not "no return".
+    std::istringstream e("FLASER 8 6 6 6 6 7 7 7 7 0 0 0 0 0 0 1 h 1\n");
+    const auto pe = rtl::readCarmenLogDetailed<double>(e);
+    EXPECT_EQ(pe.max_range_source, rtl::CarmenMaxRangeSource::Default);
+    EXPECT_EQ(gapsOf(pe.scans), 0u);
+    // Explicit max ranges must be positive.
+    std::istringstream f("");
+    EXPECT_THROW(rtl::readCarmenLog<double>(f, 0.0), std::invalid_argument);
+    rtl::CarmenOptions neg;
+    neg.max_range = -1;
+    EXPECT_THROW(rtl::readCarmenLogDetailed<float>(f, neg), std::invalid_argument);
+    std::istringstream g("FLASER 2 1 1e300 0 0 0 0 0 0 1 h 1\n");   // +inf as max range keeps every finite range
+    rtl::CarmenOptions all;
+    all.max_range = INFINITY;
+    EXPECT_EQ(gapsOf(rtl::readCarmenLogDetailed<double>(g, all).scans), 0u);
+}
+
+TEST(CarmenNoReturn, NonFinitePosesAndTimestampsAreRejectedNamingTheLine)
+{
+    const std::string head = "# c\nODOM 0 0 0 0 0 0 1 h 1\n";
+    auto err = [&](const std::string &bad) {
+        return errorOf([&] { std::istringstream in(head + bad + "\n"); rtl::readCarmenLog<double>(in); });
+    };
+    EXPECT_NE(err("FLASER 2 1 1 nan 0 0 0 0 0 1 h 2").find("line 3: non-finite x 'nan'"), std::string::npos);
+    EXPECT_NE(err("FLASER 2 1 1 0 -inf 0 0 0 0 1 h 2").find("line 3: non-finite y '-inf'"), std::string::npos);
+    EXPECT_NE(err("FLASER 2 1 1 0 0 NaN 0 0 0 1 h 2").find("line 3: non-finite theta 'NaN'"), std::string::npos);
+    EXPECT_NE(err("FLASER 2 1 1 0 0 0 inf 0 0 1 h 2").find("line 3: non-finite odom_x"), std::string::npos);
+    EXPECT_NE(err("FLASER 2 1 1 0 0 0 0 0 0 infinity h 2").find("line 3: non-finite ipc_timestamp 'infinity'"),
+              std::string::npos);
+    EXPECT_NE(err("FLASER 2 1 1 0 0 0 0 0 0 1 h nan").find("line 3: non-finite logger_timestamp 'nan'"),
+              std::string::npos);
+    // float: a pose beyond float's range is rejected too; a range beyond it is a gap.
+    std::istringstream big("FLASER 2 1 1 1e300 0 0 0 0 0 1 h 2\n");
+    EXPECT_NE(errorOf([&] { rtl::readCarmenLog<float>(big); }).find("line 1"), std::string::npos);
+    std::istringstream far("FLASER 2 1 1e300 0 0 0 0 0 0 1 h 2\n");
+    const auto s = rtl::readCarmenLog<float>(far);
+    EXPECT_TRUE(s[0].points[1].hasNaN());
+    EXPECT_FALSE(s[0].points[0].hasNaN());
+    // Non-finite ranges stay gaps, not errors.
+    std::istringstream inf_range("FLASER 3 inf nan 2 0 0 0 0 0 0 1 h 2\n");
+    const auto r = rtl::readCarmenLog<double>(inf_range);
+    EXPECT_TRUE(r[0].points[0].hasNaN());
+    EXPECT_TRUE(r[0].points[1].hasNaN());
+    EXPECT_FALSE(r[0].points[2].hasNaN());
+}
+
+TEST(CarmenNoReturn, BeamCountNearSizeMaxIsAnErrorNotAnAllocation)
+{
+    // n + 11 wraps around to 2 for n = SIZE_MAX - 8: the field count check must not pass it.
+    const std::string n = std::to_string(std::numeric_limits<size_t>::max() - 8);
+    std::istringstream in("FLASER " + n + "\n");
+    const auto e = errorOf([&] { rtl::readCarmenLog<double>(in); });
+    EXPECT_NE(e.find("line 1: FLASER with " + n + " beams needs " + n + " + 11 fields, found 2"), std::string::npos) << e;
+    std::istringstream in2("FLASER " + std::to_string(std::numeric_limits<size_t>::max() - 9) + " 1\n");
+    EXPECT_NE(errorOf([&] { rtl::readCarmenLog<double>(in2); }).find("line 1: FLASER with"), std::string::npos);
 }
 
 TEST(OrganizedLidar, RellisExcerpt)
