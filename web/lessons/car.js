@@ -104,7 +104,7 @@ export default {
         }
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${clusters.length} clusters, as the package's untraced segment() (${untraced.clusters.length}).</p>`;
         host.figure.show(s);
-        host.text.innerHTML = html;
+        host.text.innerHTML = html + '<p class="legend">Figure: orange ring = current point, dashed circle = its threshold, grey rings = the earlier points of its window, green / red line = a comparison that links / does not; colours = clusters so far.</p>';
       },
       finalState() {
         const k = this.step ?? -1, { labels } = replay(trace, n, k);

@@ -72,7 +72,7 @@ export default {
         s.polyline(polylineOf(chain, kept), { colour: INK.segment, width: 2 });
         s.points(polylineOf(chain, kept), { label: -1, radius: 4, colour: INK.segment });
         host.figure.show(s);
-        host.text.innerHTML = html;
+        host.text.innerHTML = html + '<p class="legend">Figure: blue line = the chord, band = ε on each side of it (red: the farthest point is outside, so it splits), orange = the farthest point and its distance; black = the polyline kept so far.</p>';
         this.step = k;
       },
       finalState() {

@@ -101,7 +101,7 @@ export default {
         }
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${closed.length} closed clusters, as the untraced StreamSegmenter (${untraced.length}).</p>`;
         host.figure.show(s);
-        host.text.innerHTML = html;
+        host.text.innerHTML = html + '<p class="legend">Figure: orange ring = the new point, dashed circle = its threshold, grey rings = the window, green / red line = a comparison that links / does not; blue = alive clusters, colours = closed clusters.</p>';
       },
       finalState() {
         const k = this.step ?? -1, { closed } = replay(trace, k);

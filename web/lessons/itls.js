@@ -83,7 +83,7 @@ export default {
         s.segments(segments.flatMap((g) => g.slice(2)), { colour: INK.segment, width: 2.5 });
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${segments.length} segments, as the package's untraced result (${untraced.count}). Segments are trimmed fitted lines, so they need not touch.</p>`;
         host.figure.show(s);
-        host.text.innerHTML = html;
+        host.text.innerHTML = html + '<p class="legend">Figure: large blue points = the run being grown, green/red ring = the point just added fits / does not; colours = closed runs; inset = the RMS of the run against σ.</p>';
       },
       finalState() {
         const k = this.step ?? -1, r = replay(trace, k);

@@ -65,7 +65,7 @@ export default {
         } else html = `<p>${e.kind}</p>`;
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${kept.length} vertices, ${kept.length - 1} segments, as the package's untraced result (${untraced.count}). One pass, fast, but each strip is aimed by only two noisy points.</p>`;
         host.figure.show(s);
-        host.text.innerHTML = html;
+        host.text.innerHTML = html + '<p class="legend">Figure: blue band = the strip (ε each side) from its key point (ring) ahead; red × = the point that leaves it; black = the polyline kept so far.</p>';
       },
       finalState() {
         const k = this.step ?? -1;
