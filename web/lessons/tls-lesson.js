@@ -23,6 +23,33 @@ export function failureText(f, kind) {
     ' A different σ also moves the boundary.</p>';
 }
 
+const PHASE = ['Whole remainder', 'Gallop', 'Bisection', 'Tail adjustment'];
+const REPAIR = { 1: 'move the boundary', 2: 'merge the two ranges', 3: 'three equal parts', 4: 're-partition a window', 5: 'exact search over the whole chain', 6: 'split-mode search', 7: 'unchecked bridge' };
+
+// The partitions after events 0..k (the replay of rtl/vect/FtlsTrace.h): ranges[0] FTLS, ranges[1] AFTLS's
+// optimized copy; result = the partition the call returns (empty after a strict `infeasible`).
+export function replay(trace, k) {
+  const ranges = [[], null];
+  let kept = null, split = false, infeasible = false, into = 0;
+  const segments = [];
+  const branchOf = (b) => { if (b === 1 && !ranges[1]) ranges[1] = ranges[0].map((x) => x.slice()); return b; };
+  const sortRanges = (b) => ranges[b].sort((x, y) => x[0] - y[0]);
+  for (let i = 0; i <= k && i < trace.length; i++) {
+    const e = trace[i];
+    if (e.kind === 'start') split = e.split;
+    else if (e.kind === 'range') { ranges[0] = ranges[0].filter((x) => x[1] <= e.first); ranges[0].push([e.first, e.end]); }
+    else if (e.kind === 'repair') { const b = branchOf(e.branch); ranges[b] = ranges[b].filter((x) => x[1] <= e.first || x[0] >= e.end); into = b; infeasible = false; }
+    else if (e.kind === 'repairRange') { ranges[into].push([e.first, e.end]); sortRanges(into); }
+    else if (e.kind === 'move') { const b = branchOf(1); ranges[b][e.breakpoint - 1][1] = e.to; ranges[b][e.breakpoint][0] = e.to; }
+    else if (e.kind === 'corner') branchOf(e.branch);
+    else if (e.kind === 'choice') kept = e.kept;
+    else if (e.kind === 'infeasible') infeasible = !split;
+    else if (e.kind === 'segment') segments.push(e);
+  }
+  const result = infeasible ? [] : (ranges[kept ?? 0] ?? ranges[0]);
+  return { ranges, kept, result, segments };
+}
+
 export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = () => ({}) }) {
   return {
     id, menu, title, summary,
@@ -101,23 +128,67 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
             if (missing || !params) { const p = document.createElement('div'); host.text.prepend(p); explainNoSteps({ text: p }, missing); }
             return;
           }
-          const e = trace[k];
-          if (e.first !== undefined && e.end !== undefined) s.points(slice(chain, e.first, e.end), { label: -1, colour: e.fits === false || e.ok === false || e.pass === false ? INK.fail : INK.candidate, radius: 3.5 });
-          if (e.boundary !== undefined && e.delta !== undefined) s.circle(...pt(chain, e.boundary), e.delta, { colour: e.crossingDistance > e.delta ? INK.fail : INK.ok, dash: true });
-          if (e.index !== undefined) s.marker(...pt(chain, e.index), { colour: INK.current });
-          // the RMS of the trials of this run (events with rms and the same first), against σ
-          if (e.rms !== undefined && e.first !== undefined) {
-            const run = trace.slice(0, k + 1).filter((t) => t.rms !== undefined && t.first === e.first && t.end !== undefined);
-            if (run.length) s.setInset({ title: `RMS of trial ranges from point ${e.first}`, xs: run.map((t) => t.end - t.first), ys: run.map((t) => t.rms), ok: run.map((t) => t.rms < (t.sigma ?? params.sigma)), hline: params.sigma, hlabel: 'σ', xlabel: 'points in the trial range' });
+          const e = trace[k], r = replay(trace, k);
+          // the ranges of the branch this step works on, coloured by range
+          const branch = e.branch ?? (e.kind === 'move' ? 1 : r.kept ?? 0);
+          (r.ranges[branch] ?? r.ranges[0]).forEach(([a, b], q) => s.points(slice(chain, a, b), { label: q + 1 }));
+          s.segments(r.segments.flatMap((g) => [g.x0, g.y0, g.x1, g.y1]), { colour: INK.segment, width: 2.5 });
+          const mid = (b) => { const [ax, ay] = pt(chain, Math.max(0, b - 1)), [bx, by] = pt(chain, b); return [(ax + bx) / 2, (ay + by) / 2]; };
+          let html;
+          switch (e.kind) {
+            case 'start':
+              html = `<p>${e.count} points, σ = ${mm(e.sigma)}, δ = ${m(e.delta, 2)}${e.aftls ? '; AFTLS: after FTLS an optimizer moves the breakpoints (branch 1) and the better partition is kept' : ''}${e.split ? '; split mode: an impossible corner breaks the polyline' : '; strict mode: an impossible corner fails the cluster'}.</p>`;
+              break;
+            case 'trial': {
+              const rms = Math.sqrt(e.meanSquaredError);
+              s.points(slice(chain, e.first, e.end), { label: -1, colour: e.pass ? INK.ok : INK.fail, radius: 3.5 });
+              const run = trace.slice(0, k + 1).filter((t) => t.kind === 'trial' && t.first === e.first);
+              s.setInset({ title: `RMS of trial ranges from point ${e.first}`, xs: run.map((t) => t.end - t.first), ys: run.map((t) => Math.sqrt(t.meanSquaredError)), ok: run.map((t) => t.pass), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the trial range' });
+              html = `<p>${PHASE[e.phase] ?? 'Trial'}: points <b>${e.first}–${e.end - 1}</b> (${e.end - e.first} points) fitted with one line: RMS ${mm(rms)} ${e.pass ? '&lt;' : '≥'} σ = ${mm(e.sigma)} — ${e.pass ? 'pass' : 'fail'}.</p>` +
+                `<p class="why">${e.phase === 1 ? 'Doubling the length finds, in a few fits, a range that is too long.' : e.phase === 2 ? 'Halving the interval between the last passing and the first failing end finds the longest passing range.' : e.phase === 0 ? 'If the whole rest of the chain fits one line, the search is over.' : 'A single point left at the end is joined to its neighbour range.'} Each fit costs O(1) from prefix sums.</p>`;
+              break;
+            }
+            case 'range':
+              s.points(slice(chain, e.first, e.end), { label: -1, colour: INK.ok, radius: 3.5 });
+              html = `<p>Range <b>${e.first}–${e.end - 1}</b> is accepted: the longest run from point ${e.first} whose fit stays under σ. The next run starts at point ${e.end}.</p>`;
+              break;
+            case 'corner': {
+              const c = mid(e.boundary);
+              s.circle(...c, e.delta, { colour: INK.ok, dash: true });
+              if (Number.isFinite(e.crossingDistance)) s.circle(...c, e.crossingDistance, { colour: e.ok ? INK.candidate : INK.fail, dash: true });
+              s.marker(...c, { colour: e.ok ? INK.ok : INK.fail, shape: 'x' });
+              html = `<p>Continuity check of the corner between ranges ${e.index + 1} and ${e.index + 2}${branch ? ' (AFTLS branch)' : ''}, at points ${e.boundary - 1}|${e.boundary}: the two lines cross ${Number.isFinite(e.crossingDistance) ? m(e.crossingDistance) : 'nowhere (parallel)'} from there, δ = ${m(e.delta, 2)} — ${e.ok ? 'ok, the crossing becomes a vertex' : 'too far: this corner needs a repair'}.</p>`;
+              break;
+            }
+            case 'repair':
+              s.points(slice(chain, e.first, e.end), { label: -1, colour: INK.current, radius: 3.5 });
+              html = `<p>Repair (${REPAIR[e.method] ?? `method ${e.method}`}): the ranges inside points ${e.first}–${e.end - 1} are replaced by ${e.inserted} new range${e.inserted === 1 ? '' : 's'}.</p>`;
+              break;
+            case 'repairRange': html = `<p>New range <b>${e.first}–${e.end - 1}</b> from the repair.</p>`; break;
+            case 'move': {
+              const moves = trace.slice(0, k + 1).filter((t) => t.kind === 'move');
+              s.setInset({ title: 'total squared residual after each move', xs: moves.map((_, q) => q + 1), ys: moves.map((t) => t.totalError), xlabel: 'optimizer moves' });
+              s.marker(...pt(chain, e.to), { colour: INK.current });
+              html = `<p>Optimizer: breakpoint ${e.breakpoint} moves from point ${e.from} to ${e.to}; total squared residual now ${(e.totalError * 1e6).toFixed(0)} mm².</p>`;
+              break;
+            }
+            case 'choice':
+              html = `<p>AFTLS compares both partitions: FTLS ${Number.isFinite(e.ftlsError) ? `${(e.ftlsError * 1e6).toFixed(0)} mm²` : 'no valid result'}, optimized ${Number.isFinite(e.aftlsError) ? `${(e.aftlsError * 1e6).toFixed(0)} mm²` : 'no valid result'} — it keeps ${e.kept ? 'the optimized one' : 'FTLS\'s'}.</p>`;
+              break;
+            case 'infeasible':
+              html = failureText(e, 'failure');
+              break;
+            case 'segment': html = `<p>Segment ${e.index + 1} (points ${e.first}–${e.end - 1}${r.segments.some((g) => g.polyline > 0) ? `, polyline ${e.polyline + 1}` : ''}): between the crossings with its neighbours' lines.</p>`; break;
+            default: html = `<p><b>${e.kind}</b>: ${Object.entries(e).filter(([f]) => f !== 'kind').map(([f, v]) => fmtField(f, v)).join(', ')}.</p>`;
           }
-          const fieldsText = Object.entries(e).filter(([f]) => f !== 'kind').map(([f, v]) => fmtField(f, v)).join(', ');
-          let html = `<p><b>${e.kind}</b>: ${fieldsText}.</p>`;
           if (k === trace.length - 1) { drawResult(s, untraced); html += resultText(untraced); }
           host.figure.show(s);
-          host.text.innerHTML = html;
+          host.text.innerHTML = html + '<p class="legend">Figure: colours = the current ranges, green/red points = a trial that passes/fails, circles at a corner: δ (green) and where the lines cross (blue ok, red too far); inset = RMS against σ.</p>';
         },
         finalState() {
+          const r = replay(trace, this.step ?? -1);
           return { method, chain: Array.from(chain), params: params && { ...params, split: split.checked }, step: this.step ?? -1, steps: trace.length,
+            replayed: { ranges: r.result.flat(), segments: r.segments.flatMap((g) => [g.x0, g.y0, g.x1, g.y1]), polylines: r.segments.map((g) => g.polyline) },
             untraced: untraced && { ok: untraced.ok, count: untraced.count, indices: Array.from(untraced.indices), segments: Array.from(untraced.segments), failure: untraced.failure ?? null, breaks: untraced.breaks ?? [] } };
         },
         dispose() { host.text.removeEventListener('click', onFix); },
