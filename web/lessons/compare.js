@@ -70,7 +70,9 @@ export default {
     function writeVerdict() {
       const ok = rows.filter((r) => r.ok && r.segments > 0);
       // Pareto front: no other method has <= segments and < residual (or < segments and <= residual).
-      const front = ok.filter((r) => !ok.some((o) => o !== r && o.segments <= r.segments && o.ssr <= r.ssr && (o.segments < r.segments || o.ssr < r.ssr)));
+      // residuals equal to 1 part in 1e6 count as equal (the same partition fitted in a different order)
+      const less = (a, b) => a < b - 1e-6 * Math.max(a, b), leq = (a, b) => !less(b, a);
+      const front = ok.filter((r) => !ok.some((o) => o !== r && o.segments <= r.segments && leq(o.ssr, r.ssr) && (o.segments < r.segments || less(o.ssr, r.ssr))));
       const failed = rows.filter((r) => !r.ok).map((r) => r.name);
       verdict.textContent = `Fewest segments: ${ok.length ? Math.min(...ok.map((r) => r.segments)) : '–'}. ` +
         `Not beaten on both counts (fewer or as many segments and less total squared residual): ${front.map((r) => r.name).join(', ') || '–'}. ` +
