@@ -74,6 +74,7 @@ export class Player {
     this.slider.setAttribute('aria-valuetext', text);
     this.el('back').disabled = this.el('first').disabled = this.step <= 0;
     this.el('forward').disabled = this.el('last').disabled = this.step >= this.steps - 1;
+    this.el('play').disabled = this.steps <= 1;
   }
 
   play() {
