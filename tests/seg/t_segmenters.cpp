@@ -178,6 +178,12 @@ TEST(Regression, CarWindowIsStepMinusOne)
     EXPECT_EQ(carIndices(scan({{0, V2d(0, 0)}, {18, V2d(0, 0.5)}}), 3, 1.0, 1.0), (Clusters{{18, 0}}));
     EXPECT_EQ(carIndices(scan({{0, V2d(0, 0)}, {19, V2d(0, 0.5)}}), 1, 1.0, 1.0), (Clusters{{0}, {19}}));
     EXPECT_EQ(carIndices(scan({{0, V2d(0, 0)}, {19, V2d(0, 0.5)}}), 2, 1.0, 1.0), (Clusters{{19, 0}}));
+    // a default segmenter links consecutive points (step 2)
+    rtl::CAR_Segmenter<V2d> by_default;
+    by_default.setLowerBound(1.0);
+    by_default.setUpperBound(1.0);
+    by_default.loadData(two);
+    EXPECT_EQ(by_default.clustersAvailable(), 1u);
     // the threshold is step * 2 pi / N * range, not (step - 1) * ...: at step 2, point 6 (range 11.2) has threshold
     // 7.0 (3.5 with one step), 5 m from point 5; at step 3, point 7 (range 13.5) has 12.7 (8.5), 9 m from point 5
     const double inf = std::numeric_limits<double>::infinity();

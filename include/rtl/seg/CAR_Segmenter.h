@@ -21,7 +21,9 @@
 // the code is the untraced code.
 //
 // Bad input: step 0 is treated as 1; an empty scan gives no cluster; loadData throws std::invalid_argument unless
-// 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 1, bounds [0, +inf).
+// 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 2 (each point compared
+// with the previous one, so that a default segmenter links consecutive points, as before the window fix; RTL does
+// not document its default), bounds [0, +inf).
 #pragma once
 
 #include <algorithm>
@@ -388,7 +390,7 @@ namespace rtl
             else if (b < a) parent_[a] = b;
         }
 
-        size_t step_ = 1;
+        size_t step_ = 2;
         ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
 
         std::vector<std::vector<VectorType>> clusters_;
