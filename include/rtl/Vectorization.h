@@ -28,6 +28,7 @@
 #include "rtl/vect/ExtractorChainFast.h"
 #include "rtl/vect/ExtractorChainIncremental.h"
 #include "rtl/vect/FastPolylinePipeline2D.h"
+#include "rtl/vect/FtlsTrace.h"
 #include "rtl/vect/OptimizerContinuity2D.h"
 #include "rtl/vect/OptimizerTotalError.h"
 #include "rtl/vect/PostprocessorPolyline2D.h"
@@ -149,8 +150,9 @@ namespace rtl
 
     namespace vect_detail
     {
-        //! FTLS (optimize = false) and AFTLS (optimize = true) 2D polylines: see FastPolylinePipeline2D.h.
-        template<class PrecArray, class Approximation, bool optimize>
+        //! FTLS (optimize = false) and AFTLS (optimize = true) 2D polylines: see FastPolylinePipeline2D.h. An enabled
+        //! Observer set by setObserver() receives the events of FtlsTrace.h (e.g. rtl::FtlsTraceLog).
+        template<class PrecArray, class Approximation, bool optimize, class Observer = NoTrace>
         class VectorizerFastPolyline2D : public VectorizerBase<Approximation>
         {
             typedef VectorizerBase<Approximation> Base;
@@ -163,6 +165,8 @@ namespace rtl
             void setSigma(ElementType sigma) { this->sigma = sigma; }
             void setDelta(ElementType delta) { this->delta = delta; }
             void setMaxSize(size_t size) { pipeline.setMaxSize(size); this->reserveBase(size); }
+            //! Observer of the following calls (nullptr: none); it must outlive them.
+            void setObserver(Observer *observer) { pipeline.setObserver(observer); }
 
             //! Split mode (an addition to RTL, default false = RTL's strict behaviour and return values): where a
             //! corner cannot be met within delta, the polyline breaks there, so the result is several polylines
@@ -198,15 +202,15 @@ namespace rtl
 
         protected:
             ElementType delta{3};
-            FastPolylinePipeline2D<PrecArrayType, ApproximationType, optimize> pipeline;
+            FastPolylinePipeline2D<PrecArrayType, ApproximationType, optimize, Observer> pipeline;
         };
     }
 
     //! FTLS: prefix sums, fast chain extraction, continuity repair (exact search as the last resort), polyline of
-    //! line crossings. Additions to RTL: setSplitAtInfeasibleCorners, polylineOffsets, breaks, failure.
-    template<typename Element, typename Compute>
+    //! line crossings. Additions to RTL: setSplitAtInfeasibleCorners, polylineOffsets, breaks, failure, Observer.
+    template<typename Element, typename Compute, class Observer = NoTrace>
     class VectorizerFTLSPolyline2D
-        : public vect_detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, false>
+        : public vect_detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, false, Observer>
     {
     public:
         VectorizerFTLSPolyline2D() = default;
@@ -215,9 +219,9 @@ namespace rtl
 
     //! AFTLS: FTLS with the total-error optimizer between extraction and continuity repair; keeps FTLS's
     //! candidate when that has the lower total squared error (so AFTLS is never worse than FTLS).
-    template<typename Element, typename Compute>
+    template<typename Element, typename Compute, class Observer = NoTrace>
     class VectorizerAFTLSPolyline2D
-        : public vect_detail::VectorizerFastPolyline2D<PrecArray2D<Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true>
+        : public vect_detail::VectorizerFastPolyline2D<PrecArray2D<Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true, Observer>
     {
     public:
         VectorizerAFTLSPolyline2D() = default;

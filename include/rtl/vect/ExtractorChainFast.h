@@ -18,9 +18,13 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Trace.h"
+#include "rtl/vect/FtlsTrace.h"
+
 namespace rtl
 {
-    template<class SumArray, class Approximation>
+    //! Observer (last, default NoTrace): receives FtlsTrial and FtlsRange events (FtlsTrace.h).
+    template<class SumArray, class Approximation, class Observer = NoTrace>
     class ExtractorChainFast
     {
     public:
@@ -33,6 +37,8 @@ namespace rtl
 
         //! Maximal RMS orthogonal residual of a range; must be positive and finite for operator() to succeed.
         void setSigma(ElementType sigma) { sigma2 = static_cast<ComputeType>(sigma) * static_cast<ComputeType>(sigma); sig = sigma; }
+        //! Observer of the following calls (nullptr: none); it must outlive them.
+        void setObserver(Observer *observer) { observer_ = observer; }
 
         //! Clears the outputs and fills them. False (outputs empty) for fewer than 2 points, an invalid sigma, or
         //! (only for pathological sets such as 3 points that fit no line and no split) when no valid partition is found.
@@ -57,24 +63,42 @@ namespace rtl
     private:
         ElementType sig{0};
         ComputeType sigma2{0};
+        Observer *observer_{nullptr};
 
         bool fits(const SumArray &a, size_t b, size_t e) const { return e - b <= 2 || Approximation::errorBelow(a.sums(b, e), sigma2); }
+        //! fits() of a reported trial.
+        bool fits(const SumArray &a, size_t b, size_t e, int phase) const
+        {
+            const bool pass = fits(a, b, e);
+            if constexpr (Observer::enabled)
+                if (observer_)
+                    (*observer_)(FtlsTrial{b, e, phase, e - b <= 2 ? 0.0 : static_cast<double>(Approximation::errorSquaredCompute(a.sums(b, e))),
+                                           static_cast<double>(sig), pass});
+            return pass;
+        }
+        void accept(std::vector<IndexType> &out, size_t b, size_t e) const
+        {
+            out.emplace_back(b, e);
+            if constexpr (Observer::enabled)
+                if (observer_)
+                    (*observer_)(FtlsRange{b, e});
+        }
 
         //! A locally maximal passing end in [beg + 2, limit] for a range starting at beg (limit - beg >= 2).
         size_t findEnd(const SumArray &a, size_t beg, size_t limit) const
         {
-            if (fits(a, beg, limit))
+            if (fits(a, beg, limit, FtlsWholeRemainder))
                 return limit;
             size_t lo = beg + 2, hi = limit, len = 4;
             while (beg + len < limit)
             {
-                if (fits(a, beg, beg + len)) { lo = beg + len; len *= 2; }
+                if (fits(a, beg, beg + len, FtlsGallop)) { lo = beg + len; len *= 2; }
                 else { hi = beg + len; break; }
             }
             while (hi - lo > 1)
             {
                 const size_t mid = lo + (hi - lo) / 2;
-                if (fits(a, beg, mid)) lo = mid;
+                if (fits(a, beg, mid, FtlsBisection)) lo = mid;
                 else hi = mid;
             }
             return lo;
@@ -109,6 +133,10 @@ namespace rtl
             for (size_t y = w; y > 0; y = from[y])
                 out.emplace_back(ws + from[y], ws + y);
             std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+            if constexpr (Observer::enabled)
+                if (observer_)
+                    for (size_t r = first; r < out.size(); ++r)
+                        (*observer_)(FtlsRange{out[r].first, out[r].second});
             return true;
         }
 
@@ -121,12 +149,12 @@ namespace rtl
                 if (limit - e == 1)
                 {
                     // Leave at least two points for the next range.
-                    if (e - 1 >= beg + 2 && fits(a, beg, e - 1)) e = e - 1;
+                    if (e - 1 >= beg + 2 && fits(a, beg, e - 1, FtlsTailAdjust)) e = e - 1;
                     else if (e - 1 >= beg + 2) e = findEnd(a, beg, e - 2 >= beg + 2 ? e - 2 : beg + 2);
                     else
                         return repartitionTail(a, limit, out, beg);
                 }
-                out.emplace_back(beg, e);
+                accept(out, beg, e);
                 beg = e;
             }
             return true;

@@ -11,14 +11,18 @@
 //   Split mode (setSplitAtInfeasibleCorners(true), issue 12 item 1): the exact search may break the polyline at
 //   corners that cannot be met within delta (fewest breaks), so the result is several polylines covering the
 //   whole chain; polylineOffsets() and breaks() describe them.
+// - Observer (last, default NoTrace): the events of FtlsTrace.h, from every stage.
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Trace.h"
 #include "rtl/vect/ExtractorChainFast.h"
+#include "rtl/vect/FtlsTrace.h"
 #include "rtl/vect/OptimizerContinuity2D.h"
 #include "rtl/vect/OptimizerTotalError.h"
 #include "rtl/vect/PartitionSearch2D.h"
@@ -26,7 +30,7 @@
 
 namespace rtl::vect_detail
 {
-    template<class PrecArrayType, class Approximation, bool optimize>
+    template<class PrecArrayType, class Approximation, bool optimize, class Observer = NoTrace>
     class FastPolylinePipeline2D
     {
     public:
@@ -48,7 +52,14 @@ namespace rtl::vect_detail
         }
         void setSplit(bool split) { split_ = split; }
         [[nodiscard]] bool split() const { return split_; }
-        OptimizerTotalError<PrecArrayType, Approximation> &optimizer() { return optimizer_; }
+        OptimizerTotalError<PrecArrayType, Approximation, Observer> &optimizer() { return optimizer_; }
+        void setObserver(Observer *observer)
+        {
+            observer_ = observer;
+            extractor.setObserver(observer);
+            optimizer_.setObserver(observer);
+            continuity.setObserver(observer, 0);
+        }
 
         //! Runs the stages on finite points with valid sigma and delta; false (outputs to be cleared by the caller)
         //! if no valid result exists or the points are not finite.
@@ -61,6 +72,8 @@ namespace rtl::vect_detail
             prec.precompute(pts);
             if (!prec.allFinite())
                 return false;
+            if constexpr (Observer::enabled)
+                report(FtlsStart{pts.size(), static_cast<double>(sigma), static_cast<double>(delta), optimize, split_});
             extractor.setSigma(sigma);
             continuity.setSigma(sigma);
             continuity.setDelta(delta);
@@ -75,7 +88,20 @@ namespace rtl::vect_detail
                     cand_idx = idx;
                     const bool ftls_ok = continuity(pts, prec, cand_lines, cand_idx);
                     optimizer_.setSigma(sigma);
+                    if constexpr (Observer::enabled)
+                        continuity.setObserver(observer_, 1);
                     ok = optimizer_(pts, prec, lines, idx) && continuity(pts, prec, lines, idx);
+                    if constexpr (Observer::enabled)
+                    {
+                        continuity.setObserver(observer_, 0);
+                        if (ftls_ok || ok)
+                        {
+                            const double inf = std::numeric_limits<double>::infinity();
+                            const double ef = ftls_ok ? static_cast<double>(totalError(cand_lines)) : inf;
+                            const double ea = ok ? static_cast<double>(totalError(lines)) : inf;
+                            report(FtlsChoice{ef, ea, ftls_ok && (!ok || totalError(cand_lines) < totalError(lines)) ? 0 : 1});
+                        }
+                    }
                     if (ftls_ok && (!ok || totalError(cand_lines) < totalError(lines)))
                     {
                         lines.swap(cand_lines);
@@ -94,13 +120,20 @@ namespace rtl::vect_detail
                 ok = search(pts, prec, lines, idx);
                 if (!ok)
                     failure_ = search.failure();
+                else if constexpr (Observer::enabled)
+                    reportRanges(FtlsExactSearch, pts.size(), idx);
             }
+            if constexpr (Observer::enabled)
+                if (!ok && failure_)
+                    report(FtlsInfeasible{failure_->boundary, failure_->crossingDistance, failure_->delta});
             if (!ok && split_)
             {
                 search.setAllowBreaks(true);
                 ok = search(pts, prec, lines, idx);
                 if (ok)
                 {
+                    if constexpr (Observer::enabled)
+                        reportRanges(FtlsSplitSearch, pts.size(), idx);
                     breaks_ = search.breaks();
                     multi = search.polylineStarts().size() > 1;
                 }
@@ -108,7 +141,19 @@ namespace rtl::vect_detail
             if (!ok)
                 return false;
             failure_.reset();
-            return makePolylines(pts, lines, idx);
+            if (!makePolylines(pts, lines, idx))
+                return false;
+            if constexpr (Observer::enabled)
+                if (observer_)
+                {
+                    const auto segs = lineSegments();
+                    for (size_t p = 0; p + 1 < offsets.size(); ++p)
+                        for (size_t i = offsets[p]; i < offsets[p + 1]; ++i)
+                            report(FtlsSegment{i, idx[i].first, idx[i].second, p, static_cast<double>(segs[i].beg().x()),
+                                               static_cast<double>(segs[i].beg().y()), static_cast<double>(segs[i].end().x()),
+                                               static_cast<double>(segs[i].end().y())});
+                }
+            return true;
         }
 
         //! Builds the outputs for `lines` (empty after a failure), as a single polyline.
@@ -130,9 +175,25 @@ namespace rtl::vect_detail
 
     private:
         PrecArrayType prec;
-        ExtractorChainFast<PrecArrayType, Approximation> extractor;
-        OptimizerTotalError<PrecArrayType, Approximation> optimizer_;
-        OptimizerContinuity2D<PrecArrayType, Approximation> continuity;
+        ExtractorChainFast<PrecArrayType, Approximation, Observer> extractor;
+        OptimizerTotalError<PrecArrayType, Approximation, Observer> optimizer_;
+        OptimizerContinuity2D<PrecArrayType, Approximation, Observer> continuity;
+        Observer *observer_{nullptr};
+
+        template<class Event>
+        void report(const Event &e) const
+        {
+            if (observer_)
+                (*observer_)(e);
+        }
+        void reportRanges(int method, size_t n, const std::vector<IndexType> &idx) const
+        {
+            if (!observer_)
+                return;
+            (*observer_)(FtlsRepair{0, method, 0, n, idx.size()});
+            for (const auto &r : idx)
+                (*observer_)(FtlsRepairRange{r.first, r.second});
+        }
         PartitionSearch2D<PrecArrayType, Approximation> search;
         PostprocessorPolyline2D<Approximation> polyline;
         std::vector<Approximation> cand_lines;

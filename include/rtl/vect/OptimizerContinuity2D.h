@@ -26,12 +26,15 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Trace.h"
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/FtlsTrace.h"
 #include "rtl/vect/PartitionSearch2D.h"
 
 namespace rtl
 {
-    template<class SumArray, class Approximation>
+    //! Observer (last, default NoTrace): receives FtlsCorner, FtlsRepair and FtlsRepairRange events (FtlsTrace.h).
+    template<class SumArray, class Approximation, class Observer = NoTrace>
     class OptimizerContinuity2D
     {
     public:
@@ -53,6 +56,9 @@ namespace rtl
         //! RMS bound that repaired ranges must respect (default: none, as in the published version).
         void setSigma(ElementType sigma) { sigma2 = static_cast<ComputeType>(sigma) * static_cast<ComputeType>(sigma); }
 
+        //! Observer of the following calls (nullptr: none); it must outlive them. `branch` goes into the events.
+        void setObserver(Observer *observer, int branch = 0) { observer_ = observer; branch_ = branch; }
+
         //! After a false return: the corner that no partition can meet (see PartitionSearch2D::failure()).
         const CornerReport &failure() const { return search.failure(); }
 
@@ -69,7 +75,14 @@ namespace rtl
             size_t i = 0;
             while (i + 1 < indices.size())
             {
-                if (pairOk(pts, lines, indices, i)) { ++i; continue; }
+                const bool ok = pairOk(pts, lines, indices, i);
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                    {
+                        const ComputeType d2 = vect_detail::crossingDistanceSquared(pts, lines[i], lines[i + 1], indices[i].second);
+                        (*observer_)(FtlsCorner{branch_, i, indices[i].second, static_cast<double>(std::sqrt(d2)), static_cast<double>(std::sqrt(delta2)), ok});
+                    }
+                if (ok) { ++i; continue; }
                 if (budget == 0)
                     return exactSearch(pts, sum_array, lines, indices);
                 --budget;
@@ -84,13 +97,32 @@ namespace rtl
         ComputeType delta2{9};
         ComputeType sigma2{std::numeric_limits<ComputeType>::infinity()};
         PartitionSearch2D<SumArray, Approximation> search;
+        Observer *observer_{nullptr};
+        int branch_{0};
+        mutable int method_{0};   // the repair being tried, for the events
+
+        void reportRepair(size_t first, size_t end, const std::vector<IndexType> &ranges) const
+        {
+            if constexpr (Observer::enabled)
+                if (observer_)
+                {
+                    (*observer_)(FtlsRepair{branch_, method_, first, end, ranges.size()});
+                    for (const auto &r : ranges)
+                        (*observer_)(FtlsRepairRange{r.first, r.second});
+                }
+        }
 
         //! Replaces the whole partition by the exact search's; false iff no valid partition exists.
         bool exactSearch(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines, std::vector<IndexType> &indices)
         {
             search.setSigmaSquared(sigma2);
             search.setAllowBreaks(false);
-            return search(pts, a, lines, indices);
+            const size_t end = indices.back().second;
+            if (!search(pts, a, lines, indices))
+                return false;
+            method_ = FtlsExactSearch;
+            reportRepair(0, end, indices);
+            return true;
         }
 
         bool fits(const SumArray &a, size_t b, size_t e) const
@@ -129,6 +161,7 @@ namespace rtl
                 if (i + cnt < lines.size() && !crossingOk(pts, fitted.back(), lines[i + cnt], ranges.back().second))
                     return false;
             }
+            reportRepair(ranges.front().first, ranges.back().second, ranges);
             const auto off = static_cast<std::ptrdiff_t>(i);
             lines.erase(lines.begin() + off, lines.begin() + off + static_cast<std::ptrdiff_t>(cnt));
             indices.erase(indices.begin() + off, indices.begin() + off + static_cast<std::ptrdiff_t>(cnt));
@@ -217,6 +250,7 @@ namespace rtl
         {
             const size_t b = indices[i].first, m = indices[i].second, e = indices[i + 1].second;
             // 1. Move the boundary.
+            method_ = FtlsMoveBoundary;
             for (size_t s = 1; s <= 3; ++s)
             {
                 if (m >= b + 2 + s && tryReplace(pts, a, lines, indices, i, 2, {{b, m - s}, {m - s, e}}, true))
@@ -225,13 +259,16 @@ namespace rtl
                     return true;
             }
             // 2. Merge.
+            method_ = FtlsMerge;
             if (tryReplace(pts, a, lines, indices, i, 2, {{b, e}}, true))
                 return true;
             // 3. Three equal parts.
+            method_ = FtlsThirds;
             const size_t len = e - b;
             if (len >= 6 && tryReplace(pts, a, lines, indices, i, 2, {{b, b + len / 3}, {b + len / 3, b + 2 * len / 3}, {b + 2 * len / 3, e}}, true))
                 return true;
             // 4. Re-partition a window of ranges around the pair, wider on the second attempt.
+            method_ = FtlsWindow;
             if (repartition(pts, a, lines, indices, i > 0 ? i - 1 : 0, std::min(indices.size(), i + 3), 6))
                 return true;
             if (repartition(pts, a, lines, indices, i > 1 ? i - 2 : 0, std::min(indices.size(), i + 4), 12))
@@ -239,6 +276,7 @@ namespace rtl
             // 5. The exact search over the whole chain: if it finds none, no valid result exists.
             if (indices.front().first == 0 && indices.back().second + 1 == a.size())
                 return exactSearch(pts, a, lines, indices);
+            method_ = FtlsBridge;
             // Direct use on part of a sum array: bridge of the two boundary points (re-checked by the caller's loop).
             if (m >= b + 3 && m + 3 <= e && tryReplace(pts, a, lines, indices, i, 2, {{b, m - 1}, {m - 1, m + 1}, {m + 1, e}}, false))
                 return true;

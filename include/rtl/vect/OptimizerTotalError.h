@@ -19,9 +19,13 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Trace.h"
+#include "rtl/vect/FtlsTrace.h"
+
 namespace rtl
 {
-    template<class SumArray, class Approximation>
+    //! Observer (last, default NoTrace): receives an FtlsMove per accepted move (FtlsTrace.h).
+    template<class SumArray, class Approximation, class Observer = NoTrace>
     class OptimizerTotalError
     {
     public:
@@ -40,6 +44,8 @@ namespace rtl
         void setMaxIterations(size_t max_iterations) { max_iter = max_iterations; }
         //! RMS bound every piece must keep (default: none).
         void setSigma(ElementType sigma) { sigma2 = static_cast<ComputeType>(sigma) * static_cast<ComputeType>(sigma); }
+        //! Observer of the following calls (nullptr: none); it must outlive them.
+        void setObserver(Observer *observer) { observer_ = observer; }
 
         //! Optimises the breakpoints of `indices` (a contiguous partition) and refits `approximations`. Fewer than 2
         //! pieces leave the input untouched. False only for inconsistent inputs.
@@ -64,6 +70,11 @@ namespace rtl
             for (size_t j = 1; j < k; ++j)
                 step[j] = std::max(shift, (bp[j + 1] - bp[j - 1]) / 8);
 
+            [[maybe_unused]] ComputeType total = 0;
+            if constexpr (Observer::enabled)
+                if (observer_)
+                    for (size_t j = 0; j < k; ++j)
+                        total += cost(sum_array, bp[j], bp[j + 1]);
             size_t evals = 0;
             bool active = true;
             while (active && evals < max_iter)
@@ -86,7 +97,17 @@ namespace rtl
                         const size_t cand = up ? bp[j] + s : bp[j] - s;
                         const ComputeType c = cost(sum_array, lo, cand) + cost(sum_array, cand, hi);
                         evals += 2;
-                        if (c < current) { bp[j] = cand; moved = true; }
+                        if (c < current)
+                        {
+                            if constexpr (Observer::enabled)
+                                if (observer_)
+                                {
+                                    total += c - current;
+                                    (*observer_)(FtlsMove{j, bp[j], cand, static_cast<double>(total)});
+                                }
+                            bp[j] = cand;
+                            moved = true;
+                        }
                     }
                     if (!moved)
                         step[j] /= 2;
@@ -103,6 +124,7 @@ namespace rtl
 
     private:
         size_t shift{1}, max_iter{10000};
+        Observer *observer_{nullptr};
         ComputeType sigma2{std::numeric_limits<ComputeType>::infinity()};
         std::vector<size_t> bp, step;
 
