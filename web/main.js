@@ -64,14 +64,14 @@ function reportError(e) {
 function recompute(keepAt) {
   const { instance, lesson } = state;
   if (!instance) return;
-  let steps = 0, start = 0;
+  let steps = 0, start = 0, jump;
   try {
-    ({ steps, start = 0 } = instance.recompute());
+    ({ steps, start = 0, jump } = instance.recompute());
   } catch (e) {
     reportError(e);
   }
   entry(lesson.id).steps = steps;
-  state.player.load(steps, keepAt === 'start' ? start : keepAt ?? state.player.step);
+  state.player.load(steps, keepAt === 'start' ? jump ?? start : jump ?? keepAt ?? state.player.step);
 }
 
 async function open(id) {

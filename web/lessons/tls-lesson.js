@@ -115,7 +115,9 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
             untraced = host.rtl.vectorize(chain, opts);
           }
           ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { ...opts, trace: true }), title));
-          return { steps: trace.length };
+          // a failed cluster: show the step where it fails (the reason and the fix are there)
+          const failedAt = trace.findIndex((t) => t.kind === 'infeasible');
+          return { steps: trace.length, ...(untraced.failure && failedAt >= 0 ? { jump: failedAt } : {}) };
         },
         show(k) {
           this.step = k;
