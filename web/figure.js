@@ -106,6 +106,16 @@ export class Figure {
 
   resetView() { this.zoom = null; this.render(); }
 
+  // Pans (same zoom) so that world point (x, y) is in the view, when it is not: a stepped-to point stays visible.
+  ensureVisible(x, y) {
+    if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+    if (!this.view) this.layout();
+    const e = this.extent(), mx = (e.maxX - e.minX) * 0.05, my = (e.maxY - e.minY) * 0.05;
+    if (x >= e.minX + mx && x <= e.maxX - mx && y >= e.minY + my && y <= e.maxY - my) return;
+    const hw = (e.maxX - e.minX) / 2, hh = (e.maxY - e.minY) / 2;
+    this.zoom = { minX: x - hw, maxX: x + hw, minY: y - hh, maxY: y + hh };
+  }
+
   // ---- drawing --------------------------------------------------------------------------------------------------
 
   show(scene) { this.scene = scene; this.render(); }
@@ -234,7 +244,21 @@ export class Figure {
   // A small chart in the top right corner: values against their index, with a horizontal limit line.
   drawInset(ch) {
     const { ctx } = this, v = this.view, d = v.dpr;
-    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35), x0 = v.W - w - 8 * d, y0 = 26 * d;
+    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35);
+    // the corner that hides the fewest points of the scene
+    const corners = [[v.W - w - 8 * d, 26 * d], [8 * d, 26 * d], [v.W - w - 8 * d, v.H - h - 8 * d], [8 * d, v.H - h - 30 * d]];
+    const hidden = corners.map(([cx, cy]) => {
+      let n = 0;
+      for (const it of this.scene.items) {
+        if (it.type !== 'points') continue;
+        for (let i = 0; i + 1 < it.xy.length; i += 2) {
+          const X = v.X(it.xy[i]), Y = v.Y(it.xy[i + 1]);
+          if (X >= cx && X <= cx + w && Y >= cy && Y <= cy + h) n++;
+        }
+      }
+      return n;
+    });
+    const [x0, y0] = corners[hidden.indexOf(Math.min(...hidden))];
     ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * d;
     ctx.fillRect(x0, y0, w, h); ctx.strokeRect(x0, y0, w, h);
     ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330';

@@ -110,9 +110,9 @@ describe('lesson page: traces, final states, screenshots', { timeout: 300000 }, 
       await page.setViewportSize({ width: w, height: h });
       for (const id of ids) {
         const e = await openLesson(page, id);
-        // a step in the middle of the trace shows the algorithm at work
+        // a few steps after the one the lesson opens at shows the algorithm at work
         if (e.steps > 2) {
-          await page.fill('#player [data-act="scrub"]', String(Math.max(e.step + 1, Math.round(e.steps / 2))));
+          await page.fill('#player [data-act="scrub"]', String(e.step + 1 + Math.min(6, e.steps - 1 - e.step)));
           await page.dispatchEvent('#player [data-act="scrub"]', 'input');
         }
         await page.waitForTimeout(150);

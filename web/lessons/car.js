@@ -103,6 +103,7 @@ export default {
           default: html = `<p>${e.kind}</p>`;
         }
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${clusters.length} clusters, as the package's untraced segment() (${untraced.clusters.length}).</p>`;
+        if (e.i !== undefined) host.figure.ensureVisible(points[2 * e.i], points[2 * e.i + 1]);
         host.figure.show(s);
         host.text.innerHTML = html + '<p class="legend">Figure: orange ring = current point, dashed circle = its threshold, grey rings = the earlier points of its window, green / red line = a comparison that links / does not; colours = clusters so far.</p>';
       },

@@ -100,6 +100,7 @@ export default {
           default: html = `<p>${e.kind}</p>`;
         }
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${closed.length} closed clusters, as the untraced StreamSegmenter (${untraced.length}).</p>`;
+        if (e.i !== undefined) host.figure.ensureVisible(points[2 * e.i], points[2 * e.i + 1]);
         host.figure.show(s);
         host.text.innerHTML = html + '<p class="legend">Figure: orange ring = the new point, dashed circle = its threshold, grey rings = the window, green / red line = a comparison that links / does not; blue = alive clusters, colours = closed clusters.</p>';
       },
