@@ -101,20 +101,20 @@ namespace rtl
             }
             else
             {
-                const TailPlacement tail = attachLastPoint(pts, approximations, indices);
+                attachLastPoint(pts, approximations, indices);
                 if constexpr (Observer::enabled)
                     if (observer_)
-                        reportTail(pts, indices, tail);
+                        reportTail(pts, indices, tail_);
             }
             return true;
         }
 
     private:
         //! How attachLastPoint placed the last point: the first `kept` ranges are unchanged; ItlsTailMethod.
+        //! Recorded only for an enabled Observer (so that the untraced code is the code without tracing).
         struct TailPlacement { size_t kept; int method; };
 
         ElementType sig{0};
-        Observer *observer_{nullptr};
 
         static double rms(const PrecSumsType &sums)
         {
@@ -164,6 +164,8 @@ namespace rtl
                 return PrecSumsType(s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8], count);
         }
         ComputeType sigma2{0};
+        Observer *observer_{nullptr};
+        mutable TailPlacement tail_{0, 0};
 
         void emit(std::vector<Approximation> &approximations, std::vector<IndexType> &indices, const PrecSumsType &sums,
                   const ComputeVectorType &origin, size_t beg, size_t end) const
@@ -182,8 +184,8 @@ namespace rtl
             return s;
         }
 
-        TailPlacement attachLastPoint(const std::vector<VectorType> &pts, std::vector<Approximation> &approximations,
-                                      std::vector<IndexType> &indices) const
+        void attachLastPoint(const std::vector<VectorType> &pts, std::vector<Approximation> &approximations,
+                             std::vector<IndexType> &indices) const
         {
             const size_t n = pts.size();
             IndexType &last = indices.back();
@@ -193,7 +195,9 @@ namespace rtl
             {
                 last.second = n;
                 approximations.back()(with, origin);
-                return {indices.size() - 1, itlsTailAppended};
+                if constexpr (Observer::enabled)
+                    tail_ = TailPlacement{indices.size() - 1, itlsTailAppended};
+                return;
             }
             if (last.second - last.first >= 3)
             {
@@ -204,7 +208,9 @@ namespace rtl
                     approximations.back()(without, origin);
                     const ComputeVectorType o2 = pts[n - 2].template cast<ComputeType>();
                     emit(approximations, indices, rangeSums(pts, n - 2, n, o2), o2, n - 2, n);
-                    return {indices.size() - 2, itlsTailLastSplit};
+                    if constexpr (Observer::enabled)
+                        tail_ = TailPlacement{indices.size() - 2, itlsTailLastSplit};
+                    return;
                 }
             }
             if (last.second - last.first == 2 && indices.size() >= 2)
@@ -221,7 +227,9 @@ namespace rtl
                     last = IndexType(n - 2, n);
                     const ComputeVectorType o2 = pts[n - 2].template cast<ComputeType>();
                     approximations.back()(rangeSums(pts, n - 2, n, o2), o2);
-                    return {indices.size() - 2, itlsTailPrevGrown};
+                    if constexpr (Observer::enabled)
+                        tail_ = TailPlacement{indices.size() - 2, itlsTailPrevGrown};
+                    return;
                 }
                 if (prev.second - prev.first >= 3)
                 {
@@ -234,22 +242,23 @@ namespace rtl
                         last = IndexType(n - 4, n - 2);
                         approximations.back()(rangeSums(pts, n - 4, n - 2, o1), o1);
                         emit(approximations, indices, rangeSums(pts, n - 2, n, o2), o2, n - 2, n);
-                        return {indices.size() - 3, itlsTailPrevShrunk};
+                        if constexpr (Observer::enabled)
+                            tail_ = TailPlacement{indices.size() - 3, itlsTailPrevShrunk};
+                        return;
                     }
                 }
             }
-            size_t kept = indices.size();
             for (size_t reach : {16u, 64u, 256u})
-                if (repartitionTail(pts, approximations, indices, reach, kept))
-                    return {kept, itlsTailRepartitioned};
-            return {indices.size(), itlsTailLeftOut};
+                if (repartitionTail(pts, approximations, indices, reach))
+                    return;
+            if constexpr (Observer::enabled)
+                tail_ = TailPlacement{indices.size(), itlsTailLeftOut};
         }
 
         //! Last resort for the final point: re-partitions the last ranges (at least `reach` points back, at most
         //! 512) into the fewest ranges of >= 2 points within sigma, by dynamic programming over window prefix sums.
-        //! On success `kept` is the number of leading ranges left unchanged.
         bool repartitionTail(const std::vector<VectorType> &pts, std::vector<Approximation> &approximations,
-                             std::vector<IndexType> &indices, size_t reach, size_t &kept) const
+                             std::vector<IndexType> &indices, size_t reach) const
         {
             const size_t n = pts.size();
             size_t keep = indices.size(), ws = n - 1;
@@ -278,7 +287,8 @@ namespace rtl
                 return false;
             indices.resize(keep);
             approximations.resize(keep);
-            kept = keep;
+            if constexpr (Observer::enabled)
+                tail_ = TailPlacement{keep, itlsTailRepartitioned};
             std::vector<IndexType> tail;
             for (size_t y = w; y > 0; y = from[y])
                 tail.emplace_back(from[y], y);
