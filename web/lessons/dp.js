@@ -58,7 +58,7 @@ export default {
           const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy || 1, t = ((fx - ax) * dx + (fy - ay) * dy) / l2;
           s.segments([fx, fy, ax + t * dx, ay + t * dy], { colour: INK.current, width: 2 });
           s.marker(fx, fy, { colour: INK.current });
-          html = `<p>Range <b>${e.first}–${e.last}</b> (${e.last - e.first - 1} interior points): the chord joins points ${e.first} and ${e.last}. ` +
+          html = `<p>Range <b>${e.first}–${e.last}</b> (${e.last - e.first - 1} interior point${e.last - e.first - 1 === 1 ? '' : 's'}): the chord joins points ${e.first} and ${e.last}. ` +
             `The farthest interior point is <b>${e.farthest}</b>, ${m(e.distance)} from the chord's line; ε = ${m(e.epsilon)}.</p>` +
             (e.split
               ? `<p class="why">${m(e.distance)} &gt; ε: point ${e.farthest} is kept as a vertex, and the two halves ${e.first}–${e.farthest} and ${e.farthest}–${e.last} are examined next (left first).</p>`
