@@ -72,7 +72,7 @@ indices into its cluster's chain, the list of point indices segmentation.cluster
 (with --no-segment: "chain"), exactly as vectorize() returns them for that chain. So chain
 positions begin..end-1 are the points the segment was fitted to (dp/rw: the span between two
 kept points). FTLS/AFTLS "breaks" and "failed" give "boundary" as a chain index too, with
-the crossing distance and delta. Fits give the cluster, "first" and "last" (point indices of
+the crossing distance (null: the two lines do not cross) and delta. Fits give the cluster, "first" and "last" (point indices of
 the cluster's first and last point) and the line.
 
 Exit status: 0 on success, 1 when the input cannot be read or parsed, 2 on bad options,
