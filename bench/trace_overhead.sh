@@ -39,8 +39,11 @@ work="$root/build/trace-base/$base_sha"
 name=$(basename "$source_file" .cpp)
 
 mkdir -p "$work"
-if [[ ! -d "$work/include" ]]; then
-  git -C "$root" archive "$base_sha" include | tar -x -C "$work"
+if [[ ! -d "$work/include" ]]; then   # extracted aside, then moved: other runs may share the folder
+  tmp=$(mktemp -d "$work/extract.XXXXXX")
+  git -C "$root" archive "$base_sha" include | tar -x -C "$tmp"
+  mv -T "$tmp/include" "$work/include" 2> /dev/null || true
+  rm -rf "$tmp"
 fi
 
 flags=(-std=c++17 -O3 -DNDEBUG -march=x86-64 -I/usr/include/eigen3 -I"$root/bench")
@@ -83,7 +86,13 @@ if [[ "${INSTRUCTIONS:-0}" == 1 ]]; then
   done
   ib=$(awk '/Collected :/ { print $NF }' "$work/$name-base.valgrind")
   ic=$(awk '/Collected :/ { print $NF }' "$work/$name-current.valgrind")
-  awk -v b="$ib" -v k="$ic" 'BEGIN { printf "instructions executed (whole program, callgrind): base %d, current %d, ratio %.4f\n", b, k, k / b }'
+  awk -v b="$ib" -v k="$ic" 'BEGIN { printf "instructions executed (whole program, callgrind): base %.0f, current %.0f, ratio %.5f\n", b, k, k / b }'
+  if command -v callgrind_annotate > /dev/null; then
+    for which in base current; do
+      echo "  top functions, $which:"
+      callgrind_annotate "$work/$name-$which.callgrind" 2> /dev/null | grep -E '^ *[0-9,]+ \(' | sed -n '2,7p' | cut -c1-140
+    done
+  fi
 fi
 
 # median per (binary, case), then one row per case
