@@ -117,6 +117,19 @@ describe('lesson page interaction', { timeout: 240000 }, () => {
     await page.keyboard.press('0');
   });
 
+  test('CAR: clicking a point of the figure jumps to the first step about it', async () => {
+    await openLesson(page, 'car');
+    const s = await page.evaluate(() => window.__rtl.finalState());
+    const at = await page.evaluate(([x, y]) => window.__rtl.clientPoint(x, y), [s.points[2 * 44], s.points[2 * 44 + 1]]);
+    const before = (await page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'car'))).step;
+    await page.mouse.click(at.x, at.y);
+    await page.waitForFunction((b) => window.__rtl.lessons.find((l) => l.id === 'car').step !== b, before, { timeout: PAGE_TIMEOUT });
+    const traced = rtl.segment(new Float64Array(s.points), { step: s.params.step, lowerBound: s.params.lowerBound, upperBound: s.params.upperBound, trace: true }).trace;
+    const step = (await page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'car'))).step;
+    assert.equal(step, traced.findIndex((e) => e.i === 44));
+    assert.match(await page.textContent('#lesson-text'), /Point 44\b/);
+  });
+
   test('no console errors', async () => {
     assert.deepEqual(await page.evaluate(() => window.__rtl.errors), []);
     assert.deepEqual(problems, []);
