@@ -398,6 +398,17 @@ function render(rtl, opts, input, result) {
     : need(rtl, 'toTikz', '--format tikz')(drawing, { standalone: opts.standalone });
 }
 
+// The package's checks of option values it cannot take (e.g. a step beyond what the segmenter holds) are bad usage
+// of this command: name the command-line option, not the package's.
+const FLAG_OF = {
+  step: 'step', lowerBound: 'lower', upperBound: 'upper', scaling: 'scaling', sigma: 'sigma', delta: 'delta',
+  epsilon: 'epsilon', simplexShift: 'simplex-shift', maxIterations: 'max-iterations', maxRange: 'max-range',
+};
+function asUsageError(e) {
+  const m = /^[\w.]+: option (\w+) (must .*)$/.exec(e.message ?? '');
+  return (e instanceof RangeError || e instanceof TypeError) && m && FLAG_OF[m[1]] ? new UsageError(`--${FLAG_OF[m[1]]} ${m[2]}`) : e;
+}
+
 async function main(argv) {
   let opts;
   try {
@@ -430,7 +441,8 @@ async function main(argv) {
       process.stdout.write(text);
     }
     return 0;
-  } catch (e) {
+  } catch (caught) {
+    const e = asUsageError(caught);
     if (e instanceof UsageError) {
       process.stderr.write(`rtl: ${e.message}\n${HINT}`);
       return 2;

@@ -163,6 +163,10 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     [['tests/data/intel.log', '--strict', '-m', 'dp'], 2, /^rtl: --strict applies to --vectorize ftls or aftls only/],
     [['pts.csv', '--max-range', '5', '--fit'], 2, /^rtl: --max-range applies to CARMEN logs only/],
     [['tests/data/intel.log', '--step', 'NaN'], 2, /^rtl: --step must be a number, got "NaN"/],
+    // Values only the package can bound (what its segmenters and optimizer hold) name the command's option too.
+    [['tests/data/intel.log', '--step', '1e12'], 2, /^rtl: --step must be <= \d+, got 1000000000000\n/],
+    [['tests/data/intel.log', '--segmenter', 'ia', '--step', '1e9'], 2, /^rtl: --step must be <= \d+, got 1000000000\n/],
+    [['tests/data/intel.log', '-m', 'aftls', '--max-iterations', '1e20'], 2, /^rtl: --max-iterations must be <= \d+/],
     [['tests/data/intel.log', '--sigma', '1e999', '-m', 'itls'], 2, /^rtl: --sigma must be a number, got "1e999"/],
     [['a.csv', 'b.csv'], 2, /expected one input file, got 2/],
     [['tests/data/intel.log', '-m', 'magic'], 2, /--vectorize must be one of ftls, aftls, itls, dp, rw/],
