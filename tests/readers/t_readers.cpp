@@ -305,6 +305,14 @@ TEST(CarmenNoReturn, ParametersAndTheirLimits)
     const auto pb = rtl::readCarmenLogDetailed<double>(b);
     EXPECT_EQ(pb.max_range_source, rtl::CarmenMaxRangeSource::Recurring);
     EXPECT_DOUBLE_EQ(pb.max_range, 50.0);
+    // A glitch above the no-return value does not hide it (it is a gap too).
+    std::istringstream glitch(acesLikeLog() + "FLASER 3 900.5 2 3 0 0 0 0 0 0 200 aces 200\n");
+    const auto pg = rtl::readCarmenLogDetailed<double>(glitch);
+    EXPECT_EQ(pg.max_range_source, rtl::CarmenMaxRangeSource::Recurring);
+    EXPECT_DOUBLE_EQ(pg.max_range, 50.0);
+    EXPECT_EQ(pg.no_return_beams, 61u);
+    EXPECT_EQ(gapsOf(pg.scans), 61u);
+    EXPECT_EQ(rtl::carmenRecurringMaxRange(pg.scans).second, 60u);
     // An unusable value leaves the parameter unused; the first usable one counts.
     std::istringstream c(acesLikeLog("PARAM robot_front_laser_max abc 1 h 1\nPARAM robot_front_laser_max -5\n"
                                      "PARAM robot_front_laser_max 30\nPARAM robot_front_laser_max 20\n"));

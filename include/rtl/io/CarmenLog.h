@@ -21,6 +21,7 @@
 #include <fstream>
 #include <istream>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -154,38 +155,36 @@ namespace rtl
         }
     }
 
-    //! Detection of the no-return value from the ranges alone. The no-return value is the largest range of the log
-    //! and is hit exactly by many beams, while real returns near the top of the range spread over many values: it
-    //! counts if at least 3 beams hit it and at least twice as many as hit any single other value in [max / 2, max).
-    //! Returns (value, beams at it), or (NaN, 0) without such evidence.
+    //! Detection of the no-return value from the ranges alone. The no-return value is the top of the log's ranges and
+    //! is hit exactly by many beams, while real returns spread over many values: it is the largest range v hit by at
+    //! least 3 beams, by at least twice as many as any single other value in [v / 2, v), and by at least 4 times as
+    //! many as all ranges above v together (a few glitches above the no-return value do not hide it).
+    //! Returns (v, beams at v), or (NaN, 0) without such evidence.
     template<typename E>
     std::pair<E, std::size_t> carmenRecurringMaxRange(const std::vector<CarmenScan<E>> &scans)
     {
-        E top = E(0);
+        std::map<E, std::size_t> count;   // beams per finite positive range
         for (const auto &s : scans)
             for (E r : s.ranges)
-                if (std::isfinite(r) && r > top)
-                    top = r;
-        std::size_t at_top = 0;
-        std::vector<E> upper;   // ranges in [top / 2, top)
-        for (const auto &s : scans)
-            for (E r : s.ranges)
-            {
-                if (r == top)
-                    ++at_top;
-                else if (r >= top / 2 && r < top)
-                    upper.push_back(r);
-            }
-        std::sort(upper.begin(), upper.end());
-        std::size_t most = 0;
-        for (std::size_t i = 0, j = 0; i < upper.size(); i = j)
+                if (std::isfinite(r) && r > E(0))
+                    ++count[r];
+        std::size_t above = 0;
+        for (auto it = count.rbegin(); it != count.rend(); ++it)
         {
-            while (j < upper.size() && upper[j] == upper[i])
-                ++j;
-            most = std::max(most, j - i);
+            const E v = it->first;
+            const std::size_t n = it->second;
+            if (above * 4 > n)
+                break;   // too many ranges above v: v is not the top of the log
+            if (n >= 3)
+            {
+                std::size_t most = 0;
+                for (auto jt = count.lower_bound(v / 2); jt->first < v; ++jt)
+                    most = std::max(most, jt->second);
+                if (n >= 2 * most)
+                    return {v, n};
+            }
+            above += n;
         }
-        if (top > E(0) && at_top >= 3 && at_top >= 2 * most)
-            return {top, at_top};
         return {std::numeric_limits<E>::quiet_NaN(), 0};
     }
 
@@ -292,7 +291,7 @@ namespace rtl
      *  otherwise it is detected from the log:
      *   - a PARAM line naming the front laser's maximum range (robot_front_laser_max, laser_front_laser_max_range,
      *     laser_laser1_max_range, laser_max_range, robot_laser_max, robot_frontlaser_max; the first one counts),
-     *   - else, or if it is smaller, the largest range of the log when many beams hit it exactly (carmenRecurringMaxRange),
+     *   - else, or if it is smaller, the top range of the log when many beams hit it exactly (carmenRecurringMaxRange),
      *   - else 80 m (no evidence: the SICK LMS maximum, the reader's former default).
      *  Intel's excerpt detects 81.83 (recurring, 481 beams), CSAIL's 50 (robot_front_laser_max; its 922 no-return
      *  beams log 81.91 and no return lies between), an aces log 50.0.
