@@ -40,7 +40,13 @@ int main()
     {
         if (!aftls(chains[c]))
         {
-            std::printf("chain %zu: no valid polyline\n", c);
+            // failure(): the corner no partition can meet within delta (strict mode, RTL's behaviour);
+            // setSplitAtInfeasibleCorners(true) would break the polyline there instead.
+            if (const auto &f = aftls.failure())
+                std::printf("chain %zu: no valid polyline (the lines cross %.3f m from boundary %zu, delta %.3f m)\n", c,
+                            f->crossingDistance, f->boundary, f->delta);
+            else
+                std::printf("chain %zu: no valid polyline\n", c);
             continue;
         }
         std::printf("chain %zu (%zu points):\n", c, chains[c].size());

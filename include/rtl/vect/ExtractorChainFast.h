@@ -7,8 +7,9 @@
 // globally longest; the cost is O(log k) fits for a range of k points. Every range has at least 2 points (two
 // points always fit exactly), the ranges partition [0, N) in order, and a single-point tail is avoided by
 // shortening the last range by one point, or re-splitting it, or (when the last three points fit no line)
-// re-partitioning the last ranges by dynamic programming. Only sets with no valid partition at all (e.g. three
-// points forming a triangle much larger than sigma) make it return false.
+// re-partitioning the last ranges by dynamic programming (over a window of up to 512 points). It returns false
+// when that fails (e.g. three points forming a triangle much larger than sigma); the FTLS/AFTLS vectorizers then
+// ask the exact search (PartitionSearch2D), which decides whether any valid partition exists.
 #pragma once
 
 #include <algorithm>
