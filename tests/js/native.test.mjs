@@ -35,14 +35,14 @@ function sameNumbers(a, b, what) {
 
 // Runs the native tool on several inputs at once (--split) and returns one result per input.
 let calls = 0;
-function native(args, inputs, dim) {
+function native(args, inputs, dim, flags = []) {
   const pts = new Float64Array(inputs.reduce((s, a) => s + a.length, 0));
   let o = 0;
   for (const a of inputs) { pts.set(a, o); o += a.length; }
   const f = join(dir, `in${calls}.f64`), c = join(dir, `in${calls++}.u32`);
   writeFileSync(f, pts);
   writeFileSync(c, Uint32Array.from(inputs.map((a) => a.length / dim)));
-  const out = execFileSync(TOOL, [args[0], f, String(dim), ...args.slice(1).map(String), `--split=${c}`],
+  const out = execFileSync(TOOL, [args[0], f, String(dim), ...args.slice(1).map(String), `--split=${c}`, ...flags],
     { encoding: 'utf8', maxBuffer: 1 << 28 });
   return JSON.parse(out);
 }
@@ -62,7 +62,7 @@ test('native tool is built', () => {
   assert.ok(existsSync(TOOL), `${TOOL} missing: build the native tree first (./run test does; or cmake --build <dir> --target rtl_native and set RTL_NATIVE_BUILD_DIR)`);
 });
 
-const SEG_PARAMS = [[3, 0.1, 0.5], [1, 0.05, 0.2], [6, 0.2, 1.5]];
+const SEG_PARAMS = [[2, 0.1, 0.5], [3, 0.1, 0.5], [1, 0.05, 0.2], [6, 0.2, 1.5]];
 const clusters = { 2: [], 3: [] };
 
 test('segment: identical labels and clusters, native vs wasm, on every real scan', { timeout: 120_000 }, () => {
@@ -82,22 +82,27 @@ test('segment: identical labels and clusters, native vs wasm, on every real scan
 });
 
 const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
-test('vectorize: identical results, native vs wasm, every method on every real cluster (2D, 3D lines, planes)', { timeout: 300_000 }, () => {
+test('vectorize: identical results, native vs wasm, every method on every real cluster (2D, 3D lines, planes; split and strict)', { timeout: 300_000 }, () => {
   const opts = { sigma: 0.03, delta: 0.3, epsilon: 0.09, simplexShift: 1, maxIterations: 10000 };
   const runs = [];
-  for (const dim of [2, 3]) for (const method of METHODS) runs.push({ dim, method, primitive: 'line' });
-  runs.push({ dim: 3, method: 'aftls', primitive: 'plane' });
-  let compared = 0, failedBoth = 0;
-  for (const { dim, method, primitive } of runs) {
+  for (const dim of [2, 3]) for (const method of METHODS) runs.push({ dim, method, primitive: 'line', split: true });
+  runs.push({ dim: 2, method: 'ftls', primitive: 'line', split: false }, { dim: 2, method: 'aftls', primitive: 'line', split: false });
+  runs.push({ dim: 3, method: 'aftls', primitive: 'plane', split: true });
+  let compared = 0, failedBoth = 0, broken = 0;
+  for (const { dim, method, primitive, split } of runs) {
     const chains = clusters[dim];
     const nat = native(['vectorize', METHODS.indexOf(method), primitive === 'plane' ? 1 : 0, opts.sigma, opts.delta,
-      opts.epsilon, opts.simplexShift, opts.maxIterations], chains, dim);
+      opts.epsilon, opts.simplexShift, opts.maxIterations], chains, dim, split ? ['--split-corners'] : []);
     chains.forEach((xy, k) => {
-      const w = rtl.vectorize(xy, { dim, method, primitive, ...opts });
-      const n = nat[k], what = `${dim}D ${method} ${primitive} chain ${k}`;
+      const w = rtl.vectorize(xy, { dim, method, primitive, split, ...opts });
+      const n = nat[k], what = `${dim}D ${method} ${primitive}${split ? '' : ' strict'} chain ${k}`;
       assert.equal(w.ok, n.ok, `${what}: ok`);
       assert.equal(w.count, n.count, `${what}: count`);
       assert.deepEqual(Array.from(w.indices), n.indices, `${what}: ranges`);
+      assert.deepEqual(Array.from(w.polylineOffsets), n.polylineOffsets, `${what}: polylines`);
+      sameNumbers(w.breaks.flatMap((b) => [b.boundary, b.crossingDistance, b.delta]), n.breaks, `${what}: breaks`);
+      const f = w.failure ? [w.failure.boundary, w.failure.crossingDistance, w.failure.delta] : [];
+      sameNumbers(f, n.failure, `${what}: failure`);
       sameNumbers(w.segments, n.segments, `${what}: segments`);
       sameNumbers(w.params, n.params, `${what}: params`);
       // rms = sqrt(mean squared residual): near zero the sqrt magnifies last-bit differences, so compare squares.
@@ -105,8 +110,9 @@ test('vectorize: identical results, native vs wasm, every method on every real c
       sameNumbers(w.polygons.flatMap((p) => Array.from(p)), n.polygonPoints, `${what}: polygons`);
       compared++;
       if (!w.ok) failedBoth++;
+      if (w.breaks.length) broken++;
     });
   }
-  console.log(`# native vs wasm: ${compared} vectorizations (${failedBoth} ok=false in both), ${stats.numbers} numbers, ` +
+  console.log(`# native vs wasm: ${compared} vectorizations (${failedBoth} ok=false in both, ${broken} split), ${stats.numbers} numbers, ` +
     `${stats.identical} bit-identical, max relative difference ${stats.maxDiff}`);
 });

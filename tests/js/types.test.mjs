@@ -65,3 +65,50 @@ for (const file of ['index.d.ts', 'index.d.cts']) {
     for (const k of Object.keys(rtl)) assert.ok(declared.has(k), `${k} is declared in interface RTL`);
   });
 }
+
+// The trace event unions of index.d.ts (CarEvent, IaEvent, FtlsEvent, ItlsEvent, DpEvent, RwEvent) declare exactly
+// the kinds and fields the package returns: the page's lessons are built from that file.
+function declaredEvents(dts, name) {
+  const start = dts.indexOf(`export type ${name} =`);
+  const body = dts.slice(start, dts.indexOf(';\n\n', start));
+  const kinds = new Map();
+  for (const m of body.matchAll(/\| \{ kind: '(\w+)';([^}]*)\}/g)) {
+    const fields = [...m[2].matchAll(/(\w+)(\??):/g)].map((f) => [f[1], f[2] === '?']);
+    kinds.set(m[1], fields);
+  }
+  return kinds;
+}
+test('index.d.ts: the trace event unions match the events the package returns (kinds and fields)', async () => {
+  const dts = readFileSync(new URL('../../dist/index.d.ts', import.meta.url), 'utf8');
+  const rtl = await init();
+  const data = new URL('../data/', import.meta.url);
+  const scan = rtl.readCarmenLog(readFileSync(new URL('intel.log', data)))[3].points;
+  const L = [0, 0, 1, 0, 2, 0, 3, 0, 3, 1, 3, 2, 3, 3, 2.5, 3.5, 2, 4];
+  const L3 = L.flatMap((v, i) => (i % 2 ? [v, 0.1 * i] : [v]));
+  const stream = new rtl.StreamSegmenter({ trace: true, step: 2 });
+  stream.addPoints(scan);
+  stream.flush();
+  const runs = [
+    ['CarEvent', rtl.segment(scan, { step: 3, trace: true }).trace],
+    ['IaEvent', stream.takeTrace()],
+    ['FtlsEvent', [...rtl.vectorize(L, { method: 'aftls', trace: true }).trace, ...rtl.vectorize(L, { method: 'ftls', split: false, trace: true }).trace]],
+    ['ItlsEvent', [...rtl.vectorize(L, { method: 'itls', sigma: 0.01, trace: true }).trace, ...rtl.vectorize(L3, { dim: 3, method: 'itls', trace: true }).trace]],
+    ['DpEvent', rtl.vectorize(L, { method: 'dp', trace: true }).trace],
+    ['RwEvent', rtl.vectorize(L, { method: 'rw', trace: true }).trace],
+  ];
+  stream.dispose();
+  for (const [name, events] of runs) {
+    const declared = declaredEvents(dts, name);
+    assert.ok(declared.size >= 2, `${name} is declared`);
+    const seen = new Set();
+    for (const e of events) {
+      assert.ok(declared.has(e.kind), `${name}: kind '${e.kind}' is declared`);
+      seen.add(e.kind);
+      const fields = declared.get(e.kind);
+      const keys = Object.keys(e).filter((k) => k !== 'kind');
+      for (const k of keys) assert.ok(fields.some(([f]) => f === k), `${name} '${e.kind}': field ${k} is declared`);
+      for (const [f, optional] of fields) if (!optional) assert.ok(f in e, `${name} '${e.kind}': declared field ${f} is present`);
+    }
+    assert.ok(seen.size >= 2, `${name}: the sample covers several kinds (${[...seen]})`);
+  }
+});

@@ -3,11 +3,11 @@
 //
 //   rtl_native segment   <points.f64> <dim> <step> <lower> <upper> [--split=<counts.u32>] [--reps=N]
 //   rtl_native vectorize <points.f64> <dim> <method 0-4> <plane 0|1> <sigma> <delta> <epsilon> <simplexShift>
-//                        <maxIterations> [--split=<counts.u32>] [--reps=N]
+//                        <maxIterations> [--split=<counts.u32>] [--split-corners] [--reps=N]
 // points.f64: interleaved little-endian doubles. Output: the result as JSON (numbers with 17 significant digits),
 // plus "seconds": the median time of one call over N repetitions (default 1), for the wasm-vs-native benchmarks.
 // With --split, points.f64 holds several inputs one after the other, counts.u32 their point counts (uint32), and
-// the output is a JSON array with one result per input.
+// the output is a JSON array with one result per input. --split-corners: FTLS/AFTLS 2D in split mode (the JS default).
 // Eigen's explicit SIMD is off, like in the wasm build, so that both do the same arithmetic in the same order.
 #define EIGEN_DONT_VECTORIZE
 #include "../../wasm/src/seg_ops.h"
@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -40,7 +41,11 @@ void array(std::ostream& os, const char* name, const std::vector<T>& v) {
   os << '"' << name << "\":[";
   char buf[32];
   for (std::size_t i = 0; i < v.size(); ++i) {
-    if constexpr (std::is_floating_point_v<T>) std::snprintf(buf, sizeof buf, "%.17g", static_cast<double>(v[i]));
+    if constexpr (std::is_floating_point_v<T>) {
+      const double x = static_cast<double>(v[i]);  // JSON has no infinity: 1e999 parses to it
+      if (std::isinf(x)) std::snprintf(buf, sizeof buf, "%s", x > 0 ? "1e999" : "-1e999");
+      else std::snprintf(buf, sizeof buf, "%.17g", x);
+    }
     else std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v[i]));
     os << (i ? "," : "") << buf;
   }
@@ -104,6 +109,16 @@ void vectorizeOne(std::ostream& os, const double* pts, std::size_t n, const rtl_
   array(os, "params", o.params);
   os << ',';
   array(os, "rms", o.rms);
+  os << ',';
+  array(os, "polylineOffsets", o.polylineOffsets);
+  std::vector<double> corners;
+  for (const auto& b : o.breaks) corners.insert(corners.end(), {static_cast<double>(b.boundary), b.crossingDistance, b.delta});
+  os << ',';
+  array(os, "breaks", corners);
+  std::vector<double> failure;
+  if (o.failed) failure = {static_cast<double>(o.failure.boundary), o.failure.crossingDistance, o.failure.delta};
+  os << ',';
+  array(os, "failure", failure);
   os << '}';
 }
 
@@ -113,10 +128,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> args;
   int reps = 1;
   std::string split;
+  bool splitCorners = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a.rfind("--reps=", 0) == 0) reps = std::max(1, std::atoi(a.c_str() + 7));
     else if (a.rfind("--split=", 0) == 0) split = a.substr(8);
+    else if (a == "--split-corners") splitCorners = true;
     else args.push_back(a);
   }
   try {
@@ -148,6 +165,7 @@ int main(int argc, char** argv) {
       vp.epsilon = std::stod(args[7]);
       vp.simplexShift = std::stoul(args[8]);
       vp.maxIterations = std::stoul(args[9]);
+      vp.split = splitCorners;
     }
     std::size_t offset = 0;
     if (!split.empty()) std::cout << '[';

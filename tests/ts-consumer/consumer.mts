@@ -70,3 +70,21 @@ rtl.readOrganizedLidar(new ArrayBuffer(16), {});
 rtl.fitLine(xy, { dim: 3 }).normal;
 
 export { version, nx, firstLabel, ranges, polys, ok, svg, tex, pose, ring, intensity, m, diagnostics };
+
+// Traces: discriminated unions narrow on kind.
+const traced = rtl.segment(xy, { trace: true });
+for (const e of traced.trace) {
+  if (e.kind === 'compare') { const linked: boolean = e.linked; const d: number = e.distance - e.threshold; void linked; void d; }
+  // @ts-expect-error: a cluster event has no distance
+  if (e.kind === 'cluster') void e.distance;
+}
+const ft = rtl.vectorize(xy, { method: 'ftls', trace: true, split: false });
+for (const e of ft.trace) if (e.kind === 'corner') { const ok: boolean = e.ok && e.crossingDistance <= e.delta; void ok; }
+const failure: string | undefined = ft.failure?.message;
+const offsets: Uint32Array = ft.polylineOffsets;
+const dpTrace = rtl.vectorize(xy, { method: 'dp', trace: true }).trace;
+for (const e of dpTrace) if (e.kind === 'range') { const f: number = e.farthest; void f; }
+const s2 = new rtl.StreamSegmenter({ trace: true });
+const iaEvents: { kind: string }[] = s2.takeTrace();
+s2.dispose();
+export { failure, offsets, iaEvents };

@@ -77,6 +77,28 @@ function originOption(o, fn, dim) {
   return [a[0], a[1], dim === 3 ? a[2] : 0];
 }
 
+function boolOption(o, key, fn, def) {
+  const v = o[key];
+  if (v === undefined) return def;
+  if (typeof v !== 'boolean') throw new TypeError(`${fn}: option ${key} must be a boolean, got ${describe(v)}`);
+  return v;
+}
+
+// The C++ side's flat trace (wasm/src/trace_ops.h: names + numbers) as plain objects { kind, field: value, ... },
+// one per event, in order. Field types: 0 number, 1 integer, 2 boolean.
+function traceEvents(t) {
+  const { names, data } = t;
+  const out = [];
+  for (let i = 0; i < data.length;) {
+    const e = { kind: names[data[i]] };
+    const fields = data[i + 1];
+    i += 2;
+    for (let k = 0; k < fields; k++, i += 3) e[names[data[i]]] = data[i + 1] === 2 ? data[i + 2] !== 0 : data[i + 2];
+    out.push(e);
+  }
+  return out;
+}
+
 // Proximity bounds of the segmenters: 0 <= lowerBound <= upperBound (upperBound may be Infinity).
 function boundsOptions(o, fn, lowerDefault, upperDefault) {
   const lower = num(o, 'lowerBound', fn, lowerDefault, { min: 0 });
@@ -334,28 +356,30 @@ function wrap(m) {
 
   function segment(points, opts) {
     const fn = 'segment';
-    const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin']);
+    const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin', 'trace']);
     const dim = dimOption(o, fn);
+    const trace = boolOption(o, 'trace', fn, false);
     // Default 2: CAR compares each point with up to step - 1 previous points, so 2 links consecutive points.
     const step = num(o, 'step', fn, 2, { min: 1, integer: true, max: 2 ** 31 });
     const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
-    const r = withHeap(fn, [xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2]));
+    const r = withHeap(fn, [xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2], trace));
     lastComputeMs = r.computeMs;
     const clusters = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
       const indices = r.indices.subarray(r.offsets[k], r.offsets[k + 1]);
       clusters.push({ indices, ranges: r.runs.subarray(r.runOffsets[k], r.runOffsets[k + 1]) });
     }
-    return { labels: r.labels, clusters };
+    return trace ? { labels: r.labels, clusters, trace: traceEvents(r.trace) } : { labels: r.labels, clusters };
   }
 
   const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
   function vectorize(points, opts) {
     const fn = 'vectorize';
     if (opts === undefined) throw new TypeError(`${fn}: options {method} are required (method: ${METHODS.join(', ')})`);
-    const o = options(opts, fn, ['dim', 'method', 'primitive', 'sigma', 'delta', 'epsilon', 'maxSize', 'simplexShift', 'maxIterations']);
+    const o = options(opts, fn, ['dim', 'method', 'primitive', 'sigma', 'delta', 'epsilon', 'maxSize', 'simplexShift',
+      'maxIterations', 'split', 'trace']);
     const dim = dimOption(o, fn);
     if (o.method === undefined) throw new TypeError(`${fn}: option method is required (${METHODS.join(', ')})`);
     if (typeof o.method !== 'string') throw new TypeError(`${fn}: option method must be a string, got ${describe(o.method)}`);
@@ -374,15 +398,38 @@ function wrap(m) {
     const maxSize = num(o, 'maxSize', fn, 0, { min: 0, integer: true, max: Math.floor(MAX_MEMORY / (8 * dim)) });
     const simplexShift = num(o, 'simplexShift', fn, 1, { min: 1, integer: true, max: 2 ** 32 - 1 });
     const maxIterations = num(o, 'maxIterations', fn, 10000, { min: 1, integer: true, max: 2 ** 32 - 1 });
+    // split (FTLS/AFTLS 2D): break the polyline where a corner cannot be met within delta (default), or RTL's
+    // strict behaviour (false: no result then, and `failure` says why).
+    const split = boolOption(o, 'split', fn, true);
+    const trace = boolOption(o, 'trace', fn, false);
+    if (trace && dim === 3 && (method === 'ftls' || method === 'aftls'))
+      throw new RangeError(`${fn}: option trace is not available for method '${method}' in 3D (only itls, dp and rw trace in 3D)`);
     const xyz = toF64(points, fn, 'points');
     const r = withHeap(fn, [xyz], (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
-      sigma, delta, epsilon, maxSize, simplexShift, maxIterations));
+      sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace));
     lastComputeMs = r.computeMs;
+    const corner = (b, k) => ({ boundary: b[k], crossingDistance: b[k + 1], delta: b[k + 2] });
+    const breaks = [];
+    for (let k = 0; k < r.breaks.length; k += 3) breaks.push(corner(r.breaks, k));
+    let failure = null;
+    if (r.failure) {
+      const f = corner(r.failure, 0);
+      const n = xyz.length / dim;
+      f.message = f.boundary === 0
+        ? `${fn}: no partition of the ${n} points into ranges within sigma ${sigma} exists`
+        : `${fn}: no polyline within sigma ${sigma} meets delta ${f.delta} at chain index ${f.boundary}: the lines of the ` +
+          `ranges before and after it ${Number.isFinite(f.crossingDistance)
+            ? `cross ${Number(f.crossingDistance.toPrecision(4))} from the middle of points ${f.boundary - 1} and ${f.boundary}`
+            : 'do not cross'}${split ? '' : ' (raise delta, or use split: true to break the polyline there)'}`;
+      failure = f;
+    }
     const polygons = [];
     for (let k = 0; k + 1 < r.polygonOffsets.length; k++) polygons.push(r.polygonPoints.slice(r.polygonOffsets[k], r.polygonOffsets[k + 1]));
     return {
       method, dim, primitive, ok: r.ok, count: r.count, segments: r.segments, polygons,
       indices: r.indices, params: r.params, stride: r.stride, rms: r.rms,
+      polylineOffsets: r.polylineOffsets, breaks, failure,
+      ...(trace ? { trace: traceEvents(r.trace) } : {}),
     };
   }
 
@@ -400,14 +447,16 @@ function wrap(m) {
   class StreamSegmenter {
     #h = 0;
     #dim;
+    #traced;
     constructor(opts) {
       const fn = 'StreamSegmenter';
-      const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'scaling']);
+      const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'scaling', 'trace']);
       this.#dim = dimOption(o, fn);
+      this.#traced = boolOption(o, 'trace', fn, false);
       const step = num(o, 'step', fn, 3, { min: 1, integer: true, max: 1 << 24 });
       const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
       const scaling = num(o, 'scaling', fn, 0.05, { min: 0 });
-      const h = check(m.streamCreate(this.#dim, step, lower, upper, scaling), fn);
+      const h = check(m.streamCreate(this.#dim, step, lower, upper, scaling, this.#traced), fn);
       this.#h = h;
       registry?.register(this, () => m.streamDestroy(h), this);
     }
@@ -429,6 +478,14 @@ function wrap(m) {
     takeClosedClusters() { return splitClusters(check(m.streamTakeClosed(this.#handle('takeClosedClusters')), 'StreamSegmenter.takeClosedClusters'), this.#dim); }
     aliveClusters() { return splitClusters(check(m.streamAliveClusters(this.#handle('aliveClusters')), 'StreamSegmenter.aliveClusters'), this.#dim); }
     flush() { check(m.streamFlush(this.#handle('flush')), 'StreamSegmenter.flush'); }
+    get traced() { return this.#traced; }
+    // The steps recorded since the last call (the segmenter was made with { trace: true }), then forgotten.
+    takeTrace() {
+      const fn = 'StreamSegmenter.takeTrace';
+      const h = this.#handle('takeTrace');
+      if (!this.#traced) throw new TypeError(`${fn}: the segmenter was made without { trace: true }`);
+      return traceEvents(check(m.streamTakeTrace(h), fn));
+    }
     dispose() {
       if (this.#h === 0) return;
       registry?.unregister(this);

@@ -68,6 +68,8 @@ export interface SegmentOptions {
   upperBound?: number;
   /** sensor origin (dim numbers); default zeros */
   origin?: ArrayLike<number>;
+  /** record the segmenter's steps (CarEvent[] in the result's `trace`); default false (the untraced C++ path) */
+  trace?: boolean;
 }
 export interface Cluster {
   /** point indices in the cluster's order (increasing; a cluster wrapping the seam lists its end-of-scan part first) */
@@ -80,6 +82,8 @@ export interface SegmentResult {
   labels: Int32Array;
   /** clusters in the segmenter's output order; labels refer to this array */
   clusters: Cluster[];
+  /** with { trace: true } only: every step of the CAR segmenter, in order (see CarEvent) */
+  trace?: CarEvent[];
 }
 
 // ---------------------------------------------------------------------------------------------- vectorization
@@ -104,6 +108,26 @@ export interface VectorizeOptions {
   simplexShift?: number;
   /** aftls: iteration cap of the optimizer, integer >= 1; default 10000 */
   maxIterations?: number;
+  /** ftls/aftls 2D: where a corner cannot be met within delta, break the polyline there, so that the result is
+   *  several polylines covering the cluster (default true); false = RTL's strict behaviour: ok false, no segments,
+   *  and `failure` names the corner */
+  split?: boolean;
+  /** record the vectorizer's steps in the result's `trace` (FtlsEvent for ftls/aftls, ItlsEvent, DpEvent, RwEvent);
+   *  default false (the untraced C++ path). Not available for ftls/aftls/planes in 3D (RangeError). */
+  trace?: boolean;
+}
+/** A corner of an FTLS/AFTLS polyline that cannot be met within delta. */
+export interface CornerReport {
+  /** chain index of the first point of the range after the corner */
+  boundary: number;
+  /** how far the crossing of the two ranges' lines lies from the middle of points boundary - 1 and boundary
+   *  (Infinity: the lines do not cross) */
+  crossingDistance: number;
+  delta: number;
+}
+export interface VectorizeFailure extends CornerReport {
+  /** starts with "vectorize:"; names the corner and the numbers (boundary 0: no partition within sigma at all) */
+  message: string;
 }
 export interface VectorizeResult {
   method: VectorizeMethod;
@@ -131,7 +155,158 @@ export interface VectorizeResult {
   stride: number;
   /** RMS orthogonal distance of each range's points from its fitted primitive (for dp/rw: from the chord's line) */
   rms: Float64Array;
+  /** segment index where each polyline starts, then the segment count: [0, count] for one polyline; with split,
+   *  polyline p has segments polylineOffsets[p] .. polylineOffsets[p + 1] - 1 ([0, 0] when ok is false) */
+  polylineOffsets: Uint32Array;
+  /** ftls/aftls split mode: where the polyline broke (one entry between consecutive polylines); [] otherwise */
+  breaks: CornerReport[];
+  /** ftls/aftls, ok false: why (the corner that cannot be met); null otherwise and for other methods */
+  failure: VectorizeFailure | null;
+  /** with { trace: true } only: the vectorizer's steps, in order */
+  trace?: FtlsEvent[] | ItlsEvent[] | DpEvent[] | RwEvent[];
 }
+/** The trace events of each method (vectorize with trace: true). */
+export interface VectorizeEventByMethod { ftls: FtlsEvent; aftls: FtlsEvent; itls: ItlsEvent; dp: DpEvent; rw: RwEvent }
+
+// ---------------------------------------------------------------------------------------------- traces
+// With { trace: true }, segment(), vectorize() and StreamSegmenter record the steps the C++ algorithm takes, as plain
+// objects { kind, ...fields } in order (the C++ event structs of rtl/seg/SegTrace.h, rtl/vect/FtlsTrace.h and
+// rtl/vect/SimplifyTrace.h, converted generically: field names are the C++ names). Indices are point indices of the
+// input (CAR: scan index; IA: stream index counted from the segmenter's first point; vectorizers: chain index);
+// ranges are half-open [first, end). Distances, RMS values and errors are in the points' units. A replay from the
+// first event to the last ends in the returned result (rules below); the same call always gives the same events.
+
+/** CAR (segment). Replay: start with no point in a cluster; `start` puts i in a new cluster labelled i; `link` puts
+ *  i in cluster `cluster`; `merge` relabels every point of cluster `from` as `into`. The `cluster` events at the end
+ *  list the returned clusters in order (clusters[index]); labels are the smallest scan index of each cluster. */
+export type CarEvent =
+  /** loadData starts: scan size, step, window = step - 1 previous points compared, threshold scaling
+   *  step * 2 pi / size and the bounds it is clamped to */
+  | { kind: 'scan'; size: number; step: number; window: number; scaling: number; lowerBound: number; upperBound: number }
+  /** point i has a non-finite coordinate: a gap, in no cluster, never compared */
+  | { kind: 'gap'; i: number }
+  /** point i's threshold: range = |p_i - origin|, raw = scaling * range, threshold = raw clamped to the bounds (the
+   *  radius of the circle around p_i within which an earlier point is close) */
+  | { kind: 'threshold'; i: number; range: number; raw: number; threshold: number }
+  /** point i compared with the earlier point j of its window (1 <= i - j <= step - 1); linked = distance <= threshold */
+  | { kind: 'compare'; i: number; j: number; distance: number; threshold: number; linked: boolean }
+  /** point i joins the cluster `cluster` of j (its first linked comparison) */
+  | { kind: 'link'; i: number; j: number; cluster: number }
+  /** i, already in a cluster, is linked to j of another: cluster `from` merges into `into` (into < from), also
+   *  after a linked seam comparison */
+  | { kind: 'merge'; i: number; j: number; from: number; into: number }
+  /** point i is close to no earlier point of its window: a new cluster labelled i */
+  | { kind: 'start'; i: number }
+  /** seam pass after the whole scan: i among the first points compared with j among the last (at most step - 1
+   *  places apart across the seam), with i's threshold; linked = distance <= threshold */
+  | { kind: 'seam'; i: number; j: number; distance: number; threshold: number; linked: boolean }
+  /** returned cluster number `index`: its label, its first point (the end-of-scan part first for a cluster that
+   *  wraps the seam) and its size */
+  | { kind: 'cluster'; index: number; label: number; first: number; size: number };
+
+/** IA (StreamSegmenter). Replay: `add` puts i in the window; `open`/`link` give it a cluster; `merge` renames
+ *  `from` to `into` and merges the alive lists in stream order; `slide` removes i from the window; `alive` appends i
+ *  to its cluster's alive list; `close` moves the cluster's alive list to the end of the closed queue. The replayed
+ *  alive lists equal aliveClusters() and the closed queue takeClosedClusters(), in order. */
+export type IaEvent =
+  /** point i enters the window; gap: non-finite, takes a window place but joins no cluster */
+  | { kind: 'add'; i: number; gap: boolean }
+  /** the new point's threshold: range = |p_i - origin|, raw = scaling * range, threshold = raw clamped */
+  | { kind: 'threshold'; i: number; range: number; raw: number; threshold: number }
+  /** the new point i compared with window point j (the window holds the `step` previous points); linked =
+   *  distance <= threshold */
+  | { kind: 'compare'; i: number; j: number; distance: number; threshold: number; linked: boolean }
+  /** i joins cluster `cluster` (j's): its first linked comparison */
+  | { kind: 'link'; i: number; j: number; cluster: number }
+  /** i, already in a cluster, is linked to j of another: cluster `from` merges into `into` (the older id) */
+  | { kind: 'merge'; i: number; j: number; from: number; into: number }
+  /** i is close to no window point: it opens cluster `cluster` (ids grow from 0) */
+  | { kind: 'open'; i: number; cluster: number }
+  /** the oldest window point i leaves the window (a valid point is followed by `alive`) */
+  | { kind: 'slide'; i: number; gap: boolean }
+  /** i, out of the window, is appended to its cluster's alive list */
+  | { kind: 'alive'; i: number; cluster: number }
+  /** cluster `cluster` has no point left in the window: it closes with `size` points */
+  | { kind: 'close'; cluster: number; size: number };
+
+/** FTLS / AFTLS 2D (vectorize, method 'ftls' or 'aftls'). branch: 0 = the FTLS partition, 1 = AFTLS's optimized
+ *  one (AFTLS keeps both until `choice`). Replay: ranges[0] = []; each `range` drops the ranges that end after its
+ *  first, then appends [first, end); after extraction AFTLS copies ranges[0] to ranges[1]; a `repair` replaces, in
+ *  ranges[branch], the ranges inside [first, end) by the `inserted` repairRange events after it; a `move` moves
+ *  boundary `breakpoint` of branch 1 from `from` to `to`; `choice` names the branch kept (none: ranges[0]); an
+ *  `infeasible` ends a strict call with no result (in split mode a repair of branch 0 with method 6 follows and
+ *  gives the polylines). The `segment` events at the end equal indices, polylineOffsets and segments exactly. */
+export type FtlsEvent =
+  /** a call begins: point count, sigma, delta; aftls: the optimizer runs; split: split mode */
+  | { kind: 'start'; count: number; sigma: number; delta: number; aftls: boolean; split: boolean }
+  /** the extractor tried [first, end): meanSquaredError of its TLS fit against sigma^2; pass = end - first == 2 or
+   *  meanSquaredError < sigma^2. phase: 0 whole remainder, 1 gallop (lengths 4, 8, 16, ...), 2 bisection, 3 tail */
+  | { kind: 'trial'; first: number; end: number; phase: 0 | 1 | 2 | 3; meanSquaredError: number; sigma: number; pass: boolean }
+  /** the extractor accepted [first, end) */
+  | { kind: 'range'; first: number; end: number }
+  /** continuity check of the corner between ranges index and index + 1 of `branch`, at chain index boundary: the
+   *  lines cross crossingDistance from the middle of points boundary - 1 and boundary (Infinity: parallel);
+   *  ok = crossingDistance <= delta */
+  | { kind: 'corner'; branch: 0 | 1; index: number; boundary: number; crossingDistance: number; delta: number; ok: boolean }
+  /** a repair of `branch` replaced the ranges inside [first, end) by the next `inserted` repairRange events.
+   *  method: 1 move the boundary, 2 merge, 3 three equal parts, 4 re-partition a window, 5 exact search over the
+   *  whole chain, 6 split-mode search, 7 unchecked bridge */
+  | { kind: 'repair'; branch: 0 | 1; method: 1 | 2 | 3 | 4 | 5 | 6 | 7; first: number; end: number; inserted: number }
+  /** one range inserted by the preceding repair */
+  | { kind: 'repairRange'; first: number; end: number }
+  /** AFTLS optimizer: boundary `breakpoint` moved from `from` to `to`; totalError = total squared residual after it */
+  | { kind: 'move'; breakpoint: number; from: number; to: number; totalError: number }
+  /** AFTLS: total squared residuals of both branches (Infinity: no valid result) and the branch kept */
+  | { kind: 'choice'; ftlsError: number; aftlsError: number; kept: 0 | 1 }
+  /** strict mode found no valid partition: the corner that cannot be met (= the result's failure) */
+  | { kind: 'infeasible'; boundary: number; crossingDistance: number; delta: number }
+  /** final segment number index = range [first, end) of polyline `polyline`, from (x0, y0) to (x1, y1) */
+  | { kind: 'segment'; index: number; first: number; end: number; polyline: number; x0: number; y0: number; x1: number; y1: number };
+
+/** ITLS (vectorize, method 'itls', 2D and 3D). Replay: ranges = []; each `close` appends [first, end); a `tail`
+ *  truncates the list to `kept` ranges and the `tailRange` events after it append the new last ranges. The `segment`
+ *  events at the end equal indices and segments exactly. */
+export type ItlsEvent =
+  /** a call begins: point count, the RMS bound sigma */
+  | { kind: 'start'; count: number; sigma: number }
+  /** point `index` joined the running range that starts at `first` (now `count` points); rms of their fit; ranges
+   *  of 3 and more points are tested (fits = !tested || rms < sigma); a point that does not fit is taken out again
+   *  and a `close` follows */
+  | { kind: 'add'; index: number; first: number; count: number; rms: number; sigma: number; tested: boolean; fits: boolean }
+  /** range [first, end) closed with RMS rms: the next point would lift it to rmsWithNext >= sigma, or the chain
+   *  ended (atEnd, rmsWithNext NaN) */
+  | { kind: 'close'; first: number; end: number; rms: number; rmsWithNext: number; sigma: number; atEnd: boolean }
+  /** the single last point `index` is placed by method (0 left out, 1 appended to the last range, 2 the last range
+   *  gives up its last point, 3 the previous range takes a point, 4 the previous range gives up a point, 5 the last
+   *  ranges re-partitioned): the first `kept` ranges stay, the next tailRange events replace the rest */
+  | { kind: 'tail'; index: number; kept: number; method: 0 | 1 | 2 | 3 | 4 | 5 }
+  /** a range of the repaired tail, with its RMS */
+  | { kind: 'tailRange'; first: number; end: number; rms: number }
+  /** final range number `range` = [first, end) and its segment from (x0, y0[, z0]) to (x1, y1[, z1]) (z in 3D only) */
+  | { kind: 'segment'; range: number; first: number; end: number; x0: number; y0: number; z0?: number; x1: number; y1: number; z1?: number };
+
+/** Douglas-Peucker (vectorize, method 'dp'). Replay: kept = {0, count - 1}; each `range` with split adds
+ *  `farthest`; sorted, kept lists the polyline vertices. */
+export type DpEvent =
+  /** a call begins: point count, tolerance epsilon; the end points are kept */
+  | { kind: 'start'; count: number; epsilon: number }
+  /** range [first, last] (inclusive, in the recursion's order, depth first, left part first): `farthest` is the
+   *  first interior point farthest from the line through points first and last, at `distance`; split = distance >
+   *  epsilon: farthest is kept and [first, farthest], [farthest, last] come next */
+  | { kind: 'range'; first: number; last: number; farthest: number; distance: number; epsilon: number; split: boolean };
+
+/** Reumann-Witkam (vectorize, method 'rw'). Replay: the `keep` indices, in order, are the polyline vertices. */
+export type RwEvent =
+  /** a call begins: point count, strip half-width epsilon */
+  | { kind: 'start'; count: number; epsilon: number }
+  /** point `index` is kept (a polyline vertex): point 0, each key point, the last point */
+  | { kind: 'keep'; index: number }
+  /** a strip of half-width epsilon around the line from key point `key` through point `through`; the scan continues
+   *  at through + 1 */
+  | { kind: 'strip'; key: number; through: number; epsilon: number }
+  /** point `index` lies outside the strip of key point `key`, at distance > epsilon from its axis; point index - 1
+   *  becomes the next key */
+  | { kind: 'exit'; index: number; key: number; distance: number; epsilon: number };
 
 // ---------------------------------------------------------------------------------------------- drawings
 export interface Drawing {
@@ -213,6 +388,8 @@ export interface StreamSegmenterOptions {
   /** threshold = scaling * |p - origin| clamped to [lowerBound, upperBound]; >= 0, default 0.05
    *  ((step + 1) * 2 pi / N gives segment()'s criterion at CAR step step + 1 for a scan of N beams) */
   scaling?: number;
+  /** record every step (IaEvent), handed out by takeTrace(); default false (the untraced C++ path) */
+  trace?: boolean;
 }
 /** Streaming (IA) segmenter over rtl::IA_Segmenter. Construct it through the module: `new rtl.StreamSegmenter(options)`.
  *  It owns wasm memory: call dispose() (or use `using`); a FinalizationRegistry frees it if you forget. */
@@ -229,6 +406,11 @@ export interface StreamSegmenter {
   aliveClusters(): Float64Array[];
   /** end of stream: every window point leaves the window, so every cluster closes */
   flush(): void;
+  /** whether it was made with { trace: true } */
+  readonly traced: boolean;
+  /** the steps recorded since the last call (IaEvent, in order), then forgotten; TypeError unless made with
+   *  { trace: true } */
+  takeTrace(): IaEvent[];
   dispose(): void;
   [Symbol.dispose](): void;
   readonly disposed: boolean;
@@ -285,7 +467,10 @@ export interface RTL {
   fitLine(points: PointArray, options?: { dim?: 2 }): LineFit2D;
   fitLine(points: PointArray, options: { dim: 3 }): LineFit3D;
   fitLine(points: PointArray, options?: LineFitOptions): LineFit2D | LineFit3D;
+  segment(points: PointArray, options: SegmentOptions & { trace: true }): SegmentResult & { trace: CarEvent[] };
   segment(points: PointArray, options?: SegmentOptions): SegmentResult;
+  vectorize<M extends VectorizeMethod>(points: PointArray, options: VectorizeOptions & { method: M; trace: true }):
+    VectorizeResult & { trace: VectorizeEventByMethod[M][] };
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
   toTikz(drawing: Drawing, options?: TikzOptions): string;
   toSvg(drawing: Drawing, options?: SvgOptions): string;

@@ -102,6 +102,17 @@ inline val i32(const std::vector<std::int32_t>& v) { return typedArray("Int32Arr
 
 inline std::string str(std::size_t v) { return std::to_string(v); }
 
+// A FlatTrace (trace_ops.h) as {names: string[], data: Float64Array}; the JS layer builds the event objects.
+template <class Flat>
+val traceValue(const Flat& t) {
+  val names = val::array();
+  for (const auto& s : t.names) names.call<void>("push", val(s));
+  val r = val::object();
+  r.set("names", names);
+  r.set("data", f64(t.data));
+  return r;
+}
+
 // Milliseconds since an arbitrary start (performance.now()): the bindings report the time spent in the library
 // itself as `computeMs`, so that benchmarks can split a call into compute and array transfer.
 inline double nowMs() { return emscripten_get_now(); }

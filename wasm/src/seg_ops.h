@@ -10,6 +10,9 @@
 
 #include <rtl/core/VectorND.h>
 #include <rtl/seg/CAR_Segmenter.h>
+#include <rtl/seg/SegTrace.h>
+
+#include "trace_ops.h"
 
 namespace rtl_ops {
 
@@ -37,8 +40,8 @@ struct SegmentOutput {
   std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
 };
 
-template <int D>
-SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p) {
+template <int D, class Observer>
+SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams& p, Observer* observer) {
   if (n > 0xffffffffu) throw std::length_error("segment: more than 2^32 - 1 points");
   std::vector<IndexedPoint<D>> pts(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -47,7 +50,8 @@ SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p) 
   }
   IndexedPoint<D> origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
-  rtl::CAR_Segmenter<IndexedPoint<D>> seg(p.step, p.lowerBound, p.upperBound);
+  rtl::CAR_Segmenter<IndexedPoint<D>, Observer> seg(p.step, p.lowerBound, p.upperBound);
+  if constexpr (Observer::enabled) seg.setObserver(observer);
   seg.setMaxSize(n);
   seg.loadData(pts, origin);
 
@@ -69,6 +73,17 @@ SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p) 
     out.offsets.push_back(static_cast<std::uint32_t>(out.indices.size()));
     out.runOffsets.push_back(static_cast<std::uint32_t>(out.runs.size()));
   }
+  return out;
+}
+
+// trace: nullptr for the untraced segmenter (CAR_Segmenter<P>, exactly RTL's type); otherwise the steps of a
+// CAR_Segmenter<P, CarTraceLog> are appended to it.
+template <int D>
+SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p, FlatTrace* trace = nullptr) {
+  if (trace == nullptr) return segmentWith<D, rtl::NoTrace>(xyz, n, p, nullptr);
+  rtl::CarTraceLog log;
+  SegmentOutput out = segmentWith<D, rtl::CarTraceLog>(xyz, n, p, &log);
+  trace->append(log);
   return out;
 }
 

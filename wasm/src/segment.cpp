@@ -6,7 +6,7 @@ namespace rtl_wasm {
 namespace {
 
 val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lower, double upper, double ox,
-            double oy, double oz) {
+            double oy, double oz, bool trace) {
   return guarded([&] {
     if (dim != 2 && dim != 3) throw std::invalid_argument("segment: dim must be 2 or 3, got " + std::to_string(dim));
     const double* xyz = doubles(ptr);
@@ -18,8 +18,10 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
     p.origin[0] = ox;
     p.origin[1] = oy;
     p.origin[2] = oz;
+    rtl_ops::FlatTrace flat;
+    rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
     const double t0 = nowMs();
-    const auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p) : rtl_ops::segment<3>(xyz, len / 3, p);
+    const auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p, events) : rtl_ops::segment<3>(xyz, len / 3, p, events);
     const double computeMs = nowMs() - t0;
     val r = val::object();
     r.set("labels", i32(out.labels));
@@ -28,6 +30,7 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
     r.set("runs", u32(out.runs));
     r.set("runOffsets", u32(out.runOffsets));
     r.set("computeMs", computeMs);
+    if (trace) r.set("trace", traceValue(flat));
     return r;
   });
 }

@@ -6,6 +6,9 @@
 
 #include <rtl/core/VectorND.h>
 #include <rtl/seg/IA_Segmenter.h>
+#include <rtl/seg/SegTrace.h>
+
+#include "trace_ops.h"
 
 namespace rtl_wasm {
 namespace {
@@ -18,13 +21,19 @@ struct StreamBase {
   virtual val takeClosed() = 0;
   virtual val aliveClusters() const = 0;
   virtual void flush() = 0;
+  virtual val takeTrace() = 0;
 };
 
-template <int D>
+// Observer: rtl::NoTrace (the untraced segmenter, exactly RTL's type) or rtl::IaTraceLog, which records the steps
+// until takeTrace() hands them out.
+template <int D, class Observer = rtl::NoTrace>
 struct Stream final : StreamBase {
   using V = rtl::VectorND<D, double>;
-  rtl::IA_Segmenter<V> seg;
-  Stream(std::size_t step, double lower, double upper, double scaling) : seg(step, lower, upper, scaling) {}
+  rtl::IA_Segmenter<V, Observer> seg;
+  Observer log;
+  Stream(std::size_t step, double lower, double upper, double scaling) : seg(step, lower, upper, scaling) {
+    if constexpr (Observer::enabled) seg.setObserver(&log);
+  }
 
   static V point(const double* p) {
     V v;
@@ -64,15 +73,26 @@ struct Stream final : StreamBase {
     return flat(out);
   }
   void flush() override { seg.flush(); }
+  val takeTrace() override {
+    rtl_ops::FlatTrace flat;
+    if constexpr (Observer::enabled) {
+      flat.append(log);
+      log.clear();
+    }
+    return traceValue(flat);
+  }
 };
 
 StreamBase* handle(std::uintptr_t h) { return reinterpret_cast<StreamBase*>(h); }
 
-val streamCreate(int dim, double step, double lower, double upper, double scaling) {
+val streamCreate(int dim, double step, double lower, double upper, double scaling, bool trace) {
   return guarded([&] {
     const auto s = static_cast<std::size_t>(step);
-    StreamBase* p = dim == 3 ? static_cast<StreamBase*>(new Stream<3>(s, lower, upper, scaling))
-                             : static_cast<StreamBase*>(new Stream<2>(s, lower, upper, scaling));
+    StreamBase* p = nullptr;
+    if (trace) p = dim == 3 ? static_cast<StreamBase*>(new Stream<3, rtl::IaTraceLog>(s, lower, upper, scaling))
+                            : static_cast<StreamBase*>(new Stream<2, rtl::IaTraceLog>(s, lower, upper, scaling));
+    else p = dim == 3 ? static_cast<StreamBase*>(new Stream<3>(s, lower, upper, scaling))
+                      : static_cast<StreamBase*>(new Stream<2>(s, lower, upper, scaling));
     return val(static_cast<double>(reinterpret_cast<std::uintptr_t>(p)));
   });
 }
@@ -94,6 +114,7 @@ val streamFlush(std::uintptr_t h) {
     return val::undefined();
   });
 }
+val streamTakeTrace(std::uintptr_t h) { return guarded([&] { return handle(h)->takeTrace(); }); }
 void streamDestroy(std::uintptr_t h) { delete handle(h); }
 
 }  // namespace
@@ -108,5 +129,6 @@ EMSCRIPTEN_BINDINGS(rtl_stream) {
   emscripten::function("streamTakeClosed", &streamTakeClosed);
   emscripten::function("streamAliveClusters", &streamAliveClusters);
   emscripten::function("streamFlush", &streamFlush);
+  emscripten::function("streamTakeTrace", &streamTakeTrace);
   emscripten::function("streamDestroy", &streamDestroy);
 }

@@ -10,6 +10,10 @@
 #include <vector>
 
 #include <rtl/Vectorization.h>
+#include <rtl/vect/FtlsTrace.h>
+#include <rtl/vect/SimplifyTrace.h>
+
+#include "trace_ops.h"
 
 namespace rtl_ops {
 
@@ -21,6 +25,13 @@ struct VectorizeParams {
   bool plane = false;
   double sigma = 0.03, delta = 0.3, epsilon = 0.09;
   std::size_t maxSize = 0, simplexShift = 1, maxIterations = 10000;
+  bool split = false;  // FTLS/AFTLS 2D: break the polyline at corners that cannot be met within delta
+};
+
+// FTLS/AFTLS 2D: a corner that cannot be met within delta (rtl::CornerReport).
+struct Corner {
+  std::size_t boundary = 0;
+  double crossingDistance = 0, delta = 0;
 };
 
 struct VectorizeOutput {
@@ -32,6 +43,10 @@ struct VectorizeOutput {
   std::vector<double> params;                 // count * stride
   int stride = 0;
   std::vector<double> rms;                    // count
+  std::vector<std::uint32_t> polylineOffsets;  // segment index where each polyline starts, then count
+  std::vector<Corner> breaks;                 // split mode: where the polyline broke
+  bool failed = false;                        // strict mode: `failure` is the corner that cannot be met
+  Corner failure;
 };
 
 namespace detail {
@@ -122,8 +137,28 @@ inline std::size_t reservation(const VectorizeParams& p, std::size_t n) { return
 
 }  // namespace detail
 
+// Runs run(observer) with an observer of type Log recording into `trace`, or with no observer (NoTrace: the
+// vectorizer types are then exactly RTL's) when trace is nullptr.
+template <class Log, class Run>
+void observed(FlatTrace* trace, Run&& run) {
+  if (trace == nullptr) {
+    run(static_cast<rtl::NoTrace*>(nullptr));
+    return;
+  }
+  Log log;
+  run(&log);
+  trace->append(log);
+}
+
+template <class Vz, class Obs>
+void observe(Vz& vz, Obs* observer) {
+  if constexpr (Obs::enabled) vz.setObserver(observer);
+}
+
+// trace: nullptr for the untraced vectorizers; otherwise their steps are appended to it (2D FTLS/AFTLS, ITLS, DP
+// and RW; the 3D fast vectorizers report no steps: the caller rejects a trace for them).
 template <int D>
-VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParams& p) {
+VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace = nullptr) {
   using namespace detail;
   if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
   const auto pts = points<D>(xyz, n);
@@ -136,48 +171,76 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
     tlsRanges(o, vz);
     o.count = vz.indices().size();
   };
+  auto onePolyline = [&] { o.polylineOffsets = {0, static_cast<std::uint32_t>(o.count)}; };
 
   if (p.method == Method::DP || p.method == Method::RW) {
     std::vector<rtl::LineSegmentND<D, double>> segs;
     if (p.method == Method::DP) {
-      rtl::VectorizerDouglasPeuckerND<D, double> vz(p.epsilon);
-      if (p.maxSize) vz.setMaxSize(reservation(p, n));
-      vz(pts, segs);
+      observed<rtl::DpTraceLog>(trace, [&](auto* obs) {
+        rtl::VectorizerDouglasPeuckerND<D, double, std::remove_pointer_t<decltype(obs)>> vz(p.epsilon);
+        observe(vz, obs);
+        if (p.maxSize) vz.setMaxSize(reservation(p, n));
+        vz(pts, segs);
+      });
     } else {
-      rtl::VectorizerReumannWitkamND<D, double> vz(p.epsilon);
-      if (p.maxSize) vz.setMaxSize(reservation(p, n));
-      vz(pts, segs);
+      observed<rtl::RwTraceLog>(trace, [&](auto* obs) {
+        rtl::VectorizerReumannWitkamND<D, double, std::remove_pointer_t<decltype(obs)>> vz(p.epsilon);
+        observe(vz, obs);
+        if (p.maxSize) vz.setMaxSize(reservation(p, n));
+        vz(pts, segs);
+      });
     }
     o.ok = n >= 2;
     for (const auto& s : segs) pushSegment<D>(o, s);
     keptRanges<D>(o, pts, segs);
     o.count = segs.size();
+    onePolyline();
     return o;
   }
 
   if constexpr (D == 2) {
     if (p.method == Method::ITLS) {
-      rtl::VectorizerITLSProjections2D<double, double> vz;
-      vz.setSigma(p.sigma);
-      if (p.maxSize) vz.setMaxSize(reservation(p, n));
-      const bool ok = vz(pts);
-      finishLines(ok, vz, vz.lineSegments());
-    } else if (p.method == Method::FTLS) {
-      rtl::VectorizerFTLSPolyline2D<double, double> vz;
-      vz.setSigma(p.sigma);
-      vz.setDelta(p.delta);
-      if (p.maxSize) vz.setMaxSize(reservation(p, n));
-      const bool ok = vz(pts);
-      finishLines(ok, vz, vz.lineSegments());
+      observed<rtl::ItlsTraceLog>(trace, [&](auto* obs) {
+        rtl::VectorizerITLSProjections2D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
+        observe(vz, obs);
+        vz.setSigma(p.sigma);
+        if (p.maxSize) vz.setMaxSize(reservation(p, n));
+        const bool ok = vz(pts);
+        finishLines(ok, vz, vz.lineSegments());
+      });
+      onePolyline();
     } else {
-      rtl::VectorizerAFTLSPolyline2D<double, double> vz;
-      vz.setSigma(p.sigma);
-      vz.setDelta(p.delta);
-      vz.setSimplexShift(p.simplexShift);
-      vz.setMaxIterations(p.maxIterations);
-      if (p.maxSize) vz.setMaxSize(reservation(p, n));
-      const bool ok = vz(pts);
-      finishLines(ok, vz, vz.lineSegments());
+      auto fast = [&](auto& vz, auto* obs) {
+        observe(vz, obs);
+        vz.setSigma(p.sigma);
+        vz.setDelta(p.delta);
+        vz.setSplitAtInfeasibleCorners(p.split);
+        if (p.maxSize) vz.setMaxSize(reservation(p, n));
+        const bool ok = vz(pts);
+        finishLines(ok, vz, vz.lineSegments());
+        if (ok)
+          for (const auto k : vz.polylineOffsets()) o.polylineOffsets.push_back(static_cast<std::uint32_t>(k));
+        else
+          onePolyline();
+        for (const auto& b : vz.breaks()) o.breaks.push_back({b.boundary, b.crossingDistance, b.delta});
+        if (vz.failure()) {
+          o.failed = true;
+          o.failure = {vz.failure()->boundary, vz.failure()->crossingDistance, vz.failure()->delta};
+        }
+      };
+      if (p.method == Method::FTLS) {
+        observed<rtl::FtlsTraceLog>(trace, [&](auto* obs) {
+          rtl::VectorizerFTLSPolyline2D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
+          fast(vz, obs);
+        });
+      } else {
+        observed<rtl::FtlsTraceLog>(trace, [&](auto* obs) {
+          rtl::VectorizerAFTLSPolyline2D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
+          vz.setSimplexShift(p.simplexShift);
+          vz.setMaxIterations(p.maxIterations);
+          fast(vz, obs);
+        });
+      }
     }
   } else {
     if (p.plane) {
@@ -197,11 +260,14 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
         o.count = vz.indices().size();
       }
     } else if (p.method == Method::ITLS) {
-      rtl::VectorizerITLSProjections3D<double, double> vz;
-      vz.setSigma(p.sigma);
-      if (p.maxSize) vz.setMaxSize(reservation(p, n));
-      const bool ok = vz(pts);
-      finishLines(ok, vz, vz.lineSegments());
+      observed<rtl::ItlsTraceLog>(trace, [&](auto* obs) {
+        rtl::VectorizerITLSProjections3D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
+        observe(vz, obs);
+        vz.setSigma(p.sigma);
+        if (p.maxSize) vz.setMaxSize(reservation(p, n));
+        const bool ok = vz(pts);
+        finishLines(ok, vz, vz.lineSegments());
+      });
     } else if (p.method == Method::FTLS) {
       rtl::VectorizerFTLSProjections3D<double, double> vz;
       vz.setSigma(p.sigma);
@@ -217,6 +283,7 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     }
+    onePolyline();
   }
   return o;
 }

@@ -6,7 +6,7 @@ namespace rtl_wasm {
 namespace {
 
 val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool plane, double sigma, double delta,
-              double epsilon, double maxSize, double simplexShift, double maxIterations) {
+              double epsilon, double maxSize, double simplexShift, double maxIterations, bool split, bool trace) {
   return guarded([&] {
     if (dim != 2 && dim != 3) throw std::invalid_argument("vectorize: dim must be 2 or 3, got " + std::to_string(dim));
     if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
@@ -22,8 +22,11 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     p.maxSize = static_cast<std::size_t>(maxSize);
     p.simplexShift = static_cast<std::size_t>(simplexShift);
     p.maxIterations = static_cast<std::size_t>(maxIterations);
+    p.split = split;
+    rtl_ops::FlatTrace flat;
+    rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
     const double t0 = nowMs();
-    const auto o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p) : rtl_ops::vectorize<3>(xyz, len / 3, p);
+    const auto o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p, events) : rtl_ops::vectorize<3>(xyz, len / 3, p, events);
     const double computeMs = nowMs() - t0;
     std::vector<double> polys;
     std::vector<std::uint32_t> polyOffsets{0};
@@ -42,6 +45,16 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     r.set("stride", o.stride);
     r.set("rms", f64(o.rms));
     r.set("computeMs", computeMs);
+    r.set("polylineOffsets", u32(o.polylineOffsets));
+    // Corners as flat triples boundary, crossingDistance, delta (breaks; failure when failed).
+    std::vector<double> breaks;
+    for (const auto& b : o.breaks) breaks.insert(breaks.end(), {static_cast<double>(b.boundary), b.crossingDistance, b.delta});
+    r.set("breaks", f64(breaks));
+    if (o.failed) {
+      const double f[3] = {static_cast<double>(o.failure.boundary), o.failure.crossingDistance, o.failure.delta};
+      r.set("failure", f64(f, 3));
+    }
+    if (trace) r.set("trace", traceValue(flat));
     return r;
   });
 }
