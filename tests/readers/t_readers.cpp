@@ -364,6 +364,13 @@ TEST(CarmenNoReturn, NonFinitePosesAndTimestampsAreRejectedNamingTheLine)
     const auto s = rtl::readCarmenLog<float>(far);
     EXPECT_TRUE(s[0].points[1].hasNaN());
     EXPECT_FALSE(s[0].points[0].hasNaN());
+    // A range that rounds to 0 in float is a gap, not a point at the origin (found by fuzz_carmen_log).
+    std::istringstream tiny("FLASER 3 1e-320 1e-30 2 0 0 0 0 0 0 1 h 2\n");
+    const auto t = rtl::readCarmenLog<float>(tiny);
+    EXPECT_EQ(t[0].ranges[0], 0.f);
+    EXPECT_TRUE(t[0].points[0].hasNaN());
+    EXPECT_FALSE(t[0].points[1].hasNaN());   // 1e-30 is a float: a point at 1e-30 m
+    EXPECT_FALSE(t[0].points[2].hasNaN());
     // Non-finite ranges stay gaps, not errors.
     std::istringstream inf_range("FLASER 3 inf nan 2 0 0 0 0 0 0 1 h 2\n");
     const auto r = rtl::readCarmenLog<double>(inf_range);

@@ -262,7 +262,9 @@ namespace rtl
                 {
                     const double r = number(tok[2 + i], line, ("range " + std::to_string(i + 1)).c_str());
                     s.ranges[i] = static_cast<E>(r);
-                    if (!(r > 0) || !std::isfinite(r) || !std::isfinite(s.ranges[i]))
+                    // Judged on the stored value: a range that rounds to 0 or inf in E (e.g. 1e-320 or 1e300 as a
+                    // float) is a gap, not a point at the origin or at infinity.
+                    if (!(s.ranges[i] > E(0)) || !std::isfinite(s.ranges[i]))
                         s.points[i] = VectorND<2, E>::nan();
                     else
                     {
