@@ -73,25 +73,30 @@ describe('rtl CLI: vectorization', { timeout: 180000 }, () => {
     for (const method of ['ftls', 'aftls', 'itls']) {
       const r = rtl(['tests/data/intel.log', '--scan', '12', '-m', method, '--sigma', '0.02', '--delta', '0.2']);
       assert.equal(r.code, 0, r.err);
-      assert.equal(r.err, '');
       const j = JSON.parse(r.out);
       const { segments: got, failed, breaks, ...meta } = j.vectorization;
       const tls2 = method !== 'itls';
       assert.deepEqual(meta, { method, primitive: 'line', sigma: 0.02, ...(tls2 ? { delta: 0.2, mode: 'split' } : {}) });
-      assert.deepEqual(failed, [], 'split mode: no cluster comes back empty');
       const points = scanPoints(loadLog('intel')[12]);
       const seg = pkg.segment(points, { step: 2, lowerBound: 0.1, upperBound: 0.5 });
       assert.deepEqual(j.segmentation.clusters, seg.clusters.map((c) => Array.from(c.indices)));
-      const expected = [], expectedBreaks = [];
+      const expected = [], expectedBreaks = [], expectedFailed = [];
+      let vectorized = 0;
       seg.clusters.forEach((c, k) => {
         if (c.indices.length < 3) return;
+        vectorized++;
         const v = pkg.vectorize(chainOf(points, c.indices), { method, sigma: 0.02, delta: 0.2 });
-        assert.ok(v.ok && v.count >= 1, `cluster ${k}`);
+        if (!v.ok) expectedFailed.push({ cluster: k, boundary: v.failure.boundary, delta: v.failure.delta, message: v.failure.message });
         for (const b of v.breaks) expectedBreaks.push({ cluster: k, boundary: b.boundary, crossingDistance: b.crossingDistance, delta: b.delta });
         for (let q = 0; q < v.count; q++) {
           expected.push({ cluster: k, indices: [v.indices[2 * q], v.indices[2 * q + 1]], coordinates: Array.from(v.segments.subarray(4 * q, 4 * q + 4)), rms: v.rms[q] });
         }
       });
+      // Split mode fails only where no partition into ranges within sigma exists at all (the package's report).
+      assert.deepEqual(failed.map(({ crossingDistance, ...f }) => f), expectedFailed);
+      assert.ok(failed.length < vectorized, `${method}: ${failed.length} of ${vectorized} clusters failed`);
+      if (failed.length) assert.match(r.err, new RegExp(`^rtl: warning: ${method} found no segments for ${failed.length} cluster\\(s\\)`));
+      else assert.equal(r.err, '');
       assert.equal(got.length, expected.length);
       got.forEach((s, q) => {
         assert.equal(s.cluster, expected[q].cluster);
@@ -132,7 +137,6 @@ describe('rtl CLI: vectorization', { timeout: 180000 }, () => {
         const v = pkg.vectorize(chainOf(points, c), { method, split: false });
         if (!v.ok) failed.push({ cluster: k, ...v.failure });
       });
-      assert.ok(failed.length >= 2, `${log} scan ${scan}: ${failed.length} strict failures`);
       assert.equal(j.vectorization.failed.length, failed.length);
       j.vectorization.failed.forEach((f, q) => {
         assert.equal(f.cluster, failed[q].cluster);
@@ -145,10 +149,15 @@ describe('rtl CLI: vectorization', { timeout: 180000 }, () => {
       for (const s of j.vectorization.segments) assert.ok(!failed.some((f) => f.cluster === s.cluster));
       assert.deepEqual(j.vectorization.breaks, []);
       assert.match(r.err, new RegExp(`^rtl: warning: ${method} found no segments for ${failed.length} cluster\\(s\\)`));
-      // The default (split mode) vectorizes every one of them.
+      // The default (split mode) vectorizes every one whose failing corner has crossing lines: it breaks there.
       const split = JSON.parse(rtl([`tests/data/${log}.log`, '--scan', String(scan), '-m', method]).out).vectorization;
-      assert.deepEqual(split.failed, []);
-      for (const f of failed) assert.ok(split.segments.some((s) => s.cluster === f.cluster), `cluster ${f.cluster} has segments`);
+      const crossing = failed.filter((f) => Number.isFinite(f.crossingDistance));
+      assert.ok(crossing.length >= 1, `${log} scan ${scan}: ${crossing.length} failures at a crossing corner`);
+      for (const f of crossing) {
+        assert.ok(split.segments.some((s) => s.cluster === f.cluster), `cluster ${f.cluster} has segments`);
+        assert.ok(split.breaks.some((b) => b.cluster === f.cluster), `cluster ${f.cluster} breaks`);
+        assert.ok(!split.failed.some((g) => g.cluster === f.cluster));
+      }
     }
   });
 
