@@ -157,7 +157,10 @@ async function loadPoints(rtl, opts) {
       points: Float64Array.from(s.points), dim: 2,
       source: {
         type: 'carmen', file: opts.file, scan: opts.scan, scans: scans.length, line: s.line,
-        ...(s.maxRange !== undefined ? { maxRange: s.maxRange } : {}), pose: { x: s.x, y: s.y, theta: s.theta },
+        // The no-return value used (ranges >= it are gaps) and where it came from (the option, the log, ...).
+        ...(s.maxRange !== undefined ? { maxRange: round(s.maxRange) } : {}),
+        ...(s.maxRangeSource !== undefined ? { maxRangeSource: s.maxRangeSource } : {}),
+        pose: { x: s.x, y: s.y, theta: s.theta },
       },
     };
   }

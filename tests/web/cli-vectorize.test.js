@@ -187,10 +187,11 @@ describe('rtl CLI: vectorization', { timeout: 180000 }, () => {
   test('--max-range: ranges at or beyond it are gaps; by default the log\'s own no-return value (reported in "source")', () => {
     const text = readFileSync(join(DATA, 'csail.log'), 'utf8');
     const scans = loadLog('csail');
-    const detected = pkg.readCarmenLog(text)[5].maxRange;
+    const { maxRange: detected, maxRangeSource } = pkg.readCarmenLog(text)[5];
     assert.ok(Number.isFinite(detected) && detected > 0);
     const def = JSON.parse(rtl(['tests/data/csail.log', '--scan', '5']).out);
-    assert.equal(def.source.maxRange, detected);
+    assert.ok(Math.abs(def.source.maxRange - detected) < 1e-9, `${def.source.maxRange} vs ${detected}`);
+    assert.equal(def.source.maxRangeSource, maxRangeSource);
     const returns = scans[5].ranges.filter((x) => x > 0 && x < detected).length;
     assert.equal(def.returns, returns);
     const r = rtl(['tests/data/csail.log', '--scan', '5', '--max-range', '4', '-m', 'dp', '-f', 'svg']);
@@ -198,6 +199,8 @@ describe('rtl CLI: vectorization', { timeout: 180000 }, () => {
     assert.match(r.out, /<title>csail\.log scan 5, max range 4 m; CAR step 2/);
     const j = JSON.parse(rtl(['tests/data/csail.log', '--scan', '5', '--max-range', '4']).out);
     assert.equal(j.source.maxRange, 4);
+    assert.equal(j.source.maxRangeSource, pkg.readCarmenLog(text, { maxRange: 4 })[5].maxRangeSource);
+    assert.notEqual(j.source.maxRangeSource, maxRangeSource);
     const near = scans[5].ranges.map((x) => x > 0 && x < 4);
     assert.equal(j.returns, near.filter(Boolean).length);
     assert.ok(j.returns < def.returns, `${j.returns} < ${def.returns}`);
