@@ -587,7 +587,7 @@ function wrap(m) {
   }
 
   // CARMEN logs: every FLASER line is a scan; beams without a return (range <= 0, non-finite or >= maxRange) are NaN
-  // points. Text as a string (UTF-8 encoded here) or the file's bytes.
+  // points; maxRange is the log's own no-return value unless given. Text as a string (UTF-8 encoded here) or bytes.
   function readCarmenLog(text, opts) {
     const fn = 'readCarmenLog';
     let u8;
@@ -596,7 +596,8 @@ function wrap(m) {
     else if (ArrayBuffer.isView(text)) u8 = new Uint8Array(text.buffer, text.byteOffset, text.byteLength);
     else throw new TypeError(`${fn}: text must be a string, an ArrayBuffer or a typed array of the file, got ${describe(text)}`);
     const o = options(opts, fn, ['maxRange']);
-    const maxRange = num(o, 'maxRange', fn, 80, { min: 0, exclusiveMin: true });
+    // Default: detected from the log (NaN to the C++ reader); Infinity keeps every finite positive range.
+    const maxRange = o.maxRange === Infinity ? Infinity : num(o, 'maxRange', fn, NaN, { min: 0, exclusiveMin: true });
     const r = withHeap(fn, [u8], (p, n) => m.readCarmenLog(p, n, maxRange));
     const scans = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
@@ -604,6 +605,7 @@ function wrap(m) {
       scans.push({
         points: r.points.slice(2 * b, 2 * e), ranges: r.ranges.slice(b, e),
         x: r.x[k], y: r.y[k], theta: r.theta[k], timestamp: r.timestamp[k], line: r.line[k],
+        maxRange: r.maxRange, maxRangeSource: r.maxRangeSource,
       });
     }
     return scans;

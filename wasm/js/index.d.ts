@@ -353,6 +353,16 @@ export interface CarmenScan {
   timestamp: number;
   /** 1-based line of the FLASER record in the log */
   line: number;
+  /** the no-return value used (the same for every scan of a log): ranges >= it are gaps */
+  maxRange: number;
+  /** where maxRange came from: the option, a PARAM line of the log (e.g. robot_front_laser_max), the top range many
+   *  beams of the log hit exactly, or 80 m when the log gives no evidence */
+  maxRangeSource: 'explicit' | 'parameter' | 'recurring' | 'default';
+}
+export interface CarmenOptions {
+  /** ranges >= maxRange are gaps (> 0; Infinity keeps every finite positive range). Default: detected from the
+   *  log itself (its PARAM lines, or the maximum range that recurs in it) */
+  maxRange?: number;
 }
 export type OrganizedLayout = 'column-major' | 'row-major';
 export interface OrganizedLidarOptions {
@@ -474,11 +484,12 @@ export interface RTL {
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
   toTikz(drawing: Drawing, options?: TikzOptions): string;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
-  /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0,
-   *  not finite, or >= maxRange, default 80 m) are NaN points. RangeError naming the line for a malformed line. */
-  readCarmenLog(text: string | ArrayBuffer | ArrayBufferView, options?: { maxRange?: number }): CarmenScan[];
+  /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0, not
+   *  finite, or >= maxRange: the log's own no-return value unless given) are NaN points. RangeError starting
+   *  "readCarmenLog: line N:" for a malformed line, a non-finite pose or timestamp. */
+  readCarmenLog(text: string | ArrayBuffer | ArrayBufferView, options?: CarmenOptions): CarmenScan[];
   /** alias of readCarmenLog */
-  readCarmen(text: string | ArrayBuffer | ArrayBufferView, options?: { maxRange?: number }): CarmenScan[];
+  readCarmen(text: string | ArrayBuffer | ArrayBufferView, options?: CarmenOptions): CarmenScan[];
   readOrganizedLidar(data: ArrayBuffer | ArrayBufferView, options: OrganizedLidarOptions): OrganizedCloud;
   StreamSegmenter: new (options?: StreamSegmenterOptions) => StreamSegmenter;
   TfTree: new (root: string, options?: { dim?: Dim }) => TfTree;

@@ -29,12 +29,25 @@ val readOrganizedLidar(std::uintptr_t ptr, std::size_t len, std::size_t beams, i
   }, "organised LiDAR");
 }
 
+const char* sourceName(rtl::CarmenMaxRangeSource s) {
+  switch (s) {
+    case rtl::CarmenMaxRangeSource::Explicit: return "explicit";
+    case rtl::CarmenMaxRangeSource::Parameter: return "parameter";
+    case rtl::CarmenMaxRangeSource::Recurring: return "recurring";
+    default: return "default";
+  }
+}
+
 // All scans flat: points/ranges concatenated, scan k = beams offsets[k]..offsets[k+1]; per-scan pose and line.
+// maxRange NaN: the reader detects the log's no-return value.
 val readCarmenLog(std::uintptr_t ptr, std::size_t len, double maxRange) {
   return guarded([&] {
     MemoryBuffer buf(bytes(ptr), len);
     std::istream in(&buf);
-    const auto scans = rtl::readCarmenLog<double>(in, maxRange);
+    rtl::CarmenOptions options;
+    options.max_range = maxRange;
+    const auto log = rtl::readCarmenLogDetailed<double>(in, options);
+    const auto& scans = log.scans;
     std::vector<double> pts, ranges, x, y, theta, stamp, line;
     std::vector<std::uint32_t> offsets{0};
     for (const auto& s : scans) {
@@ -56,6 +69,8 @@ val readCarmenLog(std::uintptr_t ptr, std::size_t len, double maxRange) {
     r.set("theta", f64(theta));
     r.set("timestamp", f64(stamp));
     r.set("line", f64(line));
+    r.set("maxRange", static_cast<double>(log.max_range));
+    r.set("maxRangeSource", val(sourceName(log.max_range_source)));
     return r;
   }, "CARMEN log");
 }
