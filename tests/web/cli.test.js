@@ -2,9 +2,11 @@
 // (1 = bad data, 2 = bad usage). Numbers are checked against an independent plain-JavaScript TLS fit.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
+import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { packAndInstall } from '../js/helpers.mjs';
 import { DATA, loadLog, REPO, returnsOf, runCli as rtl, sameLine, tlsFit, xyOf } from './helpers.js';
 
 // Little-endian float32 x,y,z,intensity records of the organised binary scan, read independently of the package.
@@ -29,6 +31,20 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     assert.match(r.out, /up to N-1 previous points\s+\(default 2: consecutive points are linked/);
     assert.match(r.out, /"indices": \[begin, end\),\s+half-open\s+indices into its cluster's chain/);
     assert.match(r.out, /Default \(split mode\): the polyline breaks/);
+  });
+
+  test('the command works installed from the npm pack tarball (npx rtl; every file of bin/ is shipped)', { timeout: 120000 }, () => {
+    const dir = mkdtempSync(join(tmpdir(), 'rtl-cli-pack-'));
+    try {
+      const { app } = packAndInstall(dir);
+      copyFileSync(join(DATA, 'intel.log'), join(app, 'intel.log'));
+      const r = spawnSync('npx', ['--offline', 'rtl', 'intel.log', '--scan', '5', '-m', 'dp', '-f', 'svg'], { cwd: app, encoding: 'utf8', timeout: 60000 });
+      assert.equal(r.status, 0, r.stderr);
+      assert.match(r.stdout, /^<svg[\s\S]*<title>intel\.log scan 5; CAR step 2, bounds 0\.1-0\.5 m; DP epsilon 0\.09 m; /);
+      assert.equal(r.stdout, rtl(['tests/data/intel.log', '--scan', '5', '-m', 'dp', '-f', 'svg']).out, 'the same figure as from the checkout');
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
   });
 
   test('--version prints the package version', () => {
