@@ -319,6 +319,17 @@ TEST(CarmenNoReturn, ParametersAndTheirLimits)
     const auto pc = rtl::readCarmenLogDetailed<double>(c);
     EXPECT_EQ(pc.max_range_line, 4u);
     EXPECT_DOUBLE_EQ(pc.max_range, 30.0);
+    // A parameter that rounds to 0 in float is unusable (found by fuzz_carmen_log), as is such an explicit value.
+    const std::string tiny_param = acesLikeLog("PARAM robot_front_laser_max 1e-320\n");
+    std::istringstream td(tiny_param), tf(tiny_param);
+    EXPECT_EQ(rtl::readCarmenLogDetailed<double>(td).max_range_source, rtl::CarmenMaxRangeSource::Parameter);
+    const auto pt = rtl::readCarmenLogDetailed<float>(tf);
+    EXPECT_EQ(pt.max_range_source, rtl::CarmenMaxRangeSource::Recurring);
+    EXPECT_FLOAT_EQ(pt.max_range, 50.f);
+    rtl::CarmenOptions tiny;
+    tiny.max_range = 1e-320;
+    std::istringstream te(tiny_param);
+    EXPECT_THROW(rtl::readCarmenLogDetailed<float>(te, tiny), std::invalid_argument);
     // No evidence (every range distinct, no parameter): 80 m, the former default.
     std::istringstream d("FLASER 4 1 2 85 3 0 0 0 0 0 0 1 h 1\nFLASER 4 1.5 2.5 79 3.5 0 0 0 0 0 0 2 h 2\n");
     const auto pd = rtl::readCarmenLogDetailed<double>(d);

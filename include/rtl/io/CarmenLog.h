@@ -302,7 +302,7 @@ namespace rtl
     template<typename E>
     CarmenLog<E> readCarmenLogDetailed(std::istream &in, const CarmenOptions &options = {})
     {
-        if (!std::isnan(options.max_range) && !(options.max_range > 0))
+        if (!std::isnan(options.max_range) && !(static_cast<E>(options.max_range) > E(0)))   // (also in E)
             throw std::invalid_argument("readCarmenLog: max_range must be positive (or NaN to detect it), got " +
                                         std::to_string(options.max_range));
         CarmenLog<E> log;
@@ -317,7 +317,8 @@ namespace rtl
         {
             const E recurring = carmenRecurringMaxRange(log.scans).first;
             const E from_param = static_cast<E>(param.value);
-            if (param.line != 0 && !(recurring < from_param))
+            // (a parameter that rounds to 0 in E, e.g. 1e-320 as a float, is unusable)
+            if (param.line != 0 && from_param > E(0) && !(recurring < from_param))
             {
                 log.max_range = from_param;
                 log.max_range_source = CarmenMaxRangeSource::Parameter;
