@@ -170,7 +170,9 @@ namespace rtl
 
             //! Split mode (an addition to RTL, default false = RTL's strict behaviour and return values): where a
             //! corner cannot be met within delta, the polyline breaks there, so the result is several polylines
-            //! that together cover the chain (false then only for invalid input, or 3 points that fit no line).
+            //! that together cover the chain. Where no partition into ranges of >= 2 points fitting sigma exists
+            //! at all (e.g. 3 points forming a corner), consecutive ranges may share one point (see indices()), so
+            //! split mode returns false only for invalid input (< 2 points, non-finite, invalid sigma or delta).
             void setSplitAtInfeasibleCorners(bool split) { pipeline.setSplit(split); }
             [[nodiscard]] bool splitAtInfeasibleCorners() const { return pipeline.split(); }
 
@@ -185,6 +187,11 @@ namespace rtl
                 }
                 return true;
             }
+            //! Half-open chain ranges [first, end) of the segments, in chain order. Strict mode: a partition of
+            //! [0, N). Split mode: they cover [0, N) in order and adjoin (next first == end), except that they may
+            //! overlap by one point (next first == end - 1) on chains that no partition fits; a corner at such a
+            //! shared point is continuous when the lines cross within delta of it, else a break.
+            const std::vector<IndexType> &indices() const { return this->idx; }
             //! The segments of all polylines, in chain order (segment i lies on approximations()[i]).
             std::vector<OutputType> lineSegments() const { return pipeline.lineSegments(); }
             //! Polyline vertices: segments + 1 per polyline, polyline after polyline (one polyline unless split).
@@ -193,7 +200,8 @@ namespace rtl
             //! after a false return). Polyline p has segments [o[p], o[p+1]) and vertices [o[p] + p, o[p+1] + p].
             const std::vector<size_t> &polylineOffsets() const { return pipeline.polylineOffsets(); }
             //! Split mode: each break (boundary = first chain index of the range that starts a new polyline, the
-            //! crossing distance of the two lines there, delta); empty when none.
+            //! crossing distance of the two lines there, from the boundary midpoint or the shared point, delta);
+            //! empty when none.
             const std::vector<CornerReport> &breaks() const { return pipeline.breaks(); }
             //! Strict mode, after a false return because no partition meets delta: the corner that cannot be met
             //! (the furthest one the exact search reached, with the smallest crossing distance tried there);

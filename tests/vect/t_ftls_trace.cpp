@@ -1,6 +1,7 @@
 // FTLS/AFTLS traces (FtlsTrace.h, issue 13 item 1): the replayed trace ends in exactly the untraced result on every
-// chain of tests/data (strict and split mode, three settings), and the events' numbers agree with independent
-// recomputation (trial errors, corner distances, optimizer totals, the AFTLS choice).
+// chain of tests/data (strict and split mode, three settings, split mode's cover with shared points included), and
+// the events' numbers agree with independent recomputation (trial errors, corner distances, optimizer totals, the
+// AFTLS choice).
 #include <cmath>
 #include <limits>
 #include <string>
@@ -63,7 +64,9 @@ namespace
                     const double ref = e.end - e.first <= 2 ? 0.0 : refFit<2>(pts, e.first, e.end).lineErr();
                     EXPECT_NEAR(e.meanSquaredError, ref, 1e-9 + 1e-6 * ref);
                     if (std::abs(ref - e.sigma * e.sigma) > 1e-7)
+                    {
                         EXPECT_EQ(e.pass, e.end - e.first <= 2 || ref < e.sigma * e.sigma) << e.first << " " << e.end;
+                    }
                 }
                 else if constexpr (std::is_same_v<E, rtl::FtlsRange>)
                 {
@@ -78,7 +81,9 @@ namespace
                     const auto &v = r.ranges[e.branch];
                     EXPECT_LT(e.index + 1, v.size());
                     if (e.index + 1 < v.size())
+                    {
                         EXPECT_EQ(v[e.index].second, e.boundary);
+                    }
                     EXPECT_EQ(e.ok, e.crossingDistance <= e.delta);
                 }
                 else if constexpr (std::is_same_v<E, rtl::FtlsRepair>)
@@ -165,7 +170,7 @@ namespace
     void checkAll(const char *name)
     {
         const auto all = laserChains();
-        size_t repairs = 0, moves = 0, infeasible = 0, trials = 0;
+        size_t repairs = 0, moves = 0, infeasible = 0, trials = 0, covers = 0;
         for (const auto &[sigma, delta] : {std::pair{0.03, 0.3}, std::pair{0.03, 3.0}, std::pair{0.01, 0.3}})
             for (bool split : {false, true})
             {
@@ -206,14 +211,26 @@ namespace
                         moves += std::holds_alternative<rtl::FtlsMove>(ev);
                         infeasible += std::holds_alternative<rtl::FtlsInfeasible>(ev);
                         trials += std::holds_alternative<rtl::FtlsTrial>(ev);
+                        // The cover search (ranges may share a point) runs only in split mode, after `infeasible`.
+                        if (const auto *rep = std::get_if<rtl::FtlsRepair>(&ev); rep && rep->method == rtl::FtlsCoverSearch)
+                        {
+                            ++covers;
+                            EXPECT_TRUE(split);
+                            EXPECT_TRUE(r.infeasible);
+                            EXPECT_EQ(rep->first, 0u);
+                            EXPECT_EQ(rep->end, pts.size());
+                        }
                     }
                 }
             }
         EXPECT_GT(repairs, 10u);
         EXPECT_GT(infeasible, 10u);
         EXPECT_GT(trials, 1000u);
+        EXPECT_GT(covers, 0u);
         if (std::string(name) == "AFTLS")
+        {
             EXPECT_GT(moves, 100u);
+        }
     }
 }
 

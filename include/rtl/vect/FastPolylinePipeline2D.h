@@ -10,7 +10,10 @@
 // - Strict mode (default, RTL's behaviour): false when no partition exists; failure() names the corner.
 //   Split mode (setSplitAtInfeasibleCorners(true), issue 12 item 1): the exact search may break the polyline at
 //   corners that cannot be met within delta (fewest breaks), so the result is several polylines covering the
-//   whole chain; polylineOffsets() and breaks() describe them.
+//   whole chain; polylineOffsets() and breaks() describe them. Where no partition into fitting ranges exists at
+//   all (e.g. 3, 5 or 7 points whose short ranges do not fit), PartitionSearch2D::cover() lets consecutive ranges
+//   share one point, so split mode returns false only for invalid input (fewer than 2 points, non-finite points,
+//   invalid sigma or delta).
 // - Observer (last, default NoTrace): the events of FtlsTrace.h, from every stage.
 #pragma once
 
@@ -130,10 +133,17 @@ namespace rtl::vect_detail
             {
                 search.setAllowBreaks(true);
                 ok = search(pts, prec, lines, idx);
+                int method = FtlsSplitSearch;
+                if (!ok)
+                {
+                    // No partition into fitting ranges at all: cover with ranges that may share a point.
+                    ok = search.cover(pts, prec, lines, idx);
+                    method = FtlsCoverSearch;
+                }
                 if (ok)
                 {
                     if constexpr (Observer::enabled)
-                        reportRanges(FtlsSplitSearch, pts.size(), idx);
+                        reportRanges(method, pts.size(), idx);
                     breaks_ = search.breaks();
                     multi = search.polylineStarts().size() > 1;
                 }

@@ -13,7 +13,9 @@
 //   branch kept (without a `choice`, the result is ranges[0]: FTLS, or AFTLS when extraction itself failed and the
 //   exact search, a `repair` of branch 0, decided). An `infeasible` event ends a strict call with no result
 //   (ranges = []); in split mode a `repair` of branch 0 with method 6 (split search) follows it and gives the
-//   result (several polylines). The `segment` events then list every final range with its polyline
+//   result (several polylines); when no partition into fitting ranges exists at all, that repair has method 8
+//   (cover search) instead, and its ranges, in chain order, may share one point with the next (end = next first
+//   + 1); the replay is the same (the repair spans the whole chain). The `segment` events then list every final range with its polyline
 //   segment: they equal indices(), polylineOffsets() and lineSegments() exactly.
 // Nothing is reported for a call that fails its preconditions (fewer than 2 points, invalid sigma or delta, a
 // non-finite point): the result is then empty, as the empty replay.
@@ -79,12 +81,13 @@ namespace rtl
     enum FtlsRepairMethod : int
     {
         FtlsMoveBoundary = 1, FtlsMerge = 2, FtlsThirds = 3, FtlsWindow = 4, FtlsExactSearch = 5, FtlsSplitSearch = 6,
-        FtlsBridge = 7
+        FtlsBridge = 7, FtlsCoverSearch = 8
     };
 
     //! A repair of `branch` replaced the ranges inside the chain span [first, end) by the `inserted` ranges of the
     //! `repairRange` events that follow. method: FtlsRepairMethod (1 move the boundary, 2 merge, 3 three equal parts,
-    //! 4 re-partition a window, 5 exact search over the whole chain, 6 split-mode search, 7 unchecked bridge).
+    //! 4 re-partition a window, 5 exact search over the whole chain, 6 split-mode search, 7 unchecked bridge,
+    //! 8 split-mode cover whose consecutive ranges may share one point, when no partition exists at all).
     struct FtlsRepair
     {
         static constexpr const char *kind = "repair";

@@ -18,6 +18,14 @@
 // fewest ranges, then the least squared error. Without breaks, a false return proves that no valid partition
 // exists, and failure() says where: the furthest corner the search reached (the largest boundary b, 2 <= b <= N-2,
 // ending a valid partition of [0, b)) with the smallest crossing distance over all line pairs tried there.
+//
+// cover() is split mode's last resort, for chains that no partition fits at all (e.g. 3 points forming a corner:
+// a range needs 2 points, so [0, 2) [2, 3) is impossible). Consecutive ranges may then share their boundary point
+// (range [s, e) followed by [e - 1, e')), so 2-point ranges always exist and a cover always exists for N >= 2. The
+// same kind of dynamic programme finds the fewest ranges, then the least total squared residual (each range fits
+// sigma, >= 2 points); state = the chain prefix [0, y) covered by ranges whose last one ends at y, extended by a
+// fitting range starting at y or at y - 1. Corners are judged afterwards as everywhere (cornerDistanceSquared; at a
+// shared point the reference is that point): within delta the polyline continues, else it breaks there.
 #pragma once
 
 #include <algorithm>
@@ -36,6 +44,8 @@ namespace rtl
     //! range after the corner; crossingDistance: distance of the two lines' crossing from the midpoint of points
     //! boundary - 1 and boundary (the continuity criterion's reference; +infinity for parallel lines, or when the
     //! failure is not at a corner, e.g. 3 points that fit no line: then boundary is 0); delta: the bound it exceeds.
+    //! A break at a point shared by two ranges (split mode's cover, PartitionSearch2D::cover): boundary is the
+    //! shared point, the first of the range after the corner, and the distance is measured from that point.
     struct CornerReport
     {
         size_t boundary{0};
@@ -57,6 +67,21 @@ namespace rtl
             const VectorND<2, C> m = (pts[boundary - 1].template cast<C>() + pts[boundary].template cast<C>()) * C(0.5);
             return (x - m).lengthSquared();
         }
+
+        //! The corner criterion between a range ending at `prev_end` and the next one starting at `next_first`:
+        //! the distance of the crossing from the midpoint of pts[prev_end - 1] and pts[next_first], i.e. the two
+        //! boundary points (next_first == prev_end) or the shared point (next_first == prev_end - 1, cover()).
+        template<class Approximation, class Points>
+        typename Approximation::ComputeType cornerDistanceSquared(const Points &pts, const Approximation &l1, const Approximation &l2, size_t prev_end,
+                                                                  size_t next_first)
+        {
+            typedef typename Approximation::ComputeType C;
+            VectorND<2, C> x;
+            if (!Approximation::getCrossingCompute(l1, l2, x))
+                return std::numeric_limits<C>::infinity();
+            const VectorND<2, C> m = (pts[prev_end - 1].template cast<C>() + pts[next_first].template cast<C>()) * C(0.5);
+            return (x - m).lengthSquared();
+        }
     }
 
     template<class SumArray, class Approximation>
@@ -76,7 +101,8 @@ namespace rtl
         void setAllowBreaks(bool allow) { allow_breaks = allow; }
 
         //! Fills `lines`/`indices` with the best valid partition of the chain of `sum_array` (points `pts`). False if
-        //! none exists (only without breaks, or for 3-point chains that fit no line) or for fewer than 2 points.
+        //! none exists (without breaks; with breaks, when no partition into fitting ranges exists at all, e.g. 3, 5
+        //! or 7 points whose short ranges do not fit: then cover() helps) or for fewer than 2 points.
         bool operator()(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines, std::vector<IndexType> &indices)
         {
             lines.clear();
@@ -112,17 +138,61 @@ namespace rtl
             std::reverse(indices.begin(), indices.end());
             for (const auto &r : indices)
                 lines.emplace_back(a.sums(r.first, r.second));
-            // Breaks: where consecutive lines do not meet within delta (the states that took a break).
-            starts.push_back(0);
-            for (size_t i = 1; i < lines.size(); ++i)
+            findBreaks(pts, lines, indices);
+            return true;
+        }
+
+        //! Split mode's last resort (see the file comment): the cover of [0, N) by the fewest fitting ranges of
+        //! >= 2 points, then the least total squared residual, where consecutive ranges are in order and either
+        //! adjoin or share one point. Breaks and polylineStarts() as after operator(). False only for N < 2.
+        bool cover(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines, std::vector<IndexType> &indices)
+        {
+            lines.clear();
+            indices.clear();
+            starts.clear();
+            break_reports.clear();
+            failure_ = CornerReport{0, std::numeric_limits<double>::infinity(), static_cast<double>(delta_)};
+            const size_t n = a.size() > 0 ? a.size() - 1 : 0;
+            if (n < 2 || n > pts.size())
+                return false;
+            const Cost unreached{std::numeric_limits<size_t>::max(), ComputeType(0)};
+            cover_cost.assign(n + 1, unreached);
+            cover_from.assign(n + 1, 0);
+            cover_prev.assign(n + 1, 0);
+            cover_cost[0] = Cost{0, ComputeType(0)};
+            // cover_cost[y] is final once every range ending at y (starting before y - 1) has been tried.
+            for (size_t s = 0; s + 2 <= n; ++s)
             {
-                const ComputeType d2 = vect_detail::crossingDistanceSquared(pts, lines[i - 1], lines[i], indices[i].first);
-                if (!(d2 <= delta2))
+                // A range from s follows a cover ending at s (adjoining) or at s + 1 (sharing point s).
+                size_t prev = s;
+                if (s > 0 && cheaper(cover_cost[s + 1], cover_cost[prev]))
+                    prev = s + 1;
+                const Cost base = cover_cost[prev];
+                if (base.ranges == unreached.ranges)
+                    continue;
+                for (size_t e = s + 2; e <= n; ++e)
                 {
-                    starts.push_back(i);
-                    break_reports.push_back(CornerReport{indices[i].first, static_cast<double>(std::sqrt(d2)), static_cast<double>(delta_)});
+                    ComputeType total;
+                    const bool ok = fits(a, s, e, total);
+                    if (!ok && beyondReach(total, s, n))
+                        break;
+                    const Cost c{base.ranges + 1, base.error + total};
+                    if (ok && cheaper(c, cover_cost[e]))
+                    {
+                        cover_cost[e] = c;
+                        cover_from[e] = s;
+                        cover_prev[e] = prev;
+                    }
                 }
             }
+            if (cover_cost[n].ranges == unreached.ranges)
+                return false;   // not reached for n >= 2: 2-point ranges always fit
+            for (size_t e = n; e > 0; e = cover_prev[e])
+                indices.emplace_back(cover_from[e], e);
+            std::reverse(indices.begin(), indices.end());
+            for (const auto &r : indices)
+                lines.emplace_back(a.sums(r.first, r.second));
+            findBreaks(pts, lines, indices);
             return true;
         }
 
@@ -148,6 +218,35 @@ namespace rtl
         std::vector<size_t> starts;
         std::vector<CornerReport> break_reports;
         CornerReport failure_;
+
+        struct Cost
+        {
+            size_t ranges;
+            ComputeType error;
+        };
+        std::vector<Cost> cover_cost;
+        std::vector<size_t> cover_from, cover_prev;   // start of the last range ending at y; end of the cover before it
+
+        static bool cheaper(const Cost &p, const Cost &q)
+        {
+            if (p.ranges != q.ranges) return p.ranges < q.ranges;
+            return p.error < q.error;
+        }
+
+        //! Breaks: where consecutive lines do not meet within delta (the polyline starts a new one there).
+        void findBreaks(const std::vector<VectorType> &pts, const std::vector<Approximation> &lines, const std::vector<IndexType> &indices)
+        {
+            starts.push_back(0);
+            for (size_t i = 1; i < lines.size(); ++i)
+            {
+                const ComputeType d2 = vect_detail::cornerDistanceSquared(pts, lines[i - 1], lines[i], indices[i - 1].second, indices[i].first);
+                if (!(d2 <= delta2))
+                {
+                    starts.push_back(i);
+                    break_reports.push_back(CornerReport{indices[i].first, static_cast<double>(std::sqrt(d2)), static_cast<double>(delta_)});
+                }
+            }
+        }
 
         static bool less(const State &p, const State &q)
         {
