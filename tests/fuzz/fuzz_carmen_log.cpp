@@ -30,9 +30,9 @@ namespace
                 const E r = s.ranges[i];
                 const bool gap = !(r > E(0)) || !std::isfinite(r) || !(r < log.max_range);
                 require(s.points[i].hasNaN() == gap);
-                if (!gap)   // a point lies at its range from the sensor
-                    require(std::abs(static_cast<double>(s.points[i].length()) - static_cast<double>(r)) <=
-                            1e-5 * static_cast<double>(r) + 1e-30);
+                if (!gap)   // a point lies at its range from the sensor (hypot: no overflow for ranges near 1e300)
+                    require(std::abs(std::hypot(static_cast<double>(s.points[i].x()), static_cast<double>(s.points[i].y())) -
+                                     static_cast<double>(r)) <= 1e-5 * static_cast<double>(r) + 1e-30);
                 no_return += std::isfinite(r) && r >= log.max_range ? 1 : 0;
             }
         }
