@@ -138,6 +138,7 @@ int main(int argc, char **argv)
         {
             rtl::LaTeXDoc doc(out_dir, "scan_report");
             doc.setEscapeCaptions(true);   // the captions are plain text (the log's path may hold '_' or '%')
+            doc.setStopOnFailure(true);    // without a PDF, keep the LaTeX sources (RTL's default removes them)
             doc.addLE(fig, "Scan " + std::to_string(index) + " of " + log + ": " + std::to_string(clusters.size()) +
                                    " clusters (colours) and " + std::to_string(segments.size()) + " segments (black)");
             doc.addLE(walls, "The segments as 1 m walls");

@@ -127,11 +127,25 @@ TEST(LaTeXDoc, StopOnFailureSkipsMoveAndRemove)
     EXPECT_EQ(log.steps, (std::vector<std::string>{"compile stop.tex"}));
 }
 
-TEST(LaTeXDoc, DefaultRemovalKeepsTheSourcesWhenNoPdfWasMade)
+TEST(LaTeXDoc, DefaultRemovalRemovesTheTemporaryDirectoryEvenWithoutPdfAsRtl)
+{
+    std::string dir = outDir("remove", "remove"), tmp;
+    {
+        LaTeXDoc doc(dir, "remove");
+        doc.setCompileTex([](const std::string &, const std::string &) { return false; });
+        tmp = doc.tmpDir();
+        EXPECT_FALSE(doc.finish());
+    }
+    EXPECT_FALSE(fs::exists(fs::path(tmp)));
+    EXPECT_FALSE(fs::exists(fs::path(dir) / "remove.pdf"));
+}
+
+TEST(LaTeXDoc, StopOnFailureKeepsTheSourcesWhenNoPdfWasMade)
 {
     std::string dir = outDir("keep", "keep"), tmp;
     {
         LaTeXDoc doc(dir, "keep");
+        doc.setStopOnFailure(true);
         doc.setCompileTex([](const std::string &, const std::string &) { return false; });
         tmp = doc.tmpDir();
         EXPECT_FALSE(doc.finish());

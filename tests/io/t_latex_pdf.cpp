@@ -312,6 +312,7 @@ TEST(LaTeXPdf, MissingPdflatexIsReportedNotFatal)
         fs::path dir = fs::path(std::getenv("RTL_LATEX_CHILD"));
         EXPECT_FALSE(LaTeXDoc::pdflatexAvailable());
         LaTeXDoc doc(dir.string(), "nolatex");
+        doc.setStopOnFailure(true);   // keep the sources of the failed document (RTL's default removes them)
         LaTeXTikz2D le;
         le.addLine(Vector2f(0, 0), Vector2f(1, 1), "style={draw=red}");
         doc.addLE(le, "a figure");

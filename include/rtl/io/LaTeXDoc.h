@@ -27,11 +27,11 @@ namespace rtl
     //! directory. With setInlineFigures(true) the figures are \input into the main document instead (standalone
     //! package), so the whole report costs a single pdflatex run.
     //!
-    //! External steps never throw or abort: if pdflatex is not on PATH the document says so once on std::cerr,
-    //! keeps the LaTeX sources in the temporary directory and produces no PDF; a failed step is reported on
-    //! std::cerr and in problems(). Every step can be replaced (setMakeTmpDir, setCompileTex, ...); a replacement
-    //! returns true on success. The final compile, move and removal always all run (RTL), unless
-    //! setStopOnFailure(true). Captions are LaTeX, written as given (RTL), unless setEscapeCaptions(true).
+    //! External steps never throw or abort: if pdflatex is not on PATH the document says so once on std::cerr and
+    //! produces no PDF; a failed step is reported on std::cerr and in problems(). Every step can be replaced
+    //! (setMakeTmpDir, setCompileTex, ...); a replacement returns true on success. The final compile, move and
+    //! removal always all run (RTL: the temporary directory is removed even when no PDF was made), unless
+    //! setStopOnFailure(true), which keeps the LaTeX sources of a failed document for a later run. Captions are LaTeX, written as given (RTL), unless setEscapeCaptions(true).
     class LaTeXDoc
     {
     public:
@@ -41,7 +41,7 @@ namespace rtl
             tmp_dir = output_dir + "_tmp_" + name;
             make_tmp_dir = defaultMakeDir;
             make_output_dir = defaultMakeDir;
-            remove_tmp_dir = [this](const std::string &dir) { return defaultRemove(dir); };
+            remove_tmp_dir = [](const std::string &dir) { return defaultRemove(dir); };
             move_final_doc = defaultMove;
             compile_tex = [this](const std::string &tex, const std::string &dir) { return defaultCompile(tex, dir); };
             if (!make_tmp_dir(tmp_dir))
@@ -119,8 +119,8 @@ namespace rtl
 
         //! Writes and compiles the document, moves the PDF to the output directory and removes the temporary
         //! directory. As in RTL these steps are best-effort and always all run, in that order, even after a failed
-        //! compile (the default removal keeps the directory, with the LaTeX sources, when no PDF was made); with
-        //! setStopOnFailure(true) a failed write or compile skips the move and the removal. Returns true if
+        //! compile; with setStopOnFailure(true) a failed write or compile skips the move and the removal (so the
+        //! LaTeX sources stay in the temporary directory). Returns true if
         //! `<out_dir>/<out_name>.pdf` was produced. Called by the destructor; later calls do nothing and return the
         //! first result.
         bool finish()
@@ -253,11 +253,9 @@ namespace rtl
             return std::filesystem::is_directory(dir, ec);
         }
 
-        //! Removes the directory, except after finish() made no PDF: then the LaTeX sources stay for a later run.
-        bool defaultRemove(const std::string &dir) const
+        //! Removes the directory and everything in it (RTL's `rm -r`).
+        static bool defaultRemove(const std::string &dir)
         {
-            if (finished && !pdf_made)
-                return true;
             std::error_code ec;
             std::filesystem::remove_all(dir, ec);
             return !ec;
