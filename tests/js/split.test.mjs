@@ -91,15 +91,10 @@ test('real scans: split mode never comes back empty; polylines cover the chain; 
       const v = rtl.vectorize(xy, { method });
       const strict = rtl.vectorize(xy, { method, split: false });
       const n = xy.length / 2;
-      if (!v.ok) {
-        // Only where no partition into ranges of >= 2 points within sigma exists at all (an odd chain whose
-        // triples do not fit): checked exhaustively with fitLine.
-        assert.ok(n <= 9 && !partitionExists(xy, 0.03), `${what}: split mode has a result (${n} points)`);
-        assert.equal(strict.ok, false);
-        assert.match(v.failure.message, /^vectorize: /);
-        noPartition++;
-        return;
-      }
+      // Split mode never comes back empty: a valid chain always gets segments.
+      assert.equal(v.ok, true, `${what}: split mode has a result (${n} points)`);
+      assert.equal(v.failure, null, `${what}: no failure in split mode`);
+      const noPartitionHere = !strict.ok && n <= 9 && !partitionExists(xy, 0.03);
       const off = Array.from(v.polylineOffsets);
       assert.equal(off[0], 0);
       assert.equal(off[off.length - 1], v.count);
@@ -109,10 +104,17 @@ test('real scans: split mode never comes back empty; polylines cover the chain; 
         assert.equal(b.boundary, v.indices[2 * off[p + 1]], `${what}: break ${p} is where polyline ${p + 1} starts`);
         assert.ok(b.crossingDistance > b.delta && b.delta === 0.3, `${what}: a break only where delta cannot be met`);
       });
-      // Ranges consecutive and covering the chain; within a polyline, each segment starts where the previous ends.
+      // Ranges in order and covering the chain: consecutive where a partition exists; where none does (an odd chain
+      // whose triples do not fit sigma, checked exhaustively with fitLine), neighbouring ranges may share one point.
       assert.equal(v.indices[0], 0);
       assert.equal(v.indices[2 * v.count - 1], n);
-      for (let s = 1; s < v.count; s++) assert.equal(v.indices[2 * s], v.indices[2 * s - 1]);
+      let shared = 0;
+      for (let s = 1; s < v.count; s++) {
+        const gap = v.indices[2 * s - 1] - v.indices[2 * s];
+        assert.ok(gap === 0 || (gap === 1 && noPartitionHere), `${what}: range ${s} starts at the previous end (or shares its last point only where no partition exists)`);
+        shared += gap;
+      }
+      if (noPartitionHere) { assert.ok(shared >= 1, `${what}: no partition exists, so ranges share a point`); noPartition++; }
       for (let p = 0; p + 1 < off.length; p++) {
         for (let s = off[p] + 1; s < off[p + 1]; s++) {
           assert.deepEqual([v.segments[4 * s], v.segments[4 * s + 1]], [v.segments[4 * s - 2], v.segments[4 * s - 1]], `${what}: polyline ${p} is connected`);
@@ -123,7 +125,7 @@ test('real scans: split mode never comes back empty; polylines cover the chain; 
         assert.deepEqual(v, strict, `${what}: where strict mode succeeds, split mode gives the same result`);
       } else {
         strictFailed++;
-        assert.ok(v.breaks.length >= 1, `${what}: strict failed, so the split result breaks somewhere`);
+        assert.ok(v.breaks.length >= 1 || noPartitionHere, `${what}: strict failed at a corner, so the split result breaks somewhere`);
         assert.ok(strict.failure && strict.failure.message.startsWith('vectorize: '), `${what}: strict failure explained`);
         assert.equal(strict.count, 0);
       }
@@ -131,8 +133,8 @@ test('real scans: split mode never comes back empty; polylines cover the chain; 
     });
   }
   console.log(`# ${chains.length} clusters x 2 methods: strict failed on ${strictFailed}, split broke ${broken}, ` +
-    `no partition within sigma at all: ${noPartition}`);
-  assert.ok(noPartition <= 0.02 * chains.length, 'split mode leaves at most 2 % of the clusters without a result');
+    `no partition within sigma at all (covered with a shared point): ${noPartition}`);
+  assert.ok(strictFailed > 0 && noPartition > 0, 'the real scans exercise both a break and a shared-point cover');
 });
 
 test('toSvg/toTikz draw several polylines per cluster: one line per segment, nothing across a break', () => {

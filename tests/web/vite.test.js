@@ -104,7 +104,8 @@ describe('packed tarball in a consumer folder: the rtl command, and tests/vite-a
     let r = spawnSync(bin, ['--version'], { cwd: app, encoding: 'utf8' });
     assert.equal(r.status, 0, r.stderr);
     assert.equal(r.stdout.trim(), JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
-    writeFileSync(join(app, 'wall.csv'), '0,1\n1,1\n2,1\n3,1\n');
+    // Points 10 cm apart: the command segments first, and these are close enough to form one cluster.
+    writeFileSync(join(app, 'wall.csv'), '0,1\n0.1,1\n0.2,1\n0.3,1\n');
     r = spawnSync(bin, ['wall.csv', '--fit', '-f', 'svg'], { cwd: app, encoding: 'utf8' });
     assert.equal(r.status, 0, r.stderr);
     assert.match(r.stdout, /^<svg[\s>][\s\S]*<line [\s\S]*<\/svg>\s*$/);

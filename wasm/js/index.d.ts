@@ -126,7 +126,8 @@ export interface CornerReport {
   delta: number;
 }
 export interface VectorizeFailure extends CornerReport {
-  /** starts with "vectorize:"; names the corner and the numbers (boundary 0: no partition within sigma at all) */
+  /** starts with "vectorize:"; names the corner and the numbers (strict mode; boundary 0: no partition within sigma
+   *  at all) */
   message: string;
 }
 export interface VectorizeResult {
@@ -142,7 +143,8 @@ export interface VectorizeResult {
   /** planes: polygon k's vertices (3 numbers each); lines: empty array */
   polygons: Float64Array[];
   /** half-open point-index range of each segment: [first0, end0, first1, end1, ...] (2*count). TLS methods: the
-   *  ranges their lines were fitted to (consecutive, covering the chain). dp/rw: [key_k, key_k+1 + 1), the span between
+   *  ranges their lines were fitted to (consecutive, covering the chain; ftls/aftls in split mode, only on a chain that
+   *  no partition into ranges within sigma fits, neighbouring ranges share one point). dp/rw: [key_k, key_k+1 + 1), the span between
    *  two kept points, both included (neighbouring spans share their kept point). */
   indices: Uint32Array;
   /**
@@ -234,7 +236,7 @@ export type IaEvent =
  *  first, then appends [first, end); after extraction AFTLS copies ranges[0] to ranges[1]; a `repair` replaces, in
  *  ranges[branch], the ranges inside [first, end) by the `inserted` repairRange events after it; a `move` moves
  *  boundary `breakpoint` of branch 1 from `from` to `to`; `choice` names the branch kept (none: ranges[0]); an
- *  `infeasible` ends a strict call with no result (in split mode a repair of branch 0 with method 6 follows and
+ *  `infeasible` ends a strict call with no result (in split mode a repair of branch 0 with method 6, or 8, follows and
  *  gives the polylines). The `segment` events at the end equal indices, polylineOffsets and segments exactly. */
 export type FtlsEvent =
   /** a call begins: point count, sigma, delta; aftls: the optimizer runs; split: split mode */
@@ -250,8 +252,9 @@ export type FtlsEvent =
   | { kind: 'corner'; branch: 0 | 1; index: number; boundary: number; crossingDistance: number; delta: number; ok: boolean }
   /** a repair of `branch` replaced the ranges inside [first, end) by the next `inserted` repairRange events.
    *  method: 1 move the boundary, 2 merge, 3 three equal parts, 4 re-partition a window, 5 exact search over the
-   *  whole chain, 6 split-mode search, 7 unchecked bridge */
-  | { kind: 'repair'; branch: 0 | 1; method: 1 | 2 | 3 | 4 | 5 | 6 | 7; first: number; end: number; inserted: number }
+   *  whole chain, 6 split-mode search, 7 unchecked bridge, 8 split-mode cover whose ranges may share a point (only
+   *  after `infeasible`, when no partition within sigma exists) */
+  | { kind: 'repair'; branch: 0 | 1; method: 1 | 2 | 3 | 4 | 5 | 6 | 7 | 8; first: number; end: number; inserted: number }
   /** one range inserted by the preceding repair */
   | { kind: 'repairRange'; first: number; end: number }
   /** AFTLS optimizer: boundary `breakpoint` moved from `from` to `to`; totalError = total squared residual after it */
