@@ -36,6 +36,7 @@
 #include "rtl/vect/PrecArray.h"
 #include "rtl/vect/PrecArrayBlocked.h"
 #include "rtl/vect/PrecSums.h"
+#include "rtl/vect/SimplifyCompatible.h"
 #include "rtl/vect/SimplifyTrace.h"
 #include "rtl/vect/VectorizerPointElimination.h"
 
@@ -229,7 +230,7 @@ namespace rtl
     //! candidate when that has the lower total squared error (so AFTLS is never worse than FTLS).
     template<typename Element, typename Compute, class Observer = NoTrace>
     class VectorizerAFTLSPolyline2D
-        : public vect_detail::VectorizerFastPolyline2D<PrecArray2D<Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true, Observer>
+        : public vect_detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true, Observer>
     {
     public:
         VectorizerAFTLSPolyline2D() = default;
@@ -257,8 +258,9 @@ namespace rtl
         public:
             using typename Base::ElementType; using typename Base::ComputeType; using typename Base::VectorType;
             using typename Base::ApproximationType; using typename Base::IndexType;
-            // FTLS alone makes few range queries: blocked prefix sums; the optimizer makes many: the full array.
-            typedef std::conditional_t<optimize, PrecArray3D<ElementType, ComputeType>, PrecArrayBlocked<3, ElementType, ComputeType>> PrecArrayType;
+            // Blocked prefix sums for both: the optimizer's evaluations are capped (setMaxIterations), so the full
+            // array's 72 B per point of row writes would dominate long chains (AFTLS superlinear, issue 17 item 3).
+            typedef PrecArrayBlocked<3, ElementType, ComputeType> PrecArrayType;
             typedef typename ApproximationType::ConstrainedType OutputType;
 
             void setMaxSize(size_t size) { prec.resize(size); this->reserveBase(size); }

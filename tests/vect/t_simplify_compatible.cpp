@@ -1,0 +1,257 @@
+// simplifyCompatibleIndices (rtl/vect/SimplifyCompatible.h) against a literal, recursive transcription of the
+// simplify-js algorithm on point objects (the brute-force reference below), on hand-made cases where the segment
+// and the line distance decide differently, semicircles, random walks, duplicates, 3D and float input; and its
+// documented exceptions.
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "rtl/vect/SimplifyCompatible.h"
+
+namespace
+{
+    struct P { double x, y, z; };
+
+    // Reference: simplify-js, statement by statement, on objects; points are compared by index (object identity).
+    double sqDist(const P &a, const P &b, bool three)
+    {
+        const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+        volatile double s = dx * dx;   // volatile: no fused multiply-add in the reference either
+        s = s + dy * dy;
+        if (three) s = s + dz * dz;
+        return s;
+    }
+    double sqSegDist(const P &p, const P &p1, const P &p2, bool three)
+    {
+        double x = p1.x, y = p1.y, z = p1.z, dx = p2.x - x, dy = p2.y - y, dz = p2.z - z;
+        if (dx != 0 || dy != 0 || (three && dz != 0))
+        {
+            volatile double num = (p.x - x) * dx;
+            num = num + (p.y - y) * dy;
+            if (three) num = num + (p.z - z) * dz;
+            volatile double den = dx * dx;
+            den = den + dy * dy;
+            if (three) den = den + dz * dz;
+            const double t = num / den;
+            if (t > 1) { x = p2.x; y = p2.y; z = p2.z; }
+            else if (t > 0)
+            {
+                volatile double m = dx * t;
+                x = x + m;
+                m = dy * t;
+                y = y + m;
+                m = dz * t;
+                z = z + m;
+            }
+        }
+        dx = p.x - x; dy = p.y - y; dz = p.z - z;
+        volatile double s = dx * dx;
+        s = s + dy * dy;
+        if (three) s = s + dz * dz;
+        return s;
+    }
+    void dpStep(const std::vector<P> &pts, size_t first, size_t last, double sqTol, std::vector<size_t> &out, bool three)
+    {
+        double maxSq = sqTol;
+        size_t index = 0;
+        for (size_t i = first + 1; i < last; ++i)
+        {
+            const double d = sqSegDist(pts[i], pts[first], pts[last], three);
+            if (d > maxSq) { index = i; maxSq = d; }
+        }
+        if (maxSq > sqTol)
+        {
+            if (index - first > 1) dpStep(pts, first, index, sqTol, out, three);
+            out.push_back(index);
+            if (last - index > 1) dpStep(pts, index, last, sqTol, out, three);
+        }
+    }
+    std::vector<size_t> reference(const std::vector<P> &input, double tolerance, bool hq, bool three)
+    {
+        std::vector<size_t> all;
+        for (size_t i = 0; i < input.size(); ++i) all.push_back(i);
+        if (input.size() <= 2) return all;
+        const double sqTol = tolerance * tolerance;
+        std::vector<size_t> radial = all;
+        if (!hq)
+        {
+            radial = {0};
+            size_t prev = 0;
+            for (size_t i = 1; i < input.size(); ++i)
+                if (sqDist(input[i], input[prev], three) > sqTol) { radial.push_back(i); prev = i; }
+            if (prev != input.size() - 1) radial.push_back(input.size() - 1);
+        }
+        std::vector<P> pts;
+        for (size_t i : radial) pts.push_back(input[i]);
+        std::vector<size_t> local = {0};
+        dpStep(pts, 0, pts.size() - 1, sqTol, local, three);
+        local.push_back(pts.size() - 1);
+        std::vector<size_t> out;
+        for (size_t i : local) out.push_back(radial[i]);
+        return out;
+    }
+
+    template<typename T>
+    std::vector<size_t> run(const std::vector<P> &pts, bool three, T tol, bool hq)
+    {
+        std::vector<T> flat;
+        for (const P &p : pts)
+        {
+            flat.push_back(static_cast<T>(p.x));
+            flat.push_back(static_cast<T>(p.y));
+            if (three) flat.push_back(static_cast<T>(p.z));
+        }
+        return rtl::simplifyCompatibleIndices<T>(flat.data(), pts.size(), three ? 3 : 2, tol, hq);
+    }
+
+    std::vector<P> semicircle(size_t n, double noise, unsigned seed)
+    {
+        std::mt19937 rng(seed);
+        std::normal_distribution<double> g(0, noise);
+        std::vector<P> out;
+        for (size_t i = 0; i < n; ++i)
+        {
+            const double a = M_PI * static_cast<double>(i) / static_cast<double>(n - 1);
+            out.push_back({8 * std::cos(a) + g(rng), 8 * std::sin(a) + g(rng), 0});
+        }
+        return out;
+    }
+    std::vector<P> randomWalk(size_t n, unsigned seed, bool three)
+    {
+        std::mt19937 rng(seed);
+        std::normal_distribution<double> g(0, 1);
+        std::vector<P> out;
+        P p{0, 0, 0};
+        for (size_t i = 0; i < n; ++i)
+        {
+            out.push_back(p);
+            p.x += g(rng); p.y += g(rng);
+            if (three) p.z += g(rng);
+        }
+        return out;
+    }
+}
+
+TEST(SimplifyCompatible, SmallInputsKeepAll)
+{
+    EXPECT_TRUE(run<double>({}, false, 1.0, false).empty());
+    EXPECT_EQ(run<double>({{1, 2, 0}}, false, 1.0, false), (std::vector<size_t>{0}));
+    EXPECT_EQ(run<double>({{1, 2, 0}, {1, 2, 0}}, false, 100.0, false), (std::vector<size_t>{0, 1}));
+}
+
+// The middle points lie near the chord's line but beyond its end: the line distance (0.1) would drop them, the
+// segment distance (3) keeps the farthest one.
+TEST(SimplifyCompatible, SegmentDistanceBeyondTheChord)
+{
+    const std::vector<P> pts{{0, 0, 0}, {5, 0.1, 0}, {3, 0, 0}, {-2, 0.1, 0}, {1, 0, 0}};
+    // First chord (0,0)-(1,0): point 1 at 4 beyond b (sq 16.01), point 3 at 2 before a (sq 4.01): 1 is kept.
+    const auto hq = run<double>(pts, false, 0.5, true);
+    // Then chord (5,0.1)-(1,0): (-2,0.1) projects beyond (1,0), 3 away: kept; (3,0) is 0.05 off: dropped. The line
+    // distance from y = 0 (at most 0.1) would have kept only the end points.
+    EXPECT_EQ(hq, (std::vector<size_t>{0, 1, 3, 4}));
+    EXPECT_EQ(hq, reference(pts, 0.5, true, false));
+    // A point projecting inside the chord: segment and line distance agree (0.2 > 0.1 kept, 0.05 dropped).
+    EXPECT_EQ(run<double>({{0, 0, 0}, {1, 0.2, 0}, {2, 0.05, 0}, {4, 0, 0}}, false, 0.1, true), (std::vector<size_t>{0, 1, 3}));
+}
+
+// A degenerate chord (closed loop) measures the distance to its end point.
+TEST(SimplifyCompatible, DegenerateChordUsesTheEndPoint)
+{
+    const std::vector<P> loop{{0, 0, 0}, {1, 0, 0}, {1, 3, 0}, {0, 1, 0}, {0, 0, 0}};
+    const auto got = run<double>(loop, false, 1.5, true);
+    EXPECT_EQ(got, reference(loop, 1.5, true, false));
+    // (1,3) is sqrt(10) from (0,0): kept; (1,0) and (0,1) are 0.95 and 0.32 from the new chords: dropped.
+    EXPECT_EQ(got, (std::vector<size_t>{0, 2, 4}));
+}
+
+// Radial pre-pass: points within the tolerance of the last kept one are skipped; the last point is appended.
+TEST(SimplifyCompatible, RadialPrePass)
+{
+    // Radial keeps 0, 2, 3 and appends 4 ((4.1,0) is 0.1 from (4,0)); DP then drops 3, 0.1 from chord 2-4.
+    const std::vector<P> pts{{0, 0, 0}, {0.1, 0, 0}, {2, 2, 0}, {4, 0, 0}, {4.1, 0, 0}};
+    EXPECT_EQ(run<double>(pts, false, 0.5, false), (std::vector<size_t>{0, 2, 4}));
+    EXPECT_EQ(run<double>(pts, false, 0.5, false), reference(pts, 0.5, false, false));
+    // Everything within tolerance: first and last only.
+    EXPECT_EQ(run<double>(pts, false, 100.0, false), (std::vector<size_t>{0, 4}));
+    EXPECT_EQ(run<double>(pts, false, std::numeric_limits<double>::infinity(), true), (std::vector<size_t>{0, 4}));
+}
+
+TEST(SimplifyCompatible, EqualsReferenceOnSemicirclesAndWalks)
+{
+    size_t cases = 0;
+    for (unsigned seed = 1; seed <= 6; ++seed)
+        for (size_t n : {3, 10, 57, 1000, 8000})
+            for (bool hq : {false, true})
+            {
+                const auto s = semicircle(n, 0.01, seed);
+                for (double tol : {0.0, 0.009, 0.09, 0.5})
+                {
+                    ASSERT_EQ(run<double>(s, false, tol, hq), reference(s, tol, hq, false)) << n << " " << tol;
+                    ++cases;
+                }
+                for (bool three : {false, true})
+                {
+                    const auto w = randomWalk(n, seed, three);
+                    for (double tol : {0.3, 1.0, 3.0})
+                    {
+                        ASSERT_EQ(run<double>(w, three, tol, hq), reference(w, tol, hq, three)) << n << " " << tol;
+                        ++cases;
+                    }
+                }
+            }
+    EXPECT_EQ(cases, 6u * 5 * 2 * (4 + 6));
+}
+
+// Random walks keep different points with segment distance than with line distance (the reason for this
+// function): check that the result is not simply the line-distance DP.
+TEST(SimplifyCompatible, WalksDifferFromLineDistance)
+{
+    const auto w = randomWalk(5000, 3, false);
+    const auto got = run<double>(w, false, 2.0, true);
+    // Every dropped point is within the tolerance of the segment between its kept neighbours.
+    size_t beyond_line_end = 0;
+    for (size_t k = 0; k + 1 < got.size(); ++k)
+        for (size_t i = got[k] + 1; i < got[k + 1]; ++i)
+        {
+            const P &a = w[got[k]], &b = w[got[k + 1]], &p = w[i];
+            EXPECT_LE(sqSegDist(p, a, b, false), 4.0 * (1 + 1e-12));
+            const double dx = b.x - a.x, dy = b.y - a.y;
+            const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
+            beyond_line_end += (t < 0 || t > 1);
+        }
+    EXPECT_GT(beyond_line_end, 0u);   // some dropped points project outside their chord
+}
+
+TEST(SimplifyCompatible, FloatInputRunsInDouble)
+{
+    const auto s = semicircle(3000, 0.01, 9);
+    std::vector<P> rounded;
+    for (const P &p : s) rounded.push_back({static_cast<float>(p.x), static_cast<float>(p.y), 0});
+    EXPECT_EQ(run<float>(s, false, 0.09f, false), reference(rounded, static_cast<float>(0.09f), false, false));
+}
+
+// Huge finite coordinates: differences overflow to inf; the result still equals the library's arithmetic.
+TEST(SimplifyCompatible, HugeCoordinatesFollowTheLibrary)
+{
+    const std::vector<P> pts{{-1e308, 0, 0}, {0, 1e308, 0}, {1e308, 0, 0}, {1e308, -1e308, 0}, {0, 0, 0}};
+    for (bool hq : {false, true})
+        EXPECT_EQ(run<double>(pts, false, 1.0, hq), reference(pts, 1.0, hq, false));
+}
+
+TEST(SimplifyCompatible, PreconditionsThrowInvalidArgument)
+{
+    const double ok[6] = {0, 0, 1, 1, 2, 0};
+    EXPECT_THROW(rtl::simplifyCompatibleIndices(ok, 3, 4, 1.0, false), std::invalid_argument);
+    EXPECT_THROW(rtl::simplifyCompatibleIndices<double>(nullptr, 3, 2, 1.0, false), std::invalid_argument);
+    EXPECT_THROW(rtl::simplifyCompatibleIndices(ok, 3, 2, std::nan(""), false), std::invalid_argument);
+    const double bad[6] = {0, 0, std::numeric_limits<double>::infinity(), 1, 2, 0};
+    EXPECT_THROW(rtl::simplifyCompatibleIndices(bad, 3, 2, 1.0, false), std::invalid_argument);
+    const double nan[6] = {0, 0, 1, std::nan(""), 2, 0};
+    EXPECT_THROW(rtl::simplifyCompatibleIndices(nan, 3, 2, 1.0, true), std::invalid_argument);
+    EXPECT_NO_THROW(rtl::simplifyCompatibleIndices<double>(nullptr, 0, 2, 1.0, false));
+}
