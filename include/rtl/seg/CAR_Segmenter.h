@@ -54,6 +54,12 @@ namespace rtl
         CAR_Segmenter() = default;
         CAR_Segmenter(size_t step, ElementType lower_bound, ElementType upper_bound)
             : step_(step == 0 ? 1 : step), lower_(lower_bound), upper_(upper_bound) {}
+        // Copies are deep (the segmenter holds no iterators or pointers into itself). Moves are noexcept and O(1);
+        // a moved-from segmenter has no clusters left and can load a new scan.
+        CAR_Segmenter(const CAR_Segmenter &) = default;
+        CAR_Segmenter(CAR_Segmenter &&) noexcept = default;
+        CAR_Segmenter &operator=(const CAR_Segmenter &) = default;
+        CAR_Segmenter &operator=(CAR_Segmenter &&) noexcept = default;
         ~CAR_Segmenter() = default;
 
         void setStepSize(size_t step) { step_ = step == 0 ? 1 : step; }
@@ -73,7 +79,7 @@ namespace rtl
             }
         }
 
-        [[nodiscard]] size_t clustersAvailable() const { return clusters_.size() - next_; }
+        [[nodiscard]] size_t clustersAvailable() const { return next_ < clusters_.size() ? clusters_.size() - next_ : 0; }
 
         //! Segments a closed scan, replacing any clusters not grabbed yet.
         void loadData(const std::vector<VectorType> &points, const VectorType &origin = VectorType::zeros())

@@ -27,10 +27,8 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <limits>
 #include <list>
 #include <map>
@@ -69,6 +67,13 @@ namespace rtl
         {
             resizeWindow(step == 0 ? 1 : step);
         }
+        //! Copies are deep: the copy continues the stream on its own, exactly as the source would.
+        IA_Segmenter(const IA_Segmenter &) = default;
+        //! Moves are noexcept and O(1) (no point is copied); the moved-from segmenter may only be destroyed or
+        //! assigned to.
+        IA_Segmenter(IA_Segmenter &&) noexcept = default;
+        IA_Segmenter &operator=(const IA_Segmenter &) = default;
+        IA_Segmenter &operator=(IA_Segmenter &&) noexcept = default;
         ~IA_Segmenter() = default;
 
         //! Changes the window size; when it shrinks, the oldest window points leave the window first.
@@ -79,13 +84,12 @@ namespace rtl
         //! The observer that receives the steps from now on (nullptr: none); not owned.
         void setObserver(Observer *observer) { observer_ = observer; }
 
-        // empty() first: polled after every point, and a deque's size() costs a dozen instructions
-        [[nodiscard]] size_t closedClustersAvailable() const { return closed_.empty() ? 0 : closed_.size(); }
-        [[nodiscard]] size_t aliveClustersAvailable() const { return alive_.size(); }
+        [[nodiscard]] size_t closedClustersAvailable() const { return closed_.size() - closed_head_; }
+        [[nodiscard]] size_t aliveClustersAvailable() const { return lists_.alive.size(); }
         [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const
         {
             flushStage();
-            return alive_;
+            return lists_.alive;
         }
 
         void addPoint(const VectorType &pt, const VectorType &origin = VectorType::zeros())
@@ -112,7 +116,7 @@ namespace rtl
                 seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
             {
                 stage_[staged_++] = wpts_[0];
-                if (staged_ == stage_.size()) flushStage();
+                if (staged_ == stage_capacity) flushStage();
                 wpts_[0] = pt;
                 ++stream_;
                 return;
@@ -123,9 +127,19 @@ namespace rtl
         //! Removes and returns the oldest closed cluster; an empty vector when none is closed.
         std::vector<VectorType> grabCluster()
         {
-            if (closed_.empty()) return {};
-            std::vector<VectorType> c = std::move(closed_.front());
-            closed_.pop_front();
+            if (closed_head_ == closed_.size()) return {};
+            std::vector<VectorType> c = std::move(closed_[closed_head_++]);
+            if (closed_head_ == closed_.size())
+            {
+                closed_.clear();
+                closed_head_ = 0;
+            }
+            else if (closed_head_ >= 64 && 2 * closed_head_ >= closed_.size())
+            {
+                // a caller that never empties the queue: drop the handed-out front, amortised O(1) per cluster
+                closed_.erase(closed_.begin(), closed_.begin() + static_cast<std::ptrdiff_t>(closed_head_));
+                closed_head_ = 0;
+            }
             return c;
         }
 
@@ -179,18 +193,18 @@ namespace rtl
                     if constexpr (traced)
                         if (observer_)
                         {
-                            if (rec == none) (*observer_)(ia_trace::Link{stream_, widx_[w], recs_[r].id});
-                            else (*observer_)(ia_trace::Merge{stream_, widx_[w], std::max(recs_[rec].id, recs_[r].id),
-                                                              std::min(recs_[rec].id, recs_[r].id)});
+                            if (rec == none) (*observer_)(ia_trace::Link{stream_, widx_[w], lists_.recs[r].id});
+                            else (*observer_)(ia_trace::Merge{stream_, widx_[w], std::max(lists_.recs[rec].id, lists_.recs[r].id),
+                                                              std::min(lists_.recs[rec].id, lists_.recs[r].id)});
                         }
                     rec = rec == none ? r : merge(rec, r);
                 }
                 if (rec == none)
                 {
                     rec = newRecord();
-                    if constexpr (traced) report(ia_trace::Open{stream_, recs_[rec].id});
+                    if constexpr (traced) report(ia_trace::Open{stream_, lists_.recs[rec].id});
                 }
-                ++recs_[rec].in_window;
+                ++lists_.recs[rec].in_window;
             }
             size_t slot;
             if (count_ == step_)
@@ -223,6 +237,36 @@ namespace rtl
             std::vector<size_t> index;
         };
 
+        // The records and the alive map they point into. A copy re-points each record's iterator into the copy's
+        // own map (the implicit copy would keep iterators into the source's map); a move keeps them, since the
+        // map's nodes move with it.
+        struct ClusterLists
+        {
+            std::vector<Record> recs;
+            AliveMap alive;
+
+            ClusterLists() = default;
+            ClusterLists(const ClusterLists &o) : recs(o.recs), alive(o.alive) { repoint(); }
+            ClusterLists(ClusterLists &&) noexcept = default;
+            ClusterLists &operator=(const ClusterLists &o)
+            {
+                if (this != &o)
+                {
+                    ClusterLists copy(o);
+                    *this = std::move(copy);
+                }
+                return *this;
+            }
+            ClusterLists &operator=(ClusterLists &&) noexcept = default;
+            ~ClusterLists() = default;
+
+            void repoint()
+            {
+                for (Record &R : recs)
+                    if (R.has_alive) R.alive = alive.find(R.id);
+            }
+        };
+
         void checkParameters()
         {
             seg_detail::checkParameters<ElementType>("IA_Segmenter::addPoint", lower_, upper_, true);
@@ -236,15 +280,15 @@ namespace rtl
             size_t r;
             if (free_.empty())
             {
-                r = recs_.size();
-                recs_.emplace_back();
+                r = lists_.recs.size();
+                lists_.recs.emplace_back();
             }
             else
             {
                 r = free_.back();
                 free_.pop_back();
             }
-            Record &R = recs_[r];
+            Record &R = lists_.recs[r];
             R.id = next_id_++;
             R.in_window = 0;
             R.has_alive = false;
@@ -264,19 +308,19 @@ namespace rtl
                 if constexpr (traced)
                     if (observer_)
                     {
-                        (*observer_)(ia_trace::Link{stream_, stream_ - 1, recs_[prev].id});
+                        (*observer_)(ia_trace::Link{stream_, stream_ - 1, lists_.recs[prev].id});
                         (*observer_)(ia_trace::Slide{stream_ - 1, false});
-                        (*observer_)(ia_trace::Alive{stream_ - 1, recs_[prev].id});
+                        (*observer_)(ia_trace::Alive{stream_ - 1, lists_.recs[prev].id});
                     }
                 if (prev == stage_rec_)
                 {
                     stage_[staged_++] = wpts_[0];
-                    if (staged_ == stage_.size()) flushStage();
+                    if (staged_ == stage_capacity) flushStage();
                 }
                 else
                 {
                     flushStage();
-                    Record &R = recs_[prev];
+                    Record &R = lists_.recs[prev];
                     pushAlive(R, wpts_[0], stream_ - 1);
                     stage_rec_ = R.contiguous ? prev : none;
                 }
@@ -290,7 +334,7 @@ namespace rtl
                 if (valid)
                 {
                     rec = newRecord();
-                    recs_[rec].in_window = 1;
+                    lists_.recs[rec].in_window = 1;
                 }
                 wrec_[0] = rec;
                 count_ = 1;
@@ -304,7 +348,7 @@ namespace rtl
         {
             if (!R.has_alive)
             {
-                R.alive = alive_.emplace_hint(alive_.end(), R.id, takeVector());
+                R.alive = lists_.alive.emplace_hint(lists_.alive.end(), R.id, takeVector());
                 R.has_alive = true;
                 R.contiguous = true;
                 R.base = idx;
@@ -352,12 +396,12 @@ namespace rtl
                 {
                     const size_t i = step_ == 1 ? stream_ - 1 : widx_[slot];
                     (*observer_)(ia_trace::Slide{i, r == none});
-                    if (r != none) (*observer_)(ia_trace::Alive{i, recs_[r].id});
+                    if (r != none) (*observer_)(ia_trace::Alive{i, lists_.recs[r].id});
                 }
             if (r == none) return;
             if (r == stage_rec_) flushStage();
             wrec_[slot] = none;
-            Record &R = recs_[r];
+            Record &R = lists_.recs[r];
             if (!R.has_alive && R.in_window == 1)
             {
                 // the cluster closes with this point and never had an alive list: skip the alive map
@@ -376,7 +420,7 @@ namespace rtl
                 closed_.emplace_back(v.begin(), v.end());
                 if constexpr (traced) report(ia_trace::Close{R.id, v.size()});
                 recycle(std::move(v));
-                alive_.erase(R.alive);
+                lists_.alive.erase(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
                 if (r == stage_rec_) stage_rec_ = none;
@@ -403,7 +447,7 @@ namespace rtl
         RTL_SEG_NOINLINE void flushStage() const
         {
             if (staged_ == 0) return;
-            std::vector<VectorType> &v = recs_[stage_rec_].alive->second;
+            std::vector<VectorType> &v = lists_.recs[stage_rec_].alive->second;
             v.insert(v.end(), stage_.begin(), stage_.begin() + static_cast<std::ptrdiff_t>(staged_));
             staged_ = 0;
         }
@@ -412,16 +456,16 @@ namespace rtl
         size_t merge(size_t a, size_t b)
         {
             flushStage();
-            const size_t keep = recs_[a].id < recs_[b].id ? a : b, gone = keep == a ? b : a;
+            const size_t keep = lists_.recs[a].id < lists_.recs[b].id ? a : b, gone = keep == a ? b : a;
             for (size_t w = 0; w < step_; ++w)
                 if (wrec_[w] == gone) wrec_[w] = keep;
-            Record &K = recs_[keep], &G = recs_[gone];
+            Record &K = lists_.recs[keep], &G = lists_.recs[gone];
             K.in_window += G.in_window;
             if (G.has_alive)
             {
                 if (!K.has_alive)
                 {
-                    K.alive = alive_.emplace(K.id, std::move(G.alive->second)).first;
+                    K.alive = lists_.alive.emplace(K.id, std::move(G.alive->second)).first;
                     K.has_alive = true;
                     K.contiguous = G.contiguous;
                     K.base = G.base;
@@ -432,7 +476,7 @@ namespace rtl
                     mergeAlive(K, G);
                     recycle(std::move(G.alive->second));
                 }
-                alive_.erase(G.alive);
+                lists_.alive.erase(G.alive);
                 G.has_alive = false;
             }
             G.in_window = 0;
@@ -515,13 +559,14 @@ namespace rtl
         std::vector<VectorType> wpts_;
         std::vector<size_t> wrec_, widx_;                         // widx_ unused at step 1: its point is stream_ - 1
 
-        std::vector<Record> recs_;
+        ClusterLists lists_;
         std::vector<size_t> free_;
-        AliveMap alive_;
-        std::deque<std::vector<VectorType>> closed_;
+        std::vector<std::vector<VectorType>> closed_;           // closing order; closed_head_ is the next to hand out
+        size_t closed_head_ = 0;
         std::vector<std::vector<VectorType>> pool_;             // emptied alive lists, capacity kept
         size_t stage_rec_ = none;                               // record of the staged points (step 1)
-        mutable std::array<VectorType, 256> stage_;             // its newest alive points, not yet in alive_
+        static constexpr size_t stage_capacity = 256;
+        mutable std::vector<VectorType> stage_ = std::vector<VectorType>(stage_capacity);   // its newest alive points, not yet in the alive map; on the heap so that a move is cheap
         mutable size_t staged_ = 0;
         size_t next_id_ = 0, stream_ = 0;
         Observer *observer_ = nullptr;
