@@ -2,6 +2,7 @@
 // simplify-js algorithm on point objects (the brute-force reference below), on hand-made cases where the segment
 // and the line distance decide differently, semicircles, random walks, duplicates, 3D and float input; and its
 // documented exceptions.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -18,12 +19,17 @@ namespace
     struct P { double x, y, z; };
 
     // Reference: simplify-js, statement by statement, on objects; points are compared by index (object identity).
+    //! a * b rounded on its own (volatile: never fused with an addition, whatever -ffp-contract says).
+    double mul(double a, double b)
+    {
+        volatile double p = a * b;
+        return p;
+    }
     double sqDist(const P &a, const P &b, bool three)
     {
         const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-        volatile double s = dx * dx;   // volatile: no fused multiply-add in the reference either
-        s = s + dy * dy;
-        if (three) s = s + dz * dz;
+        double s = mul(dx, dx) + mul(dy, dy);
+        if (three) s = s + mul(dz, dz);
         return s;
     }
     double sqSegDist(const P &p, const P &p1, const P &p2, bool three)
@@ -31,28 +37,15 @@ namespace
         double x = p1.x, y = p1.y, z = p1.z, dx = p2.x - x, dy = p2.y - y, dz = p2.z - z;
         if (dx != 0 || dy != 0 || (three && dz != 0))
         {
-            volatile double num = (p.x - x) * dx;
-            num = num + (p.y - y) * dy;
-            if (three) num = num + (p.z - z) * dz;
-            volatile double den = dx * dx;
-            den = den + dy * dy;
-            if (three) den = den + dz * dz;
+            const double num = three ? mul(p.x - x, dx) + mul(p.y - y, dy) + mul(p.z - z, dz) : mul(p.x - x, dx) + mul(p.y - y, dy);
+            const double den = three ? mul(dx, dx) + mul(dy, dy) + mul(dz, dz) : mul(dx, dx) + mul(dy, dy);
             const double t = num / den;
             if (t > 1) { x = p2.x; y = p2.y; z = p2.z; }
-            else if (t > 0)
-            {
-                volatile double m = dx * t;
-                x = x + m;
-                m = dy * t;
-                y = y + m;
-                m = dz * t;
-                z = z + m;
-            }
+            else if (t > 0) { x += mul(dx, t); y += mul(dy, t); z += mul(dz, t); }
         }
         dx = p.x - x; dy = p.y - y; dz = p.z - z;
-        volatile double s = dx * dx;
-        s = s + dy * dy;
-        if (three) s = s + dz * dz;
+        double s = mul(dx, dx) + mul(dy, dy);
+        if (three) s = s + mul(dz, dz);
         return s;
     }
     void dpStep(const std::vector<P> &pts, size_t first, size_t last, double sqTol, std::vector<size_t> &out, bool three)
@@ -241,6 +234,41 @@ TEST(SimplifyCompatible, HugeCoordinatesFollowTheLibrary)
     const std::vector<P> pts{{-1e308, 0, 0}, {0, 1e308, 0}, {1e308, 0, 0}, {1e308, -1e308, 0}, {0, 0, 0}};
     for (bool hq : {false, true})
         EXPECT_EQ(run<double>(pts, false, 1.0, hq), reference(pts, 1.0, hq, false));
+}
+
+// Inputs where a fused multiply-add (one plausible contraction of the library's expressions) would round the
+// distance differently and the tolerance sits between the two values: the result must follow the unfused
+// arithmetic. Fails if the header's products get contracted (e.g. GCC -march=haswell without its barrier).
+TEST(SimplifyCompatible, NoFusedMultiplyAdd)
+{
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-3, 3);
+    size_t cases = 0;
+    for (int attempt = 0; attempt < 200000 && cases < 300; ++attempt)
+    {
+        const P a{u(rng), u(rng), 0}, b{u(rng), u(rng), 0}, p{u(rng), u(rng), 0};
+        const double du = sqSegDist(p, a, b, false);
+        double x = a.x, y = a.y;
+        const double dx = b.x - x, dy = b.y - y;
+        const double t = std::fma(p.y - y, dy, mul(p.x - x, dx)) / std::fma(dy, dy, mul(dx, dx));
+        if (t > 1) { x = b.x; y = b.y; }
+        else if (t > 0) { x = std::fma(dx, t, x); y = std::fma(dy, t, y); }
+        const double df = std::fma(p.y - y, p.y - y, mul(p.x - x, p.x - x));
+        if (du == df)
+            continue;
+        // tol^2 in [min, max): one arithmetic keeps p, the other drops it.
+        double tol = std::sqrt(std::min(du, df));
+        while (mul(tol, tol) < std::min(du, df)) tol = std::nextafter(tol, 10.0);
+        while (mul(tol, tol) >= std::max(du, df)) tol = std::nextafter(tol, 0.0);
+        if (mul(tol, tol) < std::min(du, df))
+            continue;
+        const std::vector<P> pts{a, p, b};
+        const std::vector<size_t> expected = du > df ? std::vector<size_t>{0, 1, 2} : std::vector<size_t>{0, 2};
+        ASSERT_EQ(reference(pts, tol, true, false), expected);
+        ASSERT_EQ(run<double>(pts, false, tol, true), expected) << attempt;
+        ++cases;
+    }
+    EXPECT_EQ(cases, 300u);
 }
 
 TEST(SimplifyCompatible, PreconditionsThrowInvalidArgument)

@@ -1,9 +1,10 @@
 // Polyline simplification that keeps exactly the points the simplify-js library keeps: its radial-distance
 // pre-pass (skipped in high-quality mode) and its Douglas-Peucker on the squared distance to the chord *segment*.
 // The arithmetic is that library's, in double and in its order, so the kept points are identical to a JavaScript
-// run on the same doubles. Fused multiply-add would change roundings: clang honours the `fp contract(off)` pragma
-// below; GCC ignores FP_CONTRACT, so when it targets FMA hardware every product passes an empty asm barrier that
-// prevents fusing (MSVC does not contract unless /fp:contract or /fp:fast is given).
+// run on the same doubles. Fused multiply-add would change roundings: GCC ignores FP_CONTRACT and clang's
+// -ffp-contract=fast ignores its `fp contract(off)` pragma, so when GCC or clang targets FMA hardware every
+// product passes an empty asm barrier that prevents fusing (elsewhere, e.g. wasm, there is no FMA to contract to;
+// MSVC does not contract unless /fp:contract or /fp:fast is given).
 #pragma once
 
 #include <cmath>
@@ -20,7 +21,7 @@ namespace rtl
         //! a * b, never fused with a following addition.
         inline double product(double a, double b)
         {
-#if defined(__GNUC__) && !defined(__clang__) && (defined(__FMA__) || defined(__aarch64__) || defined(__ARM_FEATURE_FMA))
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__aarch64__) || defined(__ARM_FEATURE_FMA))
             double p = a * b;
 #if defined(__x86_64__) || defined(__i386__)
             asm("" : "+x"(p));
