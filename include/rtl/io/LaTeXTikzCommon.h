@@ -163,6 +163,17 @@ namespace rtl::latex_detail
             return out;
         }
 
+        //! The normalised text of a registered style name ("" if unknown), e.g. for a back-end other than TikZ.
+        std::string styleText(const std::string &name) const
+        {
+            for (const auto &s : style_order)
+                if (s.first == name)
+                    return s.second;
+            return "";
+        }
+        //! Registered colours as (name, spec) in registration order.
+        const std::vector<std::pair<std::string, std::string>> &colorList() const { return color_order; }
+
     private:
         std::map<std::string, std::string> styles;                   // normalised style text -> name
         std::vector<std::pair<std::string, std::string>> style_order;  // (name, text) in registration order

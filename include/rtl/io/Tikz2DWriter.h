@@ -1,0 +1,214 @@
+// The TikZ back-end of Drawing2D: the standalone document or only the tikzpicture (rtl-api §4.4 conventions).
+#pragma once
+
+#include <cmath>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "rtl/io/Drawing2D.h"
+#include "rtl/io/LaTeXTikzCommon.h"
+#include "rtl/io/LaTeXUtility.h"
+
+namespace rtl
+{
+    namespace latex_detail
+    {
+        //! Grid lines, axes with ticks and labels, and the axis descriptions of a drawing.
+        inline void writeTikzGridsAndAxes(const Drawing2D &d, const Drawing2D::Frame &f, std::string &out)
+        {
+            double x0 = f.min_x - f.ox, x1 = f.max_x + f.ox, y0 = f.min_y - f.oy, y1 = f.max_y + f.oy;
+            for (const auto &g : d.grids())
+            {
+                for (double v : g.horizontal ? Drawing2D::ticks(y0, y1, g.tick) : Drawing2D::ticks(x0, x1, g.tick))
+                {
+                    if (g.horizontal)
+                        out += "\\draw[" + g.style + "] (" + tikzPoint(x0, v) + ") -- (" + tikzPoint(x1, v) + ");\n";
+                    else
+                        out += "\\draw[" + g.style + "] (" + tikzPoint(v, y0) + ") -- (" + tikzPoint(v, y1) + ");\n";
+                }
+            }
+            // Tick marks are 0.1 cm long on paper: convert to data units per axis.
+            double tick_y = 0.05 / f.sy, tick_x = 0.05 / f.sx;
+            for (const auto &a : d.axes())
+            {
+                std::string anc = tikzAnchor(a.position);
+                bool log = (a.is_x ? d.axisTypeX() : d.axisTypeY()) == Drawing2D::axis_type_log10;
+                if (a.is_x)
+                    out += "\\draw[" + a.style + "] (" + tikzPoint(x0, a.crossing) + ") -- (" +
+                           tikzPoint(x1, a.crossing) + ");\n";
+                else
+                    out += "\\draw[" + a.style + "] (" + tikzPoint(a.crossing, y0) + ") -- (" +
+                           tikzPoint(a.crossing, y1) + ");\n";
+                for (double v : a.is_x ? Drawing2D::ticks(x0, x1, a.tick) : Drawing2D::ticks(y0, y1, a.tick))
+                {
+                    if (a.is_x)
+                        out += "\\draw[" + a.style + "] (" + tikzPoint(v, a.crossing - tick_y) + ") -- (" +
+                               tikzPoint(v, a.crossing + tick_y) + ")";
+                    else
+                        out += "\\draw[" + a.style + "] (" + tikzPoint(a.crossing - tick_x, v) + ") -- (" +
+                               tikzPoint(a.crossing + tick_x, v) + ")";
+                    std::string label = a.format.empty() ? "" : numberToLatexString(log ? std::pow(10.0, v) : v, a.format);
+                    if (!label.empty())
+                    {
+                        // The label touches the tick end on the side the position flags name.
+                        double lx = a.is_x ? v : a.crossing, ly = a.is_x ? a.crossing : v;
+                        if (a.position & tikz_position_above)
+                            ly += a.is_x ? tick_y : 0.0;
+                        else if (a.position & tikz_position_below)
+                            ly -= a.is_x ? tick_y : 0.0;
+                        if (a.position & tikz_position_right)
+                            lx += a.is_x ? 0.0 : tick_x;
+                        else if (a.position & tikz_position_left)
+                            lx -= a.is_x ? 0.0 : tick_x;
+                        out += " (" + tikzPoint(lx, ly) + ") node[anchor=" + anc + "] {" + label + "}";
+                    }
+                    out += ";\n";
+                }
+            }
+            // Descriptions sit outside the plot region (beyond the tick labels): centred below it and left of it.
+            if (!d.descriptionX().empty())
+                out += "\\node[anchor=north, yshift=-0.7cm] at (" + tikzPoint((x0 + x1) / 2, y0) + ") {" +
+                       LaTeX::escapeLaTeXCharacters(d.descriptionX()) + "};\n";
+            if (!d.descriptionY().empty())
+                out += "\\node[anchor=south, rotate=90, yshift=1.2cm] at (" + tikzPoint(x0, (y0 + y1) / 2) + ") {" +
+                       LaTeX::escapeLaTeXCharacters(d.descriptionY()) + "};\n";
+        }
+
+        //! One polyline; long ones are cut into paths of at most 500 points (sharing the joint) so that TeX does not
+        //! run out of memory on one huge path.
+        inline void writeTikzPolyline(const Drawing2D::Primitive &p, std::string &out)
+        {
+            std::string path, last;
+            size_t run = 0;
+            for (const auto &q : p.points)
+            {
+                if (run == 500)
+                {
+                    out += path + ";\n";
+                    path = "\\draw[" + p.style + "] (" + last + ")";
+                    run = 1;
+                }
+                std::string xy;
+                appendNumber(xy, q.first);
+                xy += ',';
+                appendNumber(xy, q.second);
+                path += run == 0 ? "\\draw[" + p.style + "] (" : std::string(" -- (");
+                path += xy;
+                path += ')';
+                last = std::move(xy);
+                if (++run % 8 == 0)
+                    path += '\n';
+            }
+            out += path + ";\n";
+        }
+
+        inline void writeTikzPrimitive(const Drawing2D::Primitive &p, const Drawing2D::Frame &f, std::string &out)
+        {
+            using K = Drawing2D::Kind;
+            auto pt = [&](size_t i) { return tikzPoint(p.points[i].first, p.points[i].second); };
+            switch (p.kind)
+            {
+                case K::polyline: writeTikzPolyline(p, out); break;
+                case K::marks:
+                    for (const auto &m : p.marks)
+                    {
+                        // The rotation follows the direction as it appears on paper, i.e. after axis scaling.
+                        double dx = static_cast<double>(m.dx) * f.sx, dy = static_cast<double>(m.dy) * f.sy;
+                        double deg = (dx == 0.0 && dy == 0.0) ? 0.0 : std::atan2(dy, dx) * 180.0 / pi;
+                        out += p.mark;
+                        out += '{';
+                        appendNumber(out, m.x);
+                        out += "}{";
+                        appendNumber(out, m.y);
+                        out += "}{";
+                        appendNumber(out, deg);
+                        out += "}\n";
+                    }
+                    break;
+                case K::edge:
+                {
+                    std::string opt = p.style;
+                    bool end = p.options & Drawing2D::edge_arrow_end, beg = p.options & Drawing2D::edge_arrow_beg;
+                    opt += end && beg ? ",<->" : end ? ",->" : beg ? ",<-" : "";
+                    out += "\\draw[" + opt + "] (" + pt(0) + ") -- (" + pt(1) + ");\n";
+                    break;
+                }
+                case K::polygon:
+                    out += "\\draw[" + p.style + "] ";
+                    for (size_t i = 0; i < p.points.size(); ++i)
+                        out += "(" + pt(i) + ") -- ";
+                    out += "cycle;\n";
+                    break;
+                case K::rectangle: out += "\\draw[" + p.style + "] (" + pt(0) + ") rectangle (" + pt(1) + ");\n"; break;
+                case K::circle: out += "\\draw[" + p.style + "] (" + pt(0) + ") circle (" + number(p.r1) + ");\n"; break;
+                case K::ellipse:
+                    out += "\\draw[" + p.style + ", rotate around={" + number(p.a1 * 180.0 / pi) + ":(" + pt(0) +
+                           ")}] (" + pt(0) + ") ellipse (" + number(p.r1) + " and " + number(p.r2) + ");\n";
+                    break;
+                case K::pie:
+                {
+                    std::string b = number(p.a1 * 180.0 / pi), e = number(p.a2 * 180.0 / pi), r = number(p.r1);
+                    out += "\\draw[" + p.style + "] (" + pt(0) + ") -- ++(" + b + ":" + r + ") arc (" + b + ":" + e +
+                           ":" + r + ") -- cycle;\n";
+                    break;
+                }
+                case K::text:
+                    out += "\\node[" + p.style + "] at (" + pt(0) + ") {" + LaTeX::escapeLaTeXCharacters(p.text) +
+                           "};\n";
+                    break;
+            }
+        }
+    }
+
+    //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to \input it.
+    inline void writeTikzPicture(const Drawing2D &d, std::ostream &os)
+    {
+        using latex_detail::number;
+        Drawing2D::Frame f = d.frame();
+        std::string out;
+        out += "\\begin{tikzpicture}[x=" + number(f.sx) + "cm, y=" + number(f.sy) + "cm";
+        std::string style_options = d.registry().styleOptions();
+        if (!style_options.empty())
+            out += ",\n\t" + style_options;
+        out += "]\n";
+        out += d.registry().colorDefinitions();
+        out += "\\pgfmathsetmacro{\\MaxX}{" + number(f.max_x) + "}\n";
+        out += "\\pgfmathsetmacro{\\MinX}{" + number(f.min_x) + "}\n";
+        out += "\\pgfmathsetmacro{\\MaxY}{" + number(f.max_y) + "}\n";
+        out += "\\pgfmathsetmacro{\\MinY}{" + number(f.min_y) + "}\n";
+        out += "\\pgfmathsetmacro{\\MarkGlobalScaleX}{" + number(1.0 / f.sx) + "}\n";
+        out += "\\pgfmathsetmacro{\\MarkGlobalScaleY}{" + number(1.0 / f.sy) + "}\n";
+        // The data frame as an invisible path: the picture is never empty (an empty one has zero size, which
+        // \resizebox cannot scale) and always covers the plot region.
+        out += "\\path (\\MinX,\\MinY) rectangle (\\MaxX,\\MaxY);\n";
+        out += "\\pgfmathsetmacro{\\MarkRadius}{" + number(d.markRadius()) + "}\n";
+        out += d.registry().markDefinitions();
+        if (d.clipped())
+        {
+            std::vector<float> c = d.clipRegion();
+            out += "\\clip (" + latex_detail::tikzPoint(c[0], c[1]) + ") rectangle (" +
+                   latex_detail::tikzPoint(c[2], c[3]) + ");\n";
+        }
+        latex_detail::writeTikzGridsAndAxes(d, f, out);
+        os << out;
+        // Primitives in chunks, so that a figure of millions of points is not held twice in memory.
+        out.clear();
+        for (const auto &p : d.primitives())
+        {
+            latex_detail::writeTikzPrimitive(p, f, out);
+            if (out.size() > (1u << 16))
+            {
+                os << out;
+                out.clear();
+            }
+        }
+        os << out << "\\end{tikzpicture}\n";
+    }
+
+    //! Writes `d` as a standalone LaTeX document (the `minimal` class cropped to the picture by preview).
+    inline void writeTikz(const Drawing2D &d, std::ostream &os)
+    {
+        latex_detail::writeTikzDocument(os, d.border(), [&d](std::ostream &o) { writeTikzPicture(d, o); });
+    }
+}
