@@ -6,7 +6,8 @@
 #   tests/fuzz/run.sh --brief        the test command's pass: the seeds plus a fixed number of new inputs per
 #                                    harness (RTL_FUZZ_BRIEF_RUNS, default 3000; at most 15 s each), seed 1
 #   tests/fuzz/run.sh [SECONDS]      a fuzzing session: SECONDS per harness (default 60); `./run fuzz SECONDS`
-#   RTL_FUZZ_ONLY=<regex>            only the harnesses whose name matches
+#   RTL_FUZZ_ONLY=<regex>            build and run only the harnesses whose name matches (e.g. 'carmen|lidar')
+#   RTL_FUZZ_BUILD=<dir>             another build folder (default build/fuzz), e.g. one per engineer
 # Every run appends one line per harness to build/fuzz/stats.tsv (date, harness, seconds, executions, coverage,
 # features, corpus size), so the executions of several sessions can be added up.
 # Needs clang with libFuzzer (Debian 12: apt-get install clang-14 libclang-rt-14-dev).
@@ -21,7 +22,7 @@ elif [[ -n ${1:-} ]]; then
 fi
 brief_runs=${RTL_FUZZ_BRIEF_RUNS:-3000}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build=$root/build/fuzz
+build=${RTL_FUZZ_BUILD:-$root/build/fuzz}
 cxx=${RTL_FUZZ_CXX:-$(command -v clang++-14 || command -v clang++ || true)}
 [[ -n $cxx ]] || { echo "$0: clang++ not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 
@@ -35,7 +36,13 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gli
   -DCMAKE_CXX_COMPILER="$cxx" -DRTL_BUILD_FUZZERS=ON -DRTL_BUILD_TESTS=OFF -DRTL_BUILD_EXAMPLES=OFF \
   -DRTL_BUILD_BENCHMARKS=OFF -DRTL_BUILD_WASM=OFF -DRTL_INSTALL=OFF \
   > "$build.configure.log" 2>&1 || { cat "$build.configure.log" >&2; exit 1; }
-cmake --build "$build" -j "${RTL_FUZZ_JOBS:-2}"
+targets=()
+for source in "$root"/tests/fuzz/fuzz_*.cpp; do
+  name=$(basename "$source" .cpp)
+  [[ -z ${RTL_FUZZ_ONLY:-} || $name =~ $RTL_FUZZ_ONLY ]] && targets+=(--target "$name")
+done
+[[ ${#targets[@]} -gt 0 ]] || { echo "$0: no harness matches RTL_FUZZ_ONLY='${RTL_FUZZ_ONLY:-}'" >&2; exit 2; }
+cmake --build "$build" -j "${RTL_FUZZ_JOBS:-2}" "${targets[@]}"
 
 stat() { sed -n "s/^stat::$1: *//p" "$2" | tail -1; }
 status=0
