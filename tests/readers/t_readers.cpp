@@ -493,3 +493,74 @@ TEST(OrganizedLidar, BadInputNamesTheByteOffset)
     EXPECT_TRUE(c.points.empty());
     EXPECT_NE(errorOf([] { rtl::readOrganizedLidarFile<float>("/nonexistent/x.bin", 4); }).find("/nonexistent/x.bin"), std::string::npos);
 }
+
+// Issue 15.4: the reader promises std::runtime_error for malformed logs. Huge or wrapped beam counts, counts beyond
+// size_t, and non-finite poses or timestamps all end in a std::runtime_error naming the line, never in
+// std::length_error or std::bad_alloc from a resize sized by the log.
+TEST(CarmenNoReturn, OnlyRuntimeErrorForHugeCountsAndNonFiniteFields)
+{
+    const std::string max = std::to_string(std::numeric_limits<size_t>::max());
+    const std::vector<std::string> bad = {
+        "FLASER 18446744073709551610 5 1 1",                 // the issue's input (n + 11 wraps to 5)
+        "FLASER 18446744073709551605 0 0 0 0 0 0 0 0 0",     // n + 11 wraps to 0: exactly as many fields as n + 11
+        "FLASER " + max,
+        "FLASER " + max + " 1 2 3 4 5 6 7 8 9",
+        "FLASER 18446744073709551616 1 1 0 0 0 0 0 0 1 h 1", // beyond size_t
+        "FLASER 99999999999999999999999 1",
+        "FLASER 4611686018427387904 1 2 3",                  // 2^62: resize would be a length_error
+        "FLASER -1 1 0 0 0 0 0 0 1 h 1",
+        "FLASER 2 1 1 0 0 0 0 0 0 nan h 1",
+        "FLASER 2 1 1 inf 0 0 0 0 0 1 h 1",
+        "FLASER 2 1 1 0 0 1e999 0 0 0 1 h 1",                // overflows to inf when parsed
+        "FLASER 2 1 1 0 0 0 0 0 -nan 1 h 1",
+    };
+    for (const std::string &line : bad)
+        for (int as_float = 0; as_float < 2; ++as_float)
+        {
+            std::istringstream in("PARAM robot_front_laser_max 50\n" + line + "\n");
+            bool runtime = false;
+            std::string what;
+            try
+            {
+                if (as_float) rtl::readCarmenLog<float>(in);
+                else rtl::readCarmenLog<double>(in);
+            }
+            catch (const std::runtime_error &e)
+            {
+                runtime = true;
+                what = e.what();
+            }
+            catch (const std::exception &e)
+            {
+                what = std::string("other exception: ") + e.what();
+            }
+            EXPECT_TRUE(runtime) << line << ": " << what;
+            EXPECT_EQ(what.rfind("CARMEN log, line 2: ", 0), 0u) << line << ": " << what;
+        }
+}
+
+// The organised reader has no header: every allocation is bounded by the bytes read, whatever `beams` says, and
+// bad input gives std::runtime_error (std::invalid_argument only for beams == 0, as documented).
+TEST(OrganizedLidar, HugeBeamCountsAllocateNothingAndThrowRuntimeError)
+{
+    std::string s;
+    for (int i = 0; i < 3; ++i) appendRecord(s, 1, 2, 3, 4);
+    for (size_t beams : {size_t(2), size_t(1) << 40, std::numeric_limits<size_t>::max()})
+    {
+        std::istringstream in(s);
+        EXPECT_THROW(rtl::readOrganizedLidar<float>(in, beams), std::runtime_error) << beams;
+        std::istringstream in2(s);
+        EXPECT_THROW(rtl::readOrganizedLidar<double>(in2, beams, rtl::OrganizedLayout::RowMajor), std::runtime_error) << beams;
+    }
+    std::istringstream empty("");
+    EXPECT_EQ(rtl::readOrganizedLidar<float>(empty, std::numeric_limits<size_t>::max()).points.size(), 0u);
+    // Non-finite coordinates are kept as logged (NaN and inf are gaps for the segmenters), not an error.
+    std::string odd;
+    appendRecord(odd, std::numeric_limits<float>::infinity(), 0, 0, std::nanf(""));
+    appendRecord(odd, std::nanf(""), 1, 1, 1);
+    std::istringstream in(odd);
+    const auto c = rtl::readOrganizedLidar<float>(in, 2);
+    EXPECT_TRUE(std::isinf(c.at(0, 0).x()));
+    EXPECT_TRUE(std::isnan(c.intensity[0]));
+    EXPECT_TRUE(std::isnan(c.at(1, 0).x()));
+}
