@@ -85,7 +85,10 @@ copyFileSync(join(node, 'rtl.cjs'), join(DIST, 'rtl.cjs'));
 copyFileSync(join(es, 'rtl.wasm'), join(DIST, 'rtl.wasm'));
 
 // api.js is written once, as an ES module whose last statement is `export { ... };`; derive the CommonJS twin.
-const api = readFileSync(join(JS, 'api.js'), 'utf8').replaceAll('__RTL_VERSION__', pkg.version);
+// Fragments (plain function declarations, no imports or exports) go in front of it, in the same scope.
+const API_FRAGMENTS = ['alg.js'];
+const api = [...API_FRAGMENTS, 'api.js'].map((f) => readFileSync(join(JS, f), 'utf8')).join('\n')
+  .replaceAll('__RTL_VERSION__', pkg.version);
 const exportLine = /^export \{([^}]*)\};\s*$/m;
 if (!exportLine.test(api)) fail('wasm/js/api.js must end with a single `export { ... };` line');
 writeFileSync(join(DIST, 'api.mjs'), api);

@@ -655,6 +655,7 @@ function wrap(m) {
     TfTree,
     toSvg,
     toTikz,
+    ...algorithmsApi(m, withHeap, registry),
     readCarmenLog,
     readCarmen: readCarmenLog,
     readOrganizedLidar,

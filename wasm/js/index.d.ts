@@ -474,6 +474,46 @@ export interface TfTree {
   readonly disposed: boolean;
 }
 
+// ---------------------------------------------------------------------------------------------- algorithms
+export interface AssignOptions { rows?: number; cols?: number; /** default false */ maximize?: boolean }
+export interface AssignResult { columns: Int32Array; total: number }
+export interface KalmanFilterOptions {
+  stateDim: number;
+  measurementDim: number;
+  /** default 0 */
+  controlDim?: number;
+  /** Q = I * processNoise (default 1) */
+  processNoise?: number;
+  /** R = I * observationNoise (default 1) */
+  observationNoise?: number;
+}
+/** Linear Kalman filter over rtl::KalmanX<double> (RTL's defaults: x = 0, A = I, B = 0, P = I, H = 0). Matrices are
+ *  row-major (rows x cols numbers: A, P, Q n x n; B n x controlDim; H measurementDim x n; R measurementDim^2).
+ *  Construct it through the module: `new rtl.KalmanFilter(options)`. It owns wasm memory: call dispose() (or use
+ *  `using`); a FinalizationRegistry frees it if you forget. Calls after dispose() throw TypeError. */
+export interface KalmanFilter {
+  readonly stateDim: number;
+  readonly measurementDim: number;
+  readonly controlDim: number;
+  setState(x: PointArray): void;
+  setTransitionMatrix(A: PointArray): void;
+  setControlMatrix(B: PointArray): void;
+  setCovarianceMatrix(P: PointArray): void;
+  setMeasurementMatrix(H: PointArray): void;
+  setProcessNoiseCovariance(Q: PointArray): void;
+  setMeasurementNoiseCovariance(R: PointArray): void;
+  /** x = A x + B u, P = A P A^T + Q (control u: controlDim numbers, default zeros) */
+  predict(control?: PointArray): void;
+  /** K = P H^T (H P H^T + R)^-1, x += K (z - H x), P in Joseph form */
+  correct(measurement: PointArray): void;
+  /** copies of x and P (row-major) */
+  state(): Float64Array;
+  covariance(): Float64Array;
+  dispose(): void;
+  [Symbol.dispose](): void;
+  readonly disposed: boolean;
+}
+
 // ---------------------------------------------------------------------------------------------- the module
 export interface RTL {
   readonly version: string;
@@ -487,6 +527,12 @@ export interface RTL {
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
   toTikz(drawing: Drawing, options?: TikzOptions): string;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
+  /** optimal assignment (Munkres / Hungarian, rtl::solveAssignment) of rows to distinct columns: min(rows, cols)
+   *  pairs with the least (maximize: greatest) total cost. costs: row-major rows*cols numbers (rows/cols options;
+   *  a square matrix needs neither) or an array of equal-length rows. columns[i]: the column of row i, -1 for rows
+   *  left out (rows > cols); total: the sum of the assigned costs. */
+  assign(costs: PointArray | ReadonlyArray<PointArray>, options?: AssignOptions): AssignResult;
+  KalmanFilter: new (options: KalmanFilterOptions) => KalmanFilter;
   /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0, not
    *  finite, or >= maxRange: the log's own no-return value unless given) are NaN points. RangeError starting
    *  "readCarmenLog: line N:" for a malformed line, a non-finite pose or timestamp. */
