@@ -166,7 +166,8 @@ TEST(LaTeXUtility, NumberLabels)
     EXPECT_EQ(LaTeXTikz2D::numberToLatexString(3, "%ld"), "$3$");   // length modifier normalised, not UB
     EXPECT_EQ(LaTeXTikz2D::numberToLatexString(3, "%q"), "");
     EXPECT_EQ(LaTeXTikz2D::numberToLatexString(3, "%d %d"), "");    // two conversions: refused
-    EXPECT_EQ(LaTeXTikz2D::numberToLatexString(3, "100%% %d"), "$100% 3$");
+    // The literal percent is escaped: a bare % would comment out the rest of the line in TeX.
+    EXPECT_EQ(LaTeXTikz2D::numberToLatexString(3, "100%% %d"), "$100\\% 3$");
     EXPECT_EQ(LaTeXTikz2D::numberToLatexString(3, ""), "");
 }
 
