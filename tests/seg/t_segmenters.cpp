@@ -11,6 +11,7 @@
 
 #include "rtl/seg/CAR_Segmenter.h"
 #include "rtl/seg/IA_Segmenter.h"
+#include "rtl/seg/SegTrace.h"
 #include "seg_check.h"
 
 namespace
@@ -241,6 +242,33 @@ TEST(Regression, WrappedClusterRotatesAtTheSeam)
     EXPECT_EQ(idx[1], range(90, 180));
     EXPECT_EQ(idx[2], range(180, 300));
     EXPECT_EQ(carIndices(pts, 3, 0.2, 0.5, V2f(3, -2)).size(), 4u);
+}
+
+// Found by fuzz_seg_car: at step 2 a scan that is two adjacent runs joined only across the seam (0 - 1 linked,
+// 1 - 2 not, 2 - 0 linked) came out as (2, 0, 1) untraced but (0, 1, 2) traced (the general algorithm). A cluster
+// that covers every index without a skip is listed in increasing order by every path.
+TEST(Regression, SeamJoinedRunsCoveringTheScanStayInOrder)
+{
+    const std::vector<V2d> pts = {V2d(0.09375, 3.75), V2d(0.0625, 3.71875), V2d(0.125, 3.75)};
+    for (size_t step : {2, 3})
+    {
+        rtl::CAR_Segmenter<V2d> car(step, 0.03125, 0.0625);
+        rtl::CarTraceLog log;
+        rtl::CAR_Segmenter<V2d, rtl::CarTraceLog> traced(step, 0.03125, 0.0625);
+        traced.setObserver(&log);
+        traced.loadData(pts);
+        car.loadData(pts);
+        ASSERT_EQ(car.clustersAvailable(), 1u) << step;
+        const auto c = car.grabCluster(), t = traced.grabCluster();
+        EXPECT_EQ(c, pts) << step;
+        EXPECT_EQ(t, pts) << step;
+    }
+    // with a gap between the runs the joined cluster wraps: end part first
+    const std::vector<V2d> gapped = {pts[0], pts[1], V2d::nan(), pts[2]};
+    rtl::CAR_Segmenter<V2d> car(2, 0.03125, 0.0625);
+    car.loadData(gapped);
+    ASSERT_EQ(car.clustersAvailable(), 1u);
+    EXPECT_EQ(car.grabCluster(), (std::vector<V2d>{pts[2], pts[0], pts[1]}));
 }
 
 // §5.3 defect 3: one segmenter object, growing and shrinking clouds, no setMaxSize.

@@ -11,8 +11,9 @@
 // Clusters are the connected components of that relation: merging is complete, so no two points meeting the
 // criterion end up in different clusters. Points with a NaN (or infinite) coordinate are gaps and belong to no
 // cluster; they still occupy their index. Each cluster lists its points in increasing scan order, with at most
-// step - 2 indices skipped between consecutive points; a cluster that wraps the seam starts with its end-of-scan
-// part. grabCluster() hands clusters out in the order of their smallest index. Step 1 gives one cluster per valid
+// step - 2 indices skipped between consecutive points; a cluster that wraps the seam (its indices in increasing
+// order skip more than step - 2 once) starts with its end-of-scan part, after that skip. A cluster that covers
+// every index without such a skip is listed in increasing order, even if it was joined across the seam. grabCluster() hands clusters out in the order of their smallest index. Step 1 gives one cluster per valid
 // point.
 //
 // Tracing (core/Trace.h): CAR_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
@@ -100,6 +101,7 @@ namespace rtl
                 }
             if (step_ == 1) segmentAlone(points);
             else if (step_ == 2) segmentNeighbours(points, origin, scaling);
+            else if (step_ - 1 <= max_masked_window) segmentMasked(points, origin, scaling);
             else segmentWindow(points, origin, scaling);
         }
 
@@ -211,13 +213,19 @@ namespace rtl
             }
 
             // Seam: point 0 follows point n - 1. With two or more clusters, point 0 opens the first and n - 1 closes
-            // the last; the wrapped cluster keeps the first place (smallest index) and starts with its end part.
+            // the last; the joined cluster keeps the first place (smallest index). It starts with its end part only
+            // if gaps separate the two parts (an index skipped): two adjacent runs that cover every index stay in
+            // increasing order, as the general step lists them.
             if (n >= 2 && clusters_.size() >= 2 && (f[0] & 1u) && (f[n - 1] & 1u) &&
                 closeTo(pts[n - 1], pts[0], origin, scaling))
             {
                 std::vector<VectorType> &first = clusters_.front(), &last = clusters_.back();
-                last.insert(last.end(), first.begin(), first.end());
-                first = std::move(last);
+                if (first.size() + last.size() == n) first.insert(first.end(), last.begin(), last.end());
+                else
+                {
+                    last.insert(last.end(), first.begin(), first.end());
+                    first = std::move(last);
+                }
                 clusters_.pop_back();
             }
         }
@@ -284,6 +292,138 @@ namespace rtl
                 parent_[i] = root == none ? i : root;
             }
 
+            finishWindow(pts);
+        }
+
+        // Steps 3 .. max_masked_window + 1, untraced: the same components as segmentWindow, in two passes. The first
+        // computes, block by block and branch-free (so that it vectorises), a bit mask per point of the lags
+        // k = 1..s at which it meets the criterion. The second labels: a point linked to its predecessor whose other
+        // links all stay inside the current run of predecessor-linked points belongs to the run's component without
+        // any union-find work; only links that reach back past the run's start are merged.
+        void segmentMasked(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
+        {
+            const size_t n = pts.size(), s = step_ - 1;
+            const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
+            ElementType o[D];
+            for (int k = 0; k < D; ++k) o[k] = origin.data()[k];
+            masks_.resize(n);
+            std::uint32_t *mask = masks_.data();
+            // block of points [i0, i0 + m) with the s points before it: coordinates one array per axis (NaN before
+            // the scan start, so that those lags never link), validity as 0 / 1
+            constexpr size_t block = 256;
+            ElementType c[D][block + max_masked_window];
+            ElementType tb[block];
+            std::uint32_t vb[block + max_masked_window];
+            for (size_t i0 = 0; i0 < n; i0 += block)
+            {
+                const size_t m = std::min(block, n - i0);
+                for (size_t j = 0; j < s + m; ++j)
+                {
+                    const bool inside = i0 + j >= s;
+                    const ElementType *p = inside ? ptr(pts[i0 + j - s]) : nullptr;
+                    bool valid = inside;
+                    for (int k = 0; k < D; ++k)
+                    {
+                        c[k][j] = inside ? p[k] : ElementType(0);
+                        if (inside) valid &= (p[k] - p[k]) == ElementType(0);
+                    }
+                    vb[j] = valid ? 1u : 0u;
+                }
+                for (size_t j = 0; j < m; ++j)
+                {
+                    ElementType rsq = 0;
+                    for (int k = 0; k < D; ++k)
+                    {
+                        const ElementType a = c[k][j + s] - o[k];
+                        rsq += a * a;
+                    }
+                    tb[j] = thr(rsq);
+                }
+                std::uint32_t *mb = mask + i0;
+                for (size_t j = 0; j < m; ++j) mb[j] = vb[j + s] << 31;
+                for (size_t lag = 1; lag <= s; ++lag)
+                {
+                    const std::uint32_t bit = lag - 1;
+                    for (size_t j = 0; j < m; ++j)
+                    {
+                        ElementType dsq = 0;
+                        for (int k = 0; k < D; ++k)
+                        {
+                            const ElementType d = c[k][j + s] - c[k][j + s - lag];
+                            dsq += d * d;
+                        }
+                        mb[j] |= (static_cast<std::uint32_t>(dsq <= tb[j]) & vb[j + s - lag]) << bit;
+                    }
+                }
+            }
+
+            parent_.resize(n);
+            size_t cur = none, run_start = 0;   // root of the current run, and where the run began
+            for (size_t i = 0; i < n; ++i)
+            {
+                std::uint32_t b = mask[i];
+                if (!(b >> 31))
+                {
+                    parent_[i] = none;
+                    cur = none;
+                    continue;
+                }
+                b &= 0x7fffffffu;
+                if ((b & 1u) && cur != none)
+                {
+                    const size_t inside = i - run_start;   // lags up to `inside` stay in the run
+                    const std::uint32_t far = inside >= s ? 0u : b >> inside;
+                    if (far == 0)
+                    {
+                        parent_[i] = cur;
+                        continue;
+                    }
+                    // merge the components reached past the run's start
+                    size_t root = find(cur);
+                    for (size_t k = inside + 1; far >> (k - inside - 1); ++k)
+                        if ((far >> (k - inside - 1)) & 1u)
+                        {
+                            const size_t r = find(i - k);
+                            if (r < root)
+                            {
+                                parent_[root] = r;
+                                root = r;
+                            }
+                            else if (r > root) parent_[r] = root;
+                        }
+                    parent_[i] = root;
+                    cur = root;
+                    continue;
+                }
+                // not linked to the predecessor: a new run, whose component is that of any earlier link
+                run_start = i;
+                size_t root = none;
+                for (size_t k = 1; b >> (k - 1); ++k)
+                    if ((b >> (k - 1)) & 1u)
+                    {
+                        const size_t r = find(i - k);
+                        if (root == none) root = r;
+                        else if (r < root)
+                        {
+                            parent_[root] = r;
+                            root = r;
+                        }
+                        else if (r > root) parent_[r] = root;
+                    }
+                parent_[i] = root == none ? i : root;
+                cur = parent_[i];
+            }
+            // the seam pass reads the thresholds of the first s points only
+            tsq_.resize(std::min(s, n));
+            for (size_t i = 0; i < tsq_.size(); ++i) tsq_[i] = thr(seg_detail::squaredDistance<D>(ptr(pts[i]), o));
+            finishWindow(pts);
+        }
+
+        // The seam and the output of segmentWindow and segmentMasked, from parent_ (none for gaps) and, for the
+        // first step - 1 points, tsq_.
+        void finishWindow(const std::vector<VectorType> &pts)
+        {
+            const size_t n = pts.size(), s = step_ - 1;
             // Seam: pairs (j, i) with j near the end, i near the beginning and i + n - j <= step - 1; i is the later
             // point. Only the first step - 1 points have partners across the seam.
             for (size_t i = 0; i < std::min(s, n); ++i)
@@ -407,6 +547,8 @@ namespace rtl
         std::vector<ElementType> tsq_;
         std::vector<size_t> parent_, slot_, last_, rotate_at_;
         std::vector<size_t> trace_first_;                     // traced runs: the scan index each cluster starts with
+        std::vector<std::uint32_t> masks_;                    // segmentMasked: bit k - 1 = linked at lag k, bit 31 = valid
+        static constexpr size_t max_masked_window = 31;
         Observer *observer_ = nullptr;
     };
 }
