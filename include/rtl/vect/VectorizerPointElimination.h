@@ -7,13 +7,16 @@
 
 #include <cmath>
 #include <cstddef>
+#include <algorithm>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "rtl/core/LineSegmentND.h"
 #include "rtl/core/Trace.h"
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/SimplifyCompatible.h"
 #include "rtl/vect/SimplifyTrace.h"
 
 namespace rtl
@@ -70,13 +73,33 @@ namespace rtl
         }
         template<class Vector>
         double lineDistance(const Vector &p, const Vector &a, const Vector &b) { return std::sqrt(lineDistance2(p, a, b)); }
+
+        //! Power of two s with max|finite coordinate| * s in [0.5, 1) (1 when all are 0): exact rescaling so that
+        //! no difference, product or square of rescaled coordinates overflows.
+        inline double unitScale(double max_abs)
+        {
+            if (!(max_abs > 0) || !std::isfinite(max_abs))
+                return 1;
+            int e = 0;
+            std::frexp(max_abs, &e);
+            return std::ldexp(1.0, -e);
+        }
     }
+
+    //! What Douglas-Peucker measures: the distance to the chord's infinite line (RTL) or to the chord segment
+    //! (simplify-js, Boost.Geometry).
+    enum class DpDistance { Line, Segment };
 
     //! Douglas-Peucker: keeps the end points, then recursively (with an explicit stack) the point farthest from the
     //! infinite line through the current end points while that distance exceeds epsilon. Coincident end points
     //! measure the distance to the point. Ties keep the first farthest point. Points with a NaN or infinite
-    //! coordinate are never kept (the end points are always kept). Distances are compared squared, so coordinates
-    //! beyond sqrt(max)/4 (about 3e153 in double, 4e18 in float) may overflow.
+    //! coordinate are never kept (the end points are always kept). Exact (up to rounding) for every finite
+    //! coordinate and epsilon: chains within (max/256)^(1/4) (about 4e76 in double, 4e8 in float) take the fast
+    //! Element scan; others, and ranges whose threshold eps^2 |u|^2 underflows, are measured in double on
+    //! coordinates rescaled by a power of two (distances below about 1e-150 of the chain's extent count as 0).
+    //! Addition: setDistance(DpDistance::Segment) measures the distance to the chord segment instead, with the
+    //! arithmetic of simplifyCompatibleIndices in double compared with epsilon^2 in double (so for double input the
+    //! kept points are simplify-js's high-quality ones).
     template<int dimensions, typename Element, class Observer = NoTrace>
     class VectorizerDouglasPeuckerND
     {
@@ -90,6 +113,9 @@ namespace rtl
         ~VectorizerDouglasPeuckerND() = default;
 
         void setEpsilon(ElementType eps) { eps2 = eps * eps; epsilon = static_cast<double>(eps); }
+        //! Distance to the chord line (default, RTL's) or segment.
+        void setDistance(DpDistance d) { distance_ = d; }
+        DpDistance distance() const { return distance_; }
         //! Observer of the following calls (nullptr: none); it must outlive them.
         void setObserver(Observer *observer) { observer_ = observer; }
         //! Reserves the working buffers for inputs of up to `size` points.
@@ -106,23 +132,45 @@ namespace rtl
             if constexpr (Observer::enabled)
                 if (observer_)
                     (*observer_)(DpStart{n, epsilon});
+            // `tame`: all coordinates finite with |c| <= (max/256)^(1/4), so no squared cross product (nor a
+            // difference or product before it) overflows; the Element scans rely on it. Otherwise (and for ranges
+            // whose threshold underflows) distances are measured in double on coordinates multiplied by `scale`,
+            // which brings the largest finite one to [0.5, 1).
+            const Element lim = std::sqrt(std::sqrt(std::numeric_limits<Element>::max() / 256));
+            Element max_abs = 0;
+            int ok = 1;
             if constexpr (dimensions == 2 || dimensions == 3)
             {
-                // Coordinates as separate arrays: the distance scans below then run on plain SIMD lanes. `tame`:
-                // all |coordinates| <= sqrt(max) / 4, so no cross product can be NaN (differences and products stay
-                // finite; squares may only overflow to +inf), which the blockwise maximum relies on.
+                // Coordinates as separate arrays: the distance scans below then run on plain SIMD lanes.
                 soa.resize(dimensions * n);
-                const Element lim = std::sqrt(std::numeric_limits<Element>::max()) / 4;
-                int ok = 1;
                 for (size_t i = 0; i < n; ++i)
                     for (int k = 0; k < dimensions; ++k)
                     {
                         const Element v = input[i][k];
                         soa[k * n + i] = v;
-                        ok &= static_cast<int>(std::abs(v) <= lim);
+                        const Element m = std::abs(v);
+                        ok &= static_cast<int>(m <= lim);
+                        max_abs = m > max_abs ? m : max_abs;
                     }
-                tame = ok != 0;
             }
+            else
+                for (size_t i = 0; i < n; ++i)
+                    for (int k = 0; k < dimensions; ++k)
+                    {
+                        const Element m = std::abs(input[i][k]);
+                        ok &= static_cast<int>(m <= lim);
+                        max_abs = m > max_abs ? m : max_abs;
+                    }
+            tame = ok != 0;
+            if (!tame)
+            {
+                max_abs = 0;   // the largest finite one
+                for (size_t i = 0; i < n; ++i)
+                    for (int k = 0; k < dimensions; ++k)
+                        if (std::isfinite(input[i][k]) && std::abs(input[i][k]) > max_abs)
+                            max_abs = std::abs(input[i][k]);
+            }
+            scale = vect_detail::unitScale(static_cast<double>(max_abs));
             stack.clear();
             stack.emplace_back(0, n - 1);
             while (!stack.empty())
@@ -131,7 +179,7 @@ namespace rtl
                 stack.pop_back();
                 if (b - a < 2)
                     continue;
-                const size_t far = (dimensions == 2 || dimensions == 3) && tame ? farthestSoa(input, a, b) : farthest(input, a, b);
+                const size_t far = pick(input, a, b);
                 if constexpr (Observer::enabled)
                     if (observer_)
                         reportRange(input, a, b, far);
@@ -213,6 +261,119 @@ namespace rtl
         }
 
     private:
+        size_t pick(const std::vector<VectorType> &pts, size_t a, size_t b) const
+        {
+            if (distance_ == DpDistance::Segment)
+                return farthestSegment(pts, a, b);
+            if (!tame)
+                return farthestScaled(pts, a, b);
+            if constexpr (dimensions == 2 || dimensions == 3)
+                return farthestSoa(pts, a, b);
+            else
+                return farthest(pts, a, b);
+        }
+
+        //! Coordinates of point i in double, times `scale`.
+        void scaled(const VectorType &p, double *out) const
+        {
+            for (int k = 0; k < dimensions; ++k)
+                out[k] = static_cast<double>(p[k]) * scale;
+        }
+
+        //! farthest() for any finite input: in double on rescaled coordinates (|c| < 1, so nothing overflows),
+        //! comparing the squared distance with (epsilon * scale)^2.
+        size_t farthestScaled(const std::vector<VectorType> &pts, size_t a, size_t b) const
+        {
+            double pa[dimensions], u[dimensions], v[dimensions];
+            scaled(pts[a], pa);
+            scaled(pts[b], u);
+            double l2 = 0;
+            for (int k = 0; k < dimensions; ++k)
+            {
+                u[k] -= pa[k];
+                l2 += u[k] * u[k];
+            }
+            const double e = epsilon * scale;
+            double best_d = e * e;
+            size_t best = 0;
+            for (size_t i = a + 1; i < b; ++i)
+            {
+                if (!finite(pts[i]))
+                    continue;
+                scaled(pts[i], v);
+                double d2 = 0;
+                if constexpr (dimensions == 2)
+                {
+                    const double vx = v[0] - pa[0], vy = v[1] - pa[1];
+                    if (l2 > 0)
+                    {
+                        const double c = vx * u[1] - vy * u[0];
+                        d2 = c * c / l2;
+                    }
+                    else
+                        d2 = vx * vx + vy * vy;
+                }
+                else if constexpr (dimensions == 3)
+                {
+                    const double vx = v[0] - pa[0], vy = v[1] - pa[1], vz = v[2] - pa[2];
+                    if (l2 > 0)
+                    {
+                        const double cx = vy * u[2] - vz * u[1], cy = vz * u[0] - vx * u[2], cz = vx * u[1] - vy * u[0];
+                        d2 = (cx * cx + cy * cy + cz * cz) / l2;
+                    }
+                    else
+                        d2 = vx * vx + vy * vy + vz * vz;
+                }
+                else
+                {
+                    double vu = 0;
+                    for (int k = 0; k < dimensions; ++k)
+                    {
+                        v[k] -= pa[k];
+                        vu += v[k] * u[k];
+                    }
+                    const double t = l2 > 0 ? vu / l2 : 0;
+                    for (int k = 0; k < dimensions; ++k)
+                        d2 += (v[k] - u[k] * t) * (v[k] - u[k] * t);
+                }
+                if (d2 > best_d) { best_d = d2; best = i; }
+            }
+            return best;
+        }
+
+        //! Index in (a, b) of the first point farthest from the chord segment beyond epsilon, else 0: the
+        //! arithmetic of simplifyCompatibleIndices (rescaled only when the chain is not tame, which is exact by a
+        //! power of two unless that arithmetic would have overflowed). Non-finite points are never picked.
+        size_t farthestSegment(const std::vector<VectorType> &pts, size_t a, size_t b) const
+        {
+            double pa[dimensions], pb[dimensions], p[dimensions];
+            scaled(pts[a], pa);
+            scaled(pts[b], pb);
+            const simplify_detail::Chord<dimensions> chord(pa, pb);
+            const double e = epsilon * scale;
+            double best_d = e * e;
+            size_t best = 0;
+            for (size_t i = a + 1; i < b; ++i)
+            {
+                scaled(pts[i], p);
+                const double d2 = simplify_detail::segmentDistance2<dimensions>(p, chord);
+                if (d2 > best_d && finite(pts[i])) { best_d = d2; best = i; }
+            }
+            return best;
+        }
+
+        //! Distance reported by the trace: the measure in use, in double.
+        double rangeDistance(const VectorType &p, const VectorType &a, const VectorType &b) const
+        {
+            if (distance_ == DpDistance::Line)
+                return vect_detail::lineDistance2(p, a, b);
+            double pa[dimensions], pb[dimensions], q[dimensions];
+            scaled(a, pa);
+            scaled(b, pb);
+            scaled(p, q);
+            return simplify_detail::segmentDistance2<dimensions>(q, simplify_detail::Chord<dimensions>(pa, pb)) / (scale * scale);
+        }
+
         //! The range event: the split decision is the untraced one (`far`); without a split, the farthest point
         //! is searched here (in double, finite points only) to show how far it is.
         void reportRange(const std::vector<VectorType> &pts, size_t a, size_t b, size_t far) const
@@ -220,14 +381,14 @@ namespace rtl
             size_t shown = far;
             double distance = 0;
             if (far != 0)
-                distance = vect_detail::lineDistance(pts[far], pts[a], pts[b]);
+                distance = std::sqrt(rangeDistance(pts[far], pts[a], pts[b]));
             else
             {
                 shown = a;
                 double best2 = 0;
                 for (size_t i = a + 1; i < b; ++i)
                 {
-                    const double d2 = vect_detail::lineDistance2(pts[i], pts[a], pts[b]);
+                    const double d2 = rangeDistance(pts[i], pts[a], pts[b]);
                     if (d2 > best2 && finite(pts[i])) { best2 = d2; shown = i; }
                 }
                 distance = std::sqrt(best2);
@@ -241,8 +402,10 @@ namespace rtl
         size_t farthestSoa(const std::vector<VectorType> &pts, size_t a, size_t b) const
         {
             const Element l2 = (pts[b] - pts[a]).lengthSquared();
-            if (!(l2 > Element(0)))
-                return farthest(pts, a, b);
+            // A threshold below the normal range (tiny epsilon or chord, or epsilon 0) would lose the comparison
+            // to underflow: measure such a range in double.
+            if (!(l2 > Element(0)) || !(eps2 * l2 >= std::numeric_limits<Element>::min()))
+                return farthestScaled(pts, a, b);
             const size_t n = pts.size();
             const Element *x = soa.data(), *y = x + n, *z = y + n;
             const Element ax = x[a], ay = y[a], az = dimensions == 3 ? z[a] : Element(0);
@@ -292,8 +455,10 @@ namespace rtl
         Element eps2{static_cast<Element>(1e-6)};
         double epsilon{1e-3};
         Observer *observer_{nullptr};
+        DpDistance distance_{DpDistance::Line};
         std::vector<Element> soa;
         bool tame{false};
+        double scale{1};
         std::vector<char> keep;
         std::vector<std::pair<size_t, size_t>> stack;
         std::vector<size_t> keys;
@@ -302,7 +467,11 @@ namespace rtl
     //! Reumann-Witkam: a strip of half-width epsilon around the line from the current key point through the next
     //! distinct point; the scan advances while points stay inside, and the last point inside becomes the next key
     //! (the new strip then runs from it through the first point outside). The polyline runs from the first to the
-    //! last input point.
+    //! last input point. Exact (up to rounding) for every finite coordinate: chains within sqrt(max)/8 (about
+    //! 2e153 in double, 2e18 in float) are measured as they are; others on coordinates rescaled by a power of two
+    //! (no square overflows). Strip directions are normalised with rescaling, so however short the segment (a
+    //! subnormal difference included) the direction is its own, not an arbitrary axis. setEpsilon(float) is RTL's;
+    //! for double (or wider) vectorizers the ElementType overload keeps the full value.
     template<int dimensions, typename Element, class Observer = NoTrace>
     class VectorizerReumannWitkamND
     {
@@ -315,7 +484,10 @@ namespace rtl
         explicit VectorizerReumannWitkamND(ElementType eps) { setEpsilon(eps); }
         ~VectorizerReumannWitkamND() = default;
 
-        void setEpsilon(float eps) { eps2 = static_cast<Element>(eps) * static_cast<Element>(eps); epsilon = static_cast<double>(eps); }
+        void setEpsilon(float eps) { setEps(static_cast<Element>(eps)); }
+        //! Addition: epsilon without narrowing to float (only where ElementType is not float).
+        template<class E = Element, std::enable_if_t<!std::is_same_v<E, float>, int> = 0>
+        void setEpsilon(ElementType eps) { setEps(eps); }
         void setMaxSize(size_t size) { keys.reserve(size); }
         //! Observer of the following calls (nullptr: none); it must outlive them.
         void setObserver(Observer *observer) { observer_ = observer; }
@@ -325,7 +497,6 @@ namespace rtl
             const size_t n = input.size();
             keys.clear();
             if (n < 2) { output.clear(); return; }
-            size_t k = 0;
             keys.push_back(0);
             if constexpr (Observer::enabled)
                 if (observer_)
@@ -333,47 +504,23 @@ namespace rtl
                     (*observer_)(RwStart{n, epsilon});
                     (*observer_)(RwKeep{0});
                 }
-            size_t j = 1;
-            while (j < n && input[j] == input[k])
-                ++j;
-            if (j < n)
-            {
-                VectorType dir = (input[j] - input[k]).normalized();
-                [[maybe_unused]] size_t through = j;   // the strip's second point, for the trace only
-                if constexpr (Observer::enabled)
-                    if (observer_)
-                        (*observer_)(RwStrip{k, j, epsilon});
-                size_t i = j + 1;
-                constexpr size_t block = 8;
-                while (i < n)
+            const Element lim = std::sqrt(std::numeric_limits<Element>::max()) / 8;
+            bool tame = true;
+            Element max_abs = 0;
+            for (size_t i = 0; i < n; ++i)
+                for (int q = 0; q < dimensions; ++q)
                 {
-                    // Whole blocks of 8 are tested without branches; the first point outside is searched only in
-                    // a block that has one.
-                    if (i + block <= n)
-                    {
-                        bool out = false;
-                        for (size_t q = 0; q < block; ++q)
-                            out |= distance2(input[i + q], input[k], dir) > eps2;
-                        if (!out) { i += block; continue; }
-                    }
-                    if (distance2(input[i], input[k], dir) > eps2)
-                    {
-                        if constexpr (Observer::enabled)
-                            if (observer_)
-                            {
-                                const double d = vect_detail::lineDistance(input[i], input[k], input[through]);
-                                (*observer_)(RwExit{i, k, d, epsilon});
-                                (*observer_)(RwKeep{i - 1});
-                                (*observer_)(RwStrip{i - 1, i, epsilon});
-                                through = i;
-                            }
-                        k = i - 1;
-                        keys.push_back(k);
-                        dir = (input[i] - input[k]).normalized();
-                    }
-                    ++i;
+                    const Element c = std::abs(input[i][q]);
+                    tame &= c <= lim;
+                    if (c > max_abs && std::isfinite(c)) max_abs = c;
                 }
-            }
+            // Rescaled so that the largest coordinate is just within `lim`: squares cannot overflow, and epsilon
+            // shrinks as little as possible (its square underflows only where the chain's own rounding is far
+            // coarser than epsilon).
+            if (tame)
+                scan<false>(input, Element(1));
+            else
+                scan<true>(input, static_cast<Element>(std::ldexp(vect_detail::unitScale(static_cast<double>(max_abs)), std::ilogb(lim))));
             if (keys.back() != n - 1)
             {
                 keys.push_back(n - 1);
@@ -405,8 +552,87 @@ namespace rtl
             }
         }
 
+        //! Unit direction from a to b (a != b), normalised after rescaling by the largest |component|, so that no
+        //! square underflows or overflows.
+        static VectorType direction(const VectorType &a, const VectorType &b)
+        {
+            VectorType d = b - a;
+            bool finite_d = true;
+            for (int q = 0; q < dimensions; ++q)
+                finite_d &= static_cast<bool>(std::isfinite(d[q]));
+            if (!finite_d)
+                d = b * Element(0.5) - a * Element(0.5);
+            Element m = 0;
+            for (int q = 0; q < dimensions; ++q)
+                m = std::max(m, std::abs(d[q]));
+            if (!(m > 0) || !std::isfinite(m))
+                return d.normalized();
+            d /= m;
+            return d / d.length();
+        }
+
     private:
+        void setEps(Element eps) { eps2 = eps * eps; eps_ = eps; epsilon = static_cast<double>(eps); }
+
+        //! The scan after the first key; `rescaled`: distances on coordinates times s (a power of two), compared
+        //! with (epsilon s)^2.
+        template<bool rescaled>
+        void scan(const std::vector<VectorType> &input, Element s)
+        {
+            const size_t n = input.size();
+            const Element e2 = rescaled ? (eps_ * s) * (eps_ * s) : eps2;
+            const auto far = [&](const VectorType &p, const VectorType &a, const VectorType &u) {
+                if constexpr (rescaled)
+                    return distance2(p * s, a * s, u) > e2;
+                else
+                    return distance2(p, a, u) > e2;
+            };
+            size_t k = 0;
+            size_t j = 1;
+            while (j < n && input[j] == input[k])
+                ++j;
+            if (j < n)
+            {
+                VectorType dir = direction(input[k], input[j]);
+                [[maybe_unused]] size_t through = j;   // the strip's second point, for the trace only
+                if constexpr (Observer::enabled)
+                    if (observer_)
+                        (*observer_)(RwStrip{k, j, epsilon});
+                size_t i = j + 1;
+                constexpr size_t block = 8;
+                while (i < n)
+                {
+                    // Whole blocks of 8 are tested without branches; the first point outside is searched only in
+                    // a block that has one.
+                    if (i + block <= n)
+                    {
+                        bool out = false;
+                        for (size_t q = 0; q < block; ++q)
+                            out |= far(input[i + q], input[k], dir);
+                        if (!out) { i += block; continue; }
+                    }
+                    if (far(input[i], input[k], dir))
+                    {
+                        if constexpr (Observer::enabled)
+                            if (observer_)
+                            {
+                                const double d = vect_detail::lineDistance(input[i], input[k], input[through]);
+                                (*observer_)(RwExit{i, k, d, epsilon});
+                                (*observer_)(RwKeep{i - 1});
+                                (*observer_)(RwStrip{i - 1, i, epsilon});
+                                through = i;
+                            }
+                        k = i - 1;
+                        keys.push_back(k);
+                        dir = direction(input[k], input[i]);
+                    }
+                    ++i;
+                }
+            }
+        }
+
         Element eps2{static_cast<Element>(1e-6)};
+        Element eps_{static_cast<Element>(1e-3)};
         double epsilon{1e-3};
         Observer *observer_{nullptr};
         std::vector<size_t> keys;

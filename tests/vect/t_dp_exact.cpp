@@ -1,0 +1,190 @@
+// Douglas-Peucker over the whole finite range (issue 15.5) and its segment-distance option: the issue's inputs
+// (far points dropped when eps^2 |u|^2 and the squared cross product both overflowed), a brute-force long-double
+// reference at scales from 1e-30 to 1e300, and segment mode against simplifyCompatibleIndices.
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "rtl/Core.h"
+#include "rtl/vect/SimplifyCompatible.h"
+#include "rtl/Vectorization.h"
+
+namespace
+{
+    template<int d, typename T>
+    std::vector<size_t> keptBy(rtl::VectorizerDouglasPeuckerND<d, T> &dp, const std::vector<rtl::VectorND<d, T>> &pts)
+    {
+        std::vector<rtl::LineSegmentND<d, T>> segs;
+        dp(pts, segs);
+        // Recover indices from the segment end points (the test chains have distinct points).
+        std::vector<size_t> out;
+        size_t i = 0;
+        for (size_t s = 0; s <= segs.size() && !segs.empty(); ++s)
+        {
+            const auto &target = s < segs.size() ? segs[s].beg() : segs.back().end();
+            while (i < pts.size() && !(pts[i] == target)) ++i;
+            out.push_back(i);
+        }
+        return out;
+    }
+
+    //! Reference: recursive DP in long double (x87: squares of any double fit), line distance, first maximum.
+    template<int d, typename T>
+    void refStep(const std::vector<rtl::VectorND<d, T>> &p, size_t a, size_t b, long double eps, std::vector<char> &keep)
+    {
+        if (b - a < 2) return;
+        long double u[d], l2 = 0;
+        for (int k = 0; k < d; ++k) { u[k] = (long double)p[b][k] - (long double)p[a][k]; l2 += u[k] * u[k]; }
+        long double best = eps * eps;
+        size_t far = 0;
+        for (size_t i = a + 1; i < b; ++i)
+        {
+            long double v[d], vu = 0;
+            for (int k = 0; k < d; ++k) { v[k] = (long double)p[i][k] - (long double)p[a][k]; vu += v[k] * u[k]; }
+            const long double t = l2 > 0 ? vu / l2 : 0;
+            long double d2 = 0;
+            for (int k = 0; k < d; ++k) d2 += (v[k] - u[k] * t) * (v[k] - u[k] * t);
+            if (d2 > best) { best = d2; far = i; }
+        }
+        if (far) { keep[far] = 1; refStep(p, a, far, eps, keep); refStep(p, far, b, eps, keep); }
+    }
+    template<int d, typename T>
+    std::vector<size_t> reference(const std::vector<rtl::VectorND<d, T>> &p, long double eps)
+    {
+        std::vector<char> keep(p.size(), 0);
+        keep.front() = keep.back() = 1;
+        refStep(p, 0, p.size() - 1, eps, keep);
+        std::vector<size_t> out;
+        for (size_t i = 0; i < p.size(); ++i) if (keep[i]) out.push_back(i);
+        return out;
+    }
+
+    //! Random walks scaled to `scale`, eps a fraction of it; compared where the reference decides the same at
+    //! eps (1 +- 1e-5) (no near-tie). Returns the number of chains compared.
+    template<int d, typename T>
+    int compareAtScale(double scale, unsigned seed)
+    {
+        std::mt19937 rng(seed);
+        std::normal_distribution<double> g(0, 1);
+        int compared = 0;
+        for (int c = 0; c < 20; ++c)
+        {
+            std::vector<rtl::VectorND<d, T>> pts;
+            double pos[d] = {};
+            for (int i = 0; i < 200; ++i)
+            {
+                rtl::VectorND<d, T> v;
+                for (int k = 0; k < d; ++k) { pos[k] += g(rng); v[k] = static_cast<T>(pos[k] * scale); }
+                pts.push_back(v);
+            }
+            const double eps = scale * (0.5 + c % 5);
+            const auto lo = reference(pts, (long double)eps * (1 - 1e-5L)), hi = reference(pts, (long double)eps * (1 + 1e-5L));
+            if (lo != hi) continue;
+            rtl::VectorizerDouglasPeuckerND<d, T> dp(static_cast<T>(eps));
+            EXPECT_EQ(keptBy(dp, pts), lo) << "scale " << scale << " chain " << c;
+            ++compared;
+        }
+        return compared;
+    }
+}
+
+// Issue 15.5: 3f, eps 1e10, coordinates about 7e12: the squared cross product and eps^2 |u|^2 were both +inf.
+TEST(DouglasPeuckerExact, IssueInput3f)
+{
+    using V = rtl::Vector3f;
+    const std::vector<V> pts{V(7e12f, 7e12f, 7e12f), V(1.4e13f, 1.4e13f, 7e12f), V(2.1e13f, 7e12f, 7e12f)};
+    rtl::VectorizerDouglasPeucker3f dp(1e10f);
+    EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, 1, 2}));   // the middle point is 7e12 off the chord
+}
+
+// 2D float from about 1e11.
+TEST(DouglasPeuckerExact, IssueInput2f)
+{
+    using V = rtl::Vector2f;
+    const std::vector<V> pts{V(1e11f, 1e11f), V(2e11f, 2e11f), V(3e11f, 1e11f), V(3.5e11f, 1.0001e11f), V(4e11f, 1e11f)};
+    rtl::VectorizerDouglasPeucker2f dp(1e9f);
+    EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, 1, 2, 4}));   // 3 is 1e7 off chord 2-4
+}
+
+// Near the top of the double range: differences themselves overflow unless rescaled.
+TEST(DouglasPeuckerExact, HugeDoubleCoordinates)
+{
+    using V = rtl::Vector2d;
+    const double m = std::numeric_limits<double>::max();
+    const std::vector<V> pts{V(-0.9 * m, 0), V(0, 0.8 * m), V(0.9 * m, 0), V(0.95 * m, 1e300)};
+    rtl::VectorizerDouglasPeucker2d dp(1e306);
+    EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, 1, 2, 3}));
+    dp.setEpsilon(0.81 * m);   // the spike, 0.8 max off the first chord, is within: only the ends remain
+    EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, 3}));
+}
+
+TEST(DouglasPeuckerExact, MatchesLongDoubleReferenceAtEveryScale)
+{
+    int compared = 0, expected = 0;
+    for (double scale : {1e-30, 1e-5, 1.0, 1e8, 1e11, 1e15, 1e30, 1e36})
+    {
+        compared += compareAtScale<2, float>(scale, 1) + compareAtScale<3, float>(scale, 2);
+        expected += 40;
+    }
+    for (double scale : {1e-300, 1e-30, 1.0, 1e30, 1e76, 1e77, 1e100, 1e153, 1e200, 1e300})
+    {
+        compared += compareAtScale<2, double>(scale, 3) + compareAtScale<3, double>(scale, 4);
+        expected += 40;
+    }
+    EXPECT_GT(compared, expected * 9 / 10);   // near-ties are rare
+}
+
+// Segment distance differs from line distance where a point projects beyond the chord.
+TEST(DouglasPeuckerSegment, BeyondTheChordEnd)
+{
+    using V = rtl::Vector2d;
+    const std::vector<V> pts{V(0, 0), V(5, 0.1), V(3, 0), V(-2, 0.1), V(1, 0)};
+    rtl::VectorizerDouglasPeucker2d dp(0.5);
+    EXPECT_EQ(dp.distance(), rtl::DpDistance::Line);
+    EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, 4}));   // all within 0.1 of the line y = 0
+    dp.setDistance(rtl::DpDistance::Segment);
+    EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, 1, 3, 4}));
+}
+
+// For double input, segment mode keeps exactly simplify-js's high-quality points.
+TEST(DouglasPeuckerSegment, EqualsSimplifyCompatibleHighQuality)
+{
+    std::mt19937 rng(7);
+    std::normal_distribution<double> g(0, 1);
+    for (int c = 0; c < 30; ++c)
+    {
+        std::vector<rtl::Vector2d> pts;
+        std::vector<double> flat;
+        double x = 0, y = 0;
+        for (int i = 0; i < 2000; ++i)
+        {
+            x += g(rng); y += g(rng);
+            if (c % 3 == 0) { x *= 1e100; y *= 1e100; }   // rescaled path: exact by a power of two
+            pts.emplace_back(x, y);
+            flat.push_back(x);
+            flat.push_back(y);
+            if (c % 3 == 0) { x /= 1e100; y /= 1e100; }
+        }
+        const double eps = (c % 3 == 0 ? 1e100 : 1.0) * (0.5 + c % 4);
+        rtl::VectorizerDouglasPeucker2d dp(eps);
+        dp.setDistance(rtl::DpDistance::Segment);
+        EXPECT_EQ(keptBy(dp, pts), rtl::simplifyCompatibleIndices(flat.data(), pts.size(), 2, eps, true)) << c;
+    }
+}
+
+// Non-finite points are never kept in segment mode either.
+TEST(DouglasPeuckerSegment, NonFiniteNeverKept)
+{
+    using V = rtl::Vector3d;
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<V> pts{V(0, 0, 0), V(inf, 1, 1), V(1, 5, 0), V(std::nan(""), 0, 0), V(2, 0, 0)};
+    rtl::VectorizerDouglasPeucker3d dp(0.1);
+    dp.setDistance(rtl::DpDistance::Segment);
+    std::vector<rtl::LineSegment3d> segs;
+    dp(pts, segs);
+    ASSERT_EQ(segs.size(), 2u);
+    EXPECT_EQ(segs[0].end(), pts[2]);
+}

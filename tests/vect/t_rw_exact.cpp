@@ -1,0 +1,128 @@
+// Reumann-Witkam over the whole range (issue 15.6): epsilon kept at full precision for double vectorizers, strip
+// directions of tiny segments, and chains near the top of the range (rescaled), against a long-double reference.
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "rtl/Core.h"
+#include "rtl/Vectorization.h"
+
+namespace
+{
+    template<int d, typename T>
+    std::vector<size_t> keptBy(rtl::VectorizerReumannWitkamND<d, T> &rw, const std::vector<rtl::VectorND<d, T>> &pts)
+    {
+        std::vector<rtl::LineSegmentND<d, T>> segs;
+        rw(pts, segs);
+        std::vector<size_t> out;
+        size_t i = 0;
+        for (size_t s = 0; s <= segs.size() && !segs.empty(); ++s)
+        {
+            const auto &target = s < segs.size() ? segs[s].beg() : segs.back().end();
+            while (i < pts.size() && !(pts[i] == target)) ++i;
+            out.push_back(i);
+        }
+        return out;
+    }
+
+    //! Reference: the documented strip rule in long double (distance from the line through key and `through`).
+    template<int d, typename T>
+    std::vector<size_t> reference(const std::vector<rtl::VectorND<d, T>> &p, long double eps)
+    {
+        const auto dist2 = [&](size_t i, size_t a, size_t b) {
+            long double u[d], v[d], uu = 0, vu = 0;
+            for (int k = 0; k < d; ++k)
+            {
+                u[k] = (long double)p[b][k] - (long double)p[a][k];
+                v[k] = (long double)p[i][k] - (long double)p[a][k];
+                uu += u[k] * u[k];
+                vu += u[k] * v[k];
+            }
+            long double r = 0;
+            for (int k = 0; k < d; ++k) r += (v[k] - u[k] * vu / uu) * (v[k] - u[k] * vu / uu);
+            return r;
+        };
+        std::vector<size_t> keys{0};
+        size_t k = 0, j = 1;
+        while (j < p.size() && p[j] == p[k]) ++j;
+        size_t through = j;
+        for (size_t i = j + 1; i < p.size(); ++i)
+            if (dist2(i, k, through) > eps * eps) { k = i - 1; keys.push_back(k); through = i; }
+        if (keys.back() != p.size() - 1) keys.push_back(p.size() - 1);
+        return keys;
+    }
+}
+
+// Issue 15.6: eps 1e-50 narrowed to 0 through setEpsilon(float).
+TEST(ReumannWitkamExact, TinyEpsilonKeptInDouble)
+{
+    using V = rtl::Vector2d;
+    const std::vector<V> pts{V(0, 0), V(1, 0), V(2, 1e-51), V(3, 0), V(4, 3e-50), V(5, 0)};
+    rtl::VectorizerReumannWitkam2d rw(1e-50);
+    EXPECT_EQ(keptBy(rw, pts), (std::vector<size_t>{0, 3, 4, 5}));   // 1e-51 inside, 3e-50 outside
+    rw.setEpsilon(1e-50);
+    EXPECT_EQ(keptBy(rw, pts), (std::vector<size_t>{0, 3, 4, 5}));
+    volatile double tiny = 1e-50;
+    rw.setEpsilon(static_cast<float>(tiny));   // RTL's float overload: 0 in float, so the 1e-51 point leaves the strip too
+    EXPECT_EQ(keptBy(rw, pts), (std::vector<size_t>{0, 1, 2, 3, 4, 5}));
+}
+
+// Issue 15.6: eps 1e39 became inf in float and a 1e45 spike was dropped.
+TEST(ReumannWitkamExact, HugeEpsilonKeepsTheSpike)
+{
+    using V = rtl::Vector2d;
+    const std::vector<V> pts{V(0, 0), V(1e40, 0), V(2e40, 0), V(3e40, 1e45), V(4e40, 0)};
+    rtl::VectorizerReumannWitkam2d rw(1e39);
+    EXPECT_EQ(keptBy(rw, pts), (std::vector<size_t>{0, 2, 3, 4}));
+}
+
+// A segment far shorter than 1e-19 (its squared length underflows in float) still gives its own direction.
+TEST(ReumannWitkamExact, TinySegmentDirection)
+{
+    using V = rtl::Vector2f;
+    const std::vector<V> pts{V(0, 0), V(1e-25f, 1e-25f), V(1, 1), V(2, 2), V(3, 2.5f)};
+    rtl::VectorizerReumannWitkam2f rw(0.01f);
+    EXPECT_EQ(keptBy(rw, pts), (std::vector<size_t>{0, 3, 4}));
+    const auto u = rtl::VectorizerReumannWitkam2f::direction(V(0, 0), V(3e-44f, 4e-44f));   // subnormal components
+    EXPECT_NEAR(u[0], 0.6f, 0.03f);   // 3e-44 and 4e-44 are rounded to multiples of 1.4e-45
+    EXPECT_NEAR(u[1], 0.8f, 0.03f);
+    EXPECT_NEAR(u.length(), 1.0f, 1e-6f);
+}
+
+TEST(ReumannWitkamExact, MatchesLongDoubleReferenceAtEveryScale)
+{
+    std::mt19937 rng(11);
+    std::normal_distribution<double> g(0, 1);
+    int compared = 0;
+    for (double scale : {1e-10, 1.0, 1e10, 1e18, 1e19, 1e30, 1e36})
+        for (int c = 0; c < 10; ++c)
+        {
+            std::vector<rtl::Vector2f> pf;
+            std::vector<rtl::Vector3d> pd;
+            double x = 0, y = 0, z = 0;
+            for (int i = 0; i < 300; ++i)
+            {
+                x += g(rng); y += g(rng); z += g(rng);
+                pf.emplace_back(static_cast<float>(x * scale), static_cast<float>(y * scale));
+                pd.emplace_back(x * scale * 1e270, y * scale * 1e270, z * scale * 1e270);
+            }
+            const double eps = scale * (0.5 + c % 3);
+            if (reference(pf, eps * (1 - 1e-4L)) == reference(pf, eps * (1 + 1e-4L)))
+            {
+                rtl::VectorizerReumannWitkam2f rw(static_cast<float>(eps));
+                EXPECT_EQ(keptBy(rw, pf), reference(pf, (long double)static_cast<float>(eps))) << scale << " " << c;
+                ++compared;
+            }
+            const double epsd = eps * 1e270;
+            if (reference(pd, epsd * (1 - 1e-6L)) == reference(pd, epsd * (1 + 1e-6L)))
+            {
+                rtl::VectorizerReumannWitkam3d rw(epsd);
+                EXPECT_EQ(keptBy(rw, pd), reference(pd, (long double)epsd)) << scale << " " << c;
+                ++compared;
+            }
+        }
+    EXPECT_GT(compared, 120);
+}
