@@ -18,7 +18,7 @@ export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2
 //   { type: 'strip', x0, y0, x1, y1, half, colour?, bounded? } the band of half-width `half` around the line through
 //                                                         both points (bounded: only between them)
 //   { type: 'marker', x, y, colour?, size?, shape? }       a highlighted point (size in CSS px), shape 'ring' | 'dot' | 'x'
-//   { type: 'label', x, y, text, colour? }
+//   { type: 'label', x, y, text, colour?, bold?, offset? }  offset: [dx, dy] CSS px from the point (default 6, -6)
 // and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
 export class Scene {
   constructor(title = '') { this.title = title; this.items = []; this.inset = null; }
@@ -219,9 +219,9 @@ export class Figure {
         break;
       }
       case 'label':
-        ctx.font = `${12 * d}px system-ui, sans-serif`;
+        ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * d}px system-ui, sans-serif`;
         ctx.fillStyle = it.colour ?? INK.segment;
-        ctx.fillText(it.text, v.X(it.x) + 6 * d, v.Y(it.y) - 6 * d);
+        ctx.fillText(it.text, v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d);
         break;
       default:
         throw new TypeError(`Figure: unknown item type ${it.type}`);

@@ -1,11 +1,12 @@
 // Layout of the lesson page measured in Chromium: at 1280x800 the figure, the lesson's parameters and the player
-// are on screen together without scrolling; at 390x844 nothing is wider than the screen and the comparison table
-// keeps all its columns (it scrolls inside its box). Invalid inputs are marked and explained next to the field.
+// are on screen together without scrolling, and the comparison table fits beside the panel; at 390x844 nothing is
+// wider than the screen and the comparison table keeps all its columns (it scrolls inside its box). Invalid inputs
+// are marked and explained next to the field.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { PAGE_TIMEOUT, openDemoPage, openLesson } from './helpers.js';
 
-const LESSONS = ['car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw', 'compare'];
+const LESSONS = ['car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw', 'compare', 'tracking'];
 const box = (page, sel) => page.locator(sel).first().boundingBox();
 
 describe('lesson page layout', { timeout: 240000 }, () => {
@@ -32,6 +33,22 @@ describe('lesson page layout', { timeout: 240000 }, () => {
       }
       assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
     }
+  });
+
+  test('1280 px: the comparison table shows all its columns without scrolling, even beside a page scrollbar', async () => {
+    // 1265 px = 1280 px less a classic 15 px scrollbar (the page is taller than 800 px)
+    for (const width of [1280, 1265]) {
+      await page.setViewportSize({ width, height: 800 });
+      await openLesson(page, 'compare');
+      const t = await page.$eval('#lesson-stage .table-wrap', (el) => {
+        const ths = [...el.querySelectorAll('thead th')], r = el.getBoundingClientRect();
+        return { sw: el.scrollWidth, cw: el.clientWidth, right: r.right, last: ths.at(-1).getBoundingClientRect().right, n: ths.length };
+      });
+      assert.equal(t.n, 6);
+      assert.ok(t.sw <= t.cw, `${width} px: the table scrolls (${t.sw} > ${t.cw})`);
+      assert.ok(t.last <= t.right + 0.5, `${width} px: last column ends at ${t.last}, its box at ${t.right}`);
+    }
+    await page.setViewportSize({ width: 1280, height: 800 });
   });
 
   test('390x844: no sideways scrolling, the comparison table keeps its columns', async () => {

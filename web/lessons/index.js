@@ -9,6 +9,7 @@ import dp from './dp.js';
 import rw from './rw.js';
 import compare from './compare.js';
 import tfTree from './tf-tree.js';
+import tracking from './tracking.js';
 import lidar3d from './lidar3d.js';
 
-export default [tlsFit, car, ia, ftls, aftls, itls, dp, rw, compare, tfTree, lidar3d];
+export default [tlsFit, car, ia, ftls, aftls, itls, dp, rw, compare, tfTree, tracking, lidar3d];
