@@ -40,6 +40,10 @@ describe('lesson page layout', { timeout: 240000 }, () => {
     for (const width of [1280, 1265]) {
       await page.setViewportSize({ width, height: 800 });
       await openLesson(page, 'compare');
+      // the widest state: the longest method's row is the current one (bold)
+      await page.fill('#player [data-act="scrub"]', '5');
+      await page.dispatchEvent('#player [data-act="scrub"]', 'input');
+      await page.waitForFunction(() => window.__rtl.lessons.find((l) => l.id === 'compare').step === 4, null, { timeout: PAGE_TIMEOUT });
       const t = await page.$eval('#lesson-stage .table-wrap', (el) => {
         const ths = [...el.querySelectorAll('thead th')], r = el.getBoundingClientRect();
         return { sw: el.scrollWidth, cw: el.clientWidth, right: r.right, last: ths.at(-1).getBoundingClientRect().right, n: ths.length };
@@ -47,6 +51,8 @@ describe('lesson page layout', { timeout: 240000 }, () => {
       assert.equal(t.n, 6);
       assert.ok(t.sw <= t.cw, `${width} px: the table scrolls (${t.sw} > ${t.cw})`);
       assert.ok(t.last <= t.right + 0.5, `${width} px: last column ends at ${t.last}, its box at ${t.right}`);
+      const verdict = await box(page, '#lesson-stage .verdict');
+      assert.ok(verdict.y + verdict.height <= 800, `${width} px: the verdict ends at ${verdict.y + verdict.height}`);
     }
     await page.setViewportSize({ width: 1280, height: 800 });
   });

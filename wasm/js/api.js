@@ -346,6 +346,24 @@ function wrap(m) {
     }
   }
 
+  // Writes `len` numbers into the module's kept input buffer (wasm/src/adapter.h; fill(HEAPF64, index) writes them
+  // from index on, straight into wasm memory) and returns check(f(ptr, len)). Inputs beyond the buffer's limit get
+  // a block of their own, freed after the call.
+  function withInputOf(fn, len, fill, f) {
+    let p = m.inputBuffer(len), own = 0;
+    if (!p) {
+      own = p = m._malloc(Math.max(8, 8 * len));
+      if (!p) throw new RangeError(`${fn}: out of wasm memory allocating ${8 * len} bytes`);
+    }
+    try {
+      fill(m.HEAPF64, p / 8);  // read after inputBuffer/_malloc: growth detaches older views
+      return check(f(p, len), fn);
+    } finally {
+      if (own) m._free(own);
+    }
+  }
+  const withInput = (fn, a, f) => withInputOf(fn, a.length, (heap, at) => heap.set(a, at), f);
+
   function fitLine(points, opts) {
     const fn = 'fitLine';
     const o = options(opts, fn, ['dim']);
@@ -364,7 +382,7 @@ function wrap(m) {
     const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
-    const r = withHeap(fn, [xyz], (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2], trace));
+    const r = withInput(fn, xyz, (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2], trace));
     lastComputeMs = r.computeMs;
     const clusters = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
@@ -379,7 +397,7 @@ function wrap(m) {
     const fn = 'vectorize';
     if (opts === undefined) throw new TypeError(`${fn}: options {method} are required (method: ${METHODS.join(', ')})`);
     const o = options(opts, fn, ['dim', 'method', 'primitive', 'sigma', 'delta', 'epsilon', 'maxSize', 'simplexShift',
-      'maxIterations', 'split', 'trace']);
+      'maxIterations', 'split', 'trace', 'distance']);
     const dim = dimOption(o, fn);
     if (o.method === undefined) throw new TypeError(`${fn}: option method is required (${METHODS.join(', ')})`);
     if (typeof o.method !== 'string') throw new TypeError(`${fn}: option method must be a string, got ${describe(o.method)}`);
@@ -404,9 +422,14 @@ function wrap(m) {
     const trace = boolOption(o, 'trace', fn, false);
     if (trace && dim === 3 && (method === 'ftls' || method === 'aftls'))
       throw new RangeError(`${fn}: option trace is not available for method '${method}' in 3D (only itls, dp and rw trace in 3D)`);
+    // distance (dp): to the chord's line (RTL's, default) or to the chord segment (simplify-js's).
+    const distance = o.distance ?? 'line';
+    if (distance !== 'line' && distance !== 'segment') throw new RangeError(`${fn}: option distance must be 'line' or 'segment', got ${describe(distance)}`);
+    const segmentDistance = method === 'dp' && distance === 'segment';
+    if (trace && segmentDistance) throw new RangeError(`${fn}: option trace is not available with distance 'segment'`);
     const xyz = toF64(points, fn, 'points');
-    const r = withHeap(fn, [xyz], (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
-      sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace));
+    const r = withInput(fn, xyz, (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
+      sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace, segmentDistance));
     lastComputeMs = r.computeMs;
     const corner = (b, k) => ({ boundary: b[k], crossingDistance: b[k + 1], delta: b[k + 2] });
     const breaks = [];
@@ -659,7 +682,11 @@ function wrap(m) {
     readCarmenLog,
     readCarmen: readCarmenLog,
     readOrganizedLidar,
-    heapInUse: () => m.heapInUse(),
+    simplify: makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; }),
+    // Frees the input buffer, vectorizers and segmenters kept between calls (they grow back on the next call).
+    releaseBuffers: () => m.releaseBuffers(),
+    // Malloc heap in use once the kept buffers are released: equal figures before and after calls mean no leak.
+    heapInUse: () => { m.releaseBuffers(); return m.heapInUse(); },
     memoryBytes: () => m.memoryBytes(),
     stackPointer: () => m.stackPointer(),
   };

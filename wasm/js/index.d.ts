@@ -115,6 +115,16 @@ export interface VectorizeOptions {
   /** record the vectorizer's steps in the result's `trace` (FtlsEvent for ftls/aftls, ItlsEvent, DpEvent, RwEvent);
    *  default false (the untraced C++ path). Not available for ftls/aftls/planes in 3D (RangeError). */
   trace?: boolean;
+  /** dp: the distance a point is measured by: 'line' (default, RTL's: to the chord's infinite line) or 'segment'
+   *  (to the chord segment, as simplify-js and Boost.Geometry: the same kept points as simplify(points, epsilon,
+   *  true)). Checked and ignored by the other methods; not with trace (RangeError). */
+  distance?: 'line' | 'segment';
+}
+/** A point of simplify-js's kind: {x, y}, or {x, y, z} for 3D. Other properties are kept (the objects are returned). */
+export interface SimplifyPoint {
+  x: number;
+  y: number;
+  z?: number;
 }
 /** A corner of an FTLS/AFTLS polyline that cannot be met within delta. */
 export interface CornerReport {
@@ -526,6 +536,20 @@ export interface RTL {
     VectorizeResult & { trace: VectorizeEventByMethod[M][] };
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
   toTikz(drawing: Drawing, options?: TikzOptions): string;
+  /** Drop-in for simplify-js's simplify(points, tolerance, highQuality): keeps exactly the points simplify-js
+   *  keeps (its radial-distance pre-pass unless highQuality, then Douglas-Peucker on the squared distance to the
+   *  chord segment), computed in C++ (rtl/vect/SimplifyCompatible.h). Objects form: returns a new array of the
+   *  caller's own objects (or `points` itself when it has 2 or fewer, as simplify-js does); 3D when options.dim is
+   *  3 or the first point has a numeric z (every point then needs one). Typed-array form: interleaved coordinates
+   *  (options.dim, default 2) in, the kept points' coordinates out as a Float64Array. tolerance: default 1, >= 0
+   *  (Infinity keeps the end points only); highQuality: default false. TypeError for a wrong kind of value,
+   *  RangeError for a negative or NaN tolerance or a non-finite coordinate. */
+  simplify<P extends SimplifyPoint>(points: P[], tolerance?: number, highQuality?: boolean, options?: { dim?: Dim }): P[];
+  simplify(points: Float64Array | Float32Array, tolerance?: number, highQuality?: boolean, options?: { dim?: Dim }): Float64Array;
+  /** frees the input buffer, vectorizers and segmenters the module keeps between calls (so that a repeated call
+   *  neither allocates nor zero-fills; inputs above 2^21 points release theirs after the call anyway); they grow
+   *  back on the next call */
+  releaseBuffers(): void;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
   /** optimal assignment (Munkres / Hungarian, rtl::solveAssignment) of rows to distinct columns: min(rows, cols)
    *  pairs with the least (maximize: greatest) total cost. costs: row-major rows*cols numbers (rows/cols options;
@@ -542,11 +566,12 @@ export interface RTL {
   readOrganizedLidar(data: ArrayBuffer | ArrayBufferView, options: OrganizedLidarOptions): OrganizedCloud;
   StreamSegmenter: new (options?: StreamSegmenterOptions) => StreamSegmenter;
   TfTree: new (root: string, options?: { dim?: Dim }) => TfTree;
-  /** bytes of wasm heap currently allocated by malloc (diagnostics; used by the leak tests) */
+  /** bytes of wasm heap allocated by malloc once the buffers kept between calls are released (releaseBuffers():
+   *  equal figures before and after a series of calls mean nothing leaked; diagnostics, used by the leak tests) */
   heapInUse(): number;
   /** bytes of wasm linear memory */
   memoryBytes(): number;
-  /** milliseconds the last segment()/vectorize() call spent inside the C++ library (the rest of the call's time
+  /** milliseconds the last segment()/vectorize()/simplify() call spent inside the C++ library (the rest of the call's time
    *  is argument checks and array transfer); diagnostics for benchmarks */
   readonly lastComputeMs: number;
   /** the wasm shadow-stack pointer (diagnostics: it is the same before and after every call, failing or not) */

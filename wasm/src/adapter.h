@@ -11,6 +11,7 @@
 #include <emscripten/emscripten.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -20,7 +21,11 @@
 #include <streambuf>
 #include <string>
 #include <utility>
+#include <memory>
+#include <new>
 #include <vector>
+
+#include "kept.h"
 
 namespace rtl_wasm {
 
@@ -79,6 +84,25 @@ val guarded(F&& f, const char* label = nullptr) noexcept {
 }
 
 inline const double* doubles(std::uintptr_t p) { return reinterpret_cast<const double*>(p); }
+
+// The input buffer kept between calls (kept.h): JS writes a call's numbers there with one HEAPF64.set instead of a
+// malloc, copy and free per call. It only grows (uninitialised), up to the numbers of kKeptPoints 3D points;
+// returns 0 for more (the JS layer then allocates and frees that input itself) or when memory cannot grow.
+struct InputBuffer {
+  std::unique_ptr<double[]> data;
+  std::size_t capacity = 0;
+};
+inline std::uintptr_t inputBuffer(double count) {
+  if (!(count >= 0) || count > 3.0 * static_cast<double>(rtl_ops::kKeptPoints)) return 0;
+  auto& b = rtl_ops::kept<InputBuffer>();
+  const auto n = std::max<std::size_t>(static_cast<std::size_t>(count), 64);
+  if (n > b.capacity) {
+    b.data.reset();
+    b.data.reset(new (std::nothrow) double[n]);
+    b.capacity = b.data ? n : 0;
+  }
+  return reinterpret_cast<std::uintptr_t>(b.data.get());
+}
 inline const char* bytes(std::uintptr_t p) { return reinterpret_cast<const char*>(p); }
 
 // A read-only std::istream source over bytes already in the wasm heap (no copy).

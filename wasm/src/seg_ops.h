@@ -12,6 +12,7 @@
 #include <rtl/seg/CAR_Segmenter.h>
 #include <rtl/seg/SegTrace.h>
 
+#include "kept.h"
 #include "trace_ops.h"
 
 namespace rtl_ops {
@@ -40,17 +41,38 @@ struct SegmentOutput {
   std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
 };
 
+// The untraced segmenter and its point vector, kept between calls (one per thread; the wasm module has one): the
+// segmenter's work buffers and the points grow to the largest scan once instead of being allocated every call.
+template <int D>
+struct SegmentWorkspace {
+  std::vector<IndexedPoint<D>> pts;
+  rtl::CAR_Segmenter<IndexedPoint<D>> seg;
+};
+
 template <int D, class Observer>
 SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams& p, Observer* observer) {
   if (n > 0xffffffffu) throw std::length_error("segment: more than 2^32 - 1 points");
-  std::vector<IndexedPoint<D>> pts(n);
+  const ReleaseKeptAbove release{n};
+  auto& work = kept<SegmentWorkspace<D>>();
+  auto& pts = work.pts;
+  pts.clear();  // keeps the capacity; emplace_back skips VectorND's zeroing default constructor
+  pts.reserve(n);
+  using Eig = typename rtl::VectorND<D, double>::EigenType;
   for (std::size_t i = 0; i < n; ++i) {
-    for (int k = 0; k < D; ++k) pts[i][static_cast<std::size_t>(k)] = xyz[D * i + static_cast<std::size_t>(k)];
-    pts[i].index = static_cast<std::uint32_t>(i);
+    pts.emplace_back(rtl::VectorND<D, double>(Eig(Eigen::Map<const Eig>(xyz + D * i))));
+    pts.back().index = static_cast<std::uint32_t>(i);
   }
   IndexedPoint<D> origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
-  rtl::CAR_Segmenter<IndexedPoint<D>, Observer> seg(p.step, p.lowerBound, p.upperBound);
+  // Traced: a fresh segmenter of the traced type (a one-off); untraced: the kept one, given this call's settings.
+  rtl::CAR_Segmenter<IndexedPoint<D>, Observer> fresh;
+  auto& seg = [&]() -> rtl::CAR_Segmenter<IndexedPoint<D>, Observer>& {
+    if constexpr (Observer::enabled) return fresh;
+    else return work.seg;
+  }();
+  seg.setStepSize(p.step);
+  seg.setLowerBound(p.lowerBound);
+  seg.setUpperBound(p.upperBound);
   if constexpr (Observer::enabled) seg.setObserver(observer);
   seg.setMaxSize(n);
   seg.loadData(pts, origin);

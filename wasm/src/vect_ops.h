@@ -11,8 +11,10 @@
 
 #include <rtl/Vectorization.h>
 #include <rtl/vect/FtlsTrace.h>
+#include <rtl/vect/SimplifyCompatible.h>
 #include <rtl/vect/SimplifyTrace.h>
 
+#include "kept.h"
 #include "trace_ops.h"
 
 namespace rtl_ops {
@@ -25,6 +27,8 @@ struct VectorizeParams {
   bool plane = false;
   double sigma = 0.03, delta = 0.3, epsilon = 0.09;
   std::size_t maxSize = 0, simplexShift = 1, maxIterations = 10000;
+  // DP: distance to the chord segment (simplify-js's, rtl/vect/SimplifyCompatible.h) instead of RTL's chord line.
+  bool segmentDistance = false;
   bool split = false;  // FTLS/AFTLS 2D: break the polyline at corners that cannot be met within delta
 };
 
@@ -54,14 +58,29 @@ namespace detail {
 template <int D>
 using Vec = rtl::VectorND<D, double>;
 
-// One pass, no zero-initialisation first (VectorND's default constructor zeroes).
+// The input as the vectorizers' point vector, in one pass into the kept vector (clear + emplace_back keeps its
+// capacity and skips VectorND's zeroing default constructor).
 template <int D>
-std::vector<Vec<D>> points(const double* xyz, std::size_t n) {
-  std::vector<Vec<D>> v;
+const std::vector<Vec<D>>& points(const double* xyz, std::size_t n) {
+  auto& v = kept<std::vector<Vec<D>>>();
+  v.clear();
   v.reserve(n);
   for (std::size_t i = 0; i < n; ++i)
     v.emplace_back(typename Vec<D>::EigenType(Eigen::Map<const typename Vec<D>::EigenType>(xyz + D * i)));
   return v;
+}
+
+// Runs f on a vectorizer of type Vz: the kept one when untraced (Obs = NoTrace), a fresh one when traced (a trace
+// is a one-off, and the traced types would otherwise each hold their own buffers for good).
+template <class Vz, class Obs, class F>
+void withVectorizer(Obs* obs, F&& f) {
+  if constexpr (Obs::enabled) {
+    Vz vz;
+    vz.setObserver(obs);
+    f(vz);
+  } else {
+    f(kept<Vz>());
+  }
 }
 
 template <int D, class Seg>
@@ -97,7 +116,7 @@ void tlsRanges(VectorizeOutput& o, const Vz& vz) {
 // Douglas-Peucker / Reumann-Witkam keep input points: recover their indices by walking the input forward to each
 // segment end (exact match), then describe each kept span by its chord.
 template <int D, class Seg>
-void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::vector<Seg>& segs) {
+std::vector<std::size_t> keyIndices(const std::vector<Vec<D>>& pts, const std::vector<Seg>& segs) {
   std::vector<std::size_t> keys{0};
   std::size_t j = 0;
   for (const auto& s : segs) {
@@ -107,6 +126,12 @@ void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::v
     if (j >= pts.size()) throw std::logic_error("vectorize: a simplified vertex is not an input point");
     keys.push_back(j);
   }
+  return keys;
+}
+
+// Ranges, chord parameters and residuals of the kept points `keys` (ascending, first and last point included).
+template <int D>
+void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::vector<std::size_t>& keys) {
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
     const std::size_t b = keys[i], e = keys[i + 1];
     o.indices.push_back(static_cast<std::uint32_t>(b));
@@ -150,18 +175,14 @@ void observed(FlatTrace* trace, Run&& run) {
   trace->append(log);
 }
 
-template <class Vz, class Obs>
-void observe(Vz& vz, Obs* observer) {
-  if constexpr (Obs::enabled) vz.setObserver(observer);
-}
-
 // trace: nullptr for the untraced vectorizers; otherwise their steps are appended to it (2D FTLS/AFTLS, ITLS, DP
 // and RW; the 3D fast vectorizers report no steps: the caller rejects a trace for them).
 template <int D>
 VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace = nullptr) {
   using namespace detail;
   if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
-  const auto pts = points<D>(xyz, n);
+  const ReleaseKeptAbove release{n};
+  const auto& pts = points<D>(xyz, n);
   VectorizeOutput o;
   o.stride = p.plane ? 4 : (D == 2 ? 3 : 6);
   auto finishLines = [&](bool ok, const auto& vz, const auto& segs) {
@@ -175,24 +196,35 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
 
   if (p.method == Method::DP || p.method == Method::RW) {
     std::vector<rtl::LineSegmentND<D, double>> segs;
-    if (p.method == Method::DP) {
+    std::vector<std::size_t> keys;
+    if (p.method == Method::DP && p.segmentDistance) {
+      // simplify-js's Douglas-Peucker in high-quality mode (no radial pre-pass): the same recursion on the squared
+      // distance to the chord segment; the kept indices come straight from it.
+      if (n >= 2) keys = rtl::simplifyCompatibleIndices(xyz, n, static_cast<std::size_t>(D), p.epsilon, true);
+      for (std::size_t k = 1; k < keys.size(); ++k) segs.emplace_back(pts[keys[k - 1]], pts[keys[k]]);
+    } else if (p.method == Method::DP) {
       observed<rtl::DpTraceLog>(trace, [&](auto* obs) {
-        rtl::VectorizerDouglasPeuckerND<D, double, std::remove_pointer_t<decltype(obs)>> vz(p.epsilon);
-        observe(vz, obs);
-        if (p.maxSize) vz.setMaxSize(reservation(p, n));
-        vz(pts, segs);
+        using Obs = std::remove_pointer_t<decltype(obs)>;
+        withVectorizer<rtl::VectorizerDouglasPeuckerND<D, double, Obs>>(obs, [&](auto& vz) {
+          vz.setEpsilon(p.epsilon);
+          if (p.maxSize) vz.setMaxSize(reservation(p, n));
+          vz(pts, segs);
+        });
       });
     } else {
       observed<rtl::RwTraceLog>(trace, [&](auto* obs) {
-        rtl::VectorizerReumannWitkamND<D, double, std::remove_pointer_t<decltype(obs)>> vz(p.epsilon);
-        observe(vz, obs);
-        if (p.maxSize) vz.setMaxSize(reservation(p, n));
-        vz(pts, segs);
+        using Obs = std::remove_pointer_t<decltype(obs)>;
+        withVectorizer<rtl::VectorizerReumannWitkamND<D, double, Obs>>(obs, [&](auto& vz) {
+          vz.setEpsilon(p.epsilon);
+          if (p.maxSize) vz.setMaxSize(reservation(p, n));
+          vz(pts, segs);
+        });
       });
     }
     o.ok = n >= 2;
     for (const auto& s : segs) pushSegment<D>(o, s);
-    keptRanges<D>(o, pts, segs);
+    if (keys.empty()) keys = keyIndices<D>(pts, segs);
+    if (n >= 2) keptRanges<D>(o, pts, keys);
     o.count = segs.size();
     onePolyline();
     return o;
@@ -201,17 +233,17 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
   if constexpr (D == 2) {
     if (p.method == Method::ITLS) {
       observed<rtl::ItlsTraceLog>(trace, [&](auto* obs) {
-        rtl::VectorizerITLSProjections2D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
-        observe(vz, obs);
-        vz.setSigma(p.sigma);
-        if (p.maxSize) vz.setMaxSize(reservation(p, n));
-        const bool ok = vz(pts);
-        finishLines(ok, vz, vz.lineSegments());
+        using Obs = std::remove_pointer_t<decltype(obs)>;
+        withVectorizer<rtl::VectorizerITLSProjections2D<double, double, Obs>>(obs, [&](auto& vz) {
+          vz.setSigma(p.sigma);
+          if (p.maxSize) vz.setMaxSize(reservation(p, n));
+          const bool ok = vz(pts);
+          finishLines(ok, vz, vz.lineSegments());
+        });
       });
       onePolyline();
     } else {
-      auto fast = [&](auto& vz, auto* obs) {
-        observe(vz, obs);
+      auto fast = [&](auto& vz) {
         vz.setSigma(p.sigma);
         vz.setDelta(p.delta);
         vz.setSplitAtInfeasibleCorners(p.split);
@@ -230,21 +262,23 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
       };
       if (p.method == Method::FTLS) {
         observed<rtl::FtlsTraceLog>(trace, [&](auto* obs) {
-          rtl::VectorizerFTLSPolyline2D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
-          fast(vz, obs);
+          using Obs = std::remove_pointer_t<decltype(obs)>;
+          withVectorizer<rtl::VectorizerFTLSPolyline2D<double, double, Obs>>(obs, fast);
         });
       } else {
         observed<rtl::FtlsTraceLog>(trace, [&](auto* obs) {
-          rtl::VectorizerAFTLSPolyline2D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
-          vz.setSimplexShift(p.simplexShift);
-          vz.setMaxIterations(p.maxIterations);
-          fast(vz, obs);
+          using Obs = std::remove_pointer_t<decltype(obs)>;
+          withVectorizer<rtl::VectorizerAFTLSPolyline2D<double, double, Obs>>(obs, [&](auto& vz) {
+            vz.setSimplexShift(p.simplexShift);
+            vz.setMaxIterations(p.maxIterations);
+            fast(vz);
+          });
         });
       }
     }
   } else {
     if (p.plane) {
-      rtl::VectorizerAFTLSPlaneProjections3D<double, double> vz;
+      auto& vz = kept<rtl::VectorizerAFTLSPlaneProjections3D<double, double>>();
       vz.setSigma(p.sigma);
       vz.setSimplexShift(p.simplexShift);
       vz.setMaxIterations(p.maxIterations);
@@ -261,21 +295,22 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
       }
     } else if (p.method == Method::ITLS) {
       observed<rtl::ItlsTraceLog>(trace, [&](auto* obs) {
-        rtl::VectorizerITLSProjections3D<double, double, std::remove_pointer_t<decltype(obs)>> vz;
-        observe(vz, obs);
-        vz.setSigma(p.sigma);
-        if (p.maxSize) vz.setMaxSize(reservation(p, n));
-        const bool ok = vz(pts);
-        finishLines(ok, vz, vz.lineSegments());
+        using Obs = std::remove_pointer_t<decltype(obs)>;
+        withVectorizer<rtl::VectorizerITLSProjections3D<double, double, Obs>>(obs, [&](auto& vz) {
+          vz.setSigma(p.sigma);
+          if (p.maxSize) vz.setMaxSize(reservation(p, n));
+          const bool ok = vz(pts);
+          finishLines(ok, vz, vz.lineSegments());
+        });
       });
     } else if (p.method == Method::FTLS) {
-      rtl::VectorizerFTLSProjections3D<double, double> vz;
+      auto& vz = kept<rtl::VectorizerFTLSProjections3D<double, double>>();
       vz.setSigma(p.sigma);
       if (p.maxSize) vz.setMaxSize(reservation(p, n));
       const bool ok = vz(pts);
       finishLines(ok, vz, vz.lineSegments());
     } else {
-      rtl::VectorizerAFTLSProjections3D<double, double> vz;
+      auto& vz = kept<rtl::VectorizerAFTLSProjections3D<double, double>>();
       vz.setSigma(p.sigma);
       vz.setSimplexShift(p.simplexShift);
       vz.setMaxIterations(p.maxIterations);

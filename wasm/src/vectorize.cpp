@@ -6,7 +6,8 @@ namespace rtl_wasm {
 namespace {
 
 val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool plane, double sigma, double delta,
-              double epsilon, double maxSize, double simplexShift, double maxIterations, bool split, bool trace) {
+              double epsilon, double maxSize, double simplexShift, double maxIterations, bool split, bool trace,
+              bool segmentDistance) {
   return guarded([&] {
     if (dim != 2 && dim != 3) throw std::invalid_argument("vectorize: dim must be 2 or 3, got " + std::to_string(dim));
     if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
@@ -23,6 +24,7 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     p.simplexShift = static_cast<std::size_t>(simplexShift);
     p.maxIterations = static_cast<std::size_t>(maxIterations);
     p.split = split;
+    p.segmentDistance = segmentDistance;
     rtl_ops::FlatTrace flat;
     rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
     const double t0 = nowMs();
@@ -62,4 +64,9 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
 }  // namespace
 }  // namespace rtl_wasm
 
-EMSCRIPTEN_BINDINGS(rtl_vectorize) { emscripten::function("vectorize", &rtl_wasm::vectorize); }
+EMSCRIPTEN_BINDINGS(rtl_vectorize) {
+  emscripten::function("vectorize", &rtl_wasm::vectorize);
+  // The kept input buffer and objects (kept.h), shared by vectorize, segment and simplify.
+  emscripten::function("inputBuffer", &rtl_wasm::inputBuffer);
+  emscripten::function("releaseBuffers", &rtl_ops::releaseKept);
+}

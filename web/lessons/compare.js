@@ -60,7 +60,7 @@ export default {
     const table = document.createElement('div');
     table.className = 'table-wrap';
     table.innerHTML = `<table><caption class="visually-hidden">The five methods on the selected cluster</caption><thead><tr><th scope="col">method</th><th scope="col">segments</th><th scope="col">vertices</th>
-      <th scope="col">RMS per segment (mean / max)</th><th scope="col">total squared residual</th><th scope="col">RMS over all points</th></tr></thead><tbody></tbody></table>`;
+      <th scope="col">RMS per segment<br>(mean / max)</th><th scope="col">total squared<br>residual</th><th scope="col">RMS over<br>all points</th></tr></thead><tbody></tbody></table>`;
     const verdict = document.createElement('p');
     verdict.className = 'verdict';
     host.stage.append(table, verdict);
