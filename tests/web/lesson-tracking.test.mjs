@@ -211,6 +211,41 @@ describe('tracking lesson in Chromium', { timeout: 300000 }, () => {
     assert.ok(tikz.includes('Tracking, scan'), 'the TikZ has the figure title');
   });
 
+  test("why: driving (scans 18-29), a track paired with a cluster that is not its nearest is explained with assign()'s numbers", async () => {
+    await setField(page, 'first', 18);
+    await setField(page, 'count', 12);
+    const { kinds } = await state(page);
+    let explained = 0;
+    for (let k = 0; k < kinds.length; k++) {
+      if (kinds[k] !== 'associate') continue;
+      await goStep(page, k);
+      const s = await state(page), a = s.association, text = await page.textContent('#lesson-stage .tracking-details');
+      for (const w of a.why) {
+        const id = a.trackIds[w.row];
+        if (w.kind === 'mutual') {
+          // each is the other's nearest
+          for (let j = 0; j < a.cols; j++) assert.ok(a.distances[w.row * a.cols + j] >= w.distance);
+          for (let i = 0; i < a.rows; i++) assert.ok(a.distances[i * a.cols + w.column] >= w.distance);
+        }
+        if (w.kind !== 'global') continue;
+        // the best assignment that gives this track its nearest cluster, computed here from assign() on the rest
+        const sub = [];
+        for (let i = 0; i < a.rows; i++) if (i !== w.row) for (let j = 0; j < a.cols; j++) if (j !== w.nearest) sub.push(a.costs[i * a.cols + j]);
+        const rest = rtl.assign(new Float64Array(sub), { rows: a.rows - 1, cols: a.cols - 1 }).total;
+        const alternative = a.costs[w.row * a.cols + w.nearest] + rest;
+        assert.ok(Math.abs(alternative - w.alternative) < 1e-12);
+        assert.ok(alternative > a.total, `T${id}: ${alternative} > ${a.total}`);
+        assert.ok(w.nearestDistance < w.distance);
+        assert.ok(text.includes(`T${id} → C${w.column + 1} (${w.distance.toFixed(2)} m), not its nearest C${w.nearest + 1} (${w.nearestDistance.toFixed(2)} m)`), text);
+        assert.ok(text.includes(`costs ${alternative.toFixed(2)} m, more than Munkres' ${a.total.toFixed(2)} m`), text);
+        explained++;
+      }
+    }
+    assert.ok(explained >= 1, `${explained} non-nearest pairs explained`);
+    await setField(page, 'first', 2);
+    await setField(page, 'count', 10);
+  });
+
   test('a smaller gate leaves more pairs unassigned; an impossible excerpt is marked', async () => {
     const wide = await state(page);
     await setField(page, 'gate', 0.1);

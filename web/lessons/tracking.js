@@ -167,7 +167,7 @@ export default {
         return {
           method: 'tracking', params, step: k, steps: run.steps.length, kind: st?.kind ?? null, scan: st?.scan ?? null,
           tracks: st ? st.tracks.map(({ id, state, P, predicted, measured, status, sigma }) => ({ id, state, P, predicted, measured, status, sigma })) : [],
-          association: st?.assoc ? (({ rows, cols, costs, distances, columns, total, trackIds, pairs }) => ({ rows, cols, costs, distances, columns, total, trackIds, pairs }))(st.assoc) : null,
+          association: st?.assoc ? (({ rows, cols, costs, distances, columns, total, trackIds, pairs, why }) => ({ rows, cols, costs, distances, columns, total, trackIds, pairs, why }))(st.assoc) : null,
           clusters: st ? st.clusters.map(({ index, size, centroid, track }) => ({ index, size, centroid, track })) : [],
           kinds: run.steps.map((x) => x.kind), log: run.tracks, heapInUse: host.rtl.heapInUse(),
         };
