@@ -32,7 +32,8 @@ namespace rtl::kalman_equations
     {
         const auto S = (H * P * H.transpose() + R).eval();
         // K^T = S^-1 H P (S and P symmetric); an LDLT solve avoids forming S^-1 (zero pivots give a zero gain).
-        K = S.ldlt().solve(H * P).transpose();
+        const auto K_transposed = S.ldlt().solve((H * P).eval()).eval();
+        K = K_transposed.transpose();
         x = (x + K * innovation).eval();
         const auto I_KH = (Cov::Identity(P.rows(), P.cols()) - K * H).eval();
         P = (I_KH * P * I_KH.transpose() + K * R * K.transpose()).eval();
