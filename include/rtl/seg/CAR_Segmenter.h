@@ -101,8 +101,7 @@ namespace rtl
                 }
             if (step_ == 1) segmentAlone(points);
             else if (step_ == 2) segmentNeighbours(points, origin, scaling);
-            else if (step_ - 1 <= max_masked_window) segmentMasked(points, origin, scaling);
-            else segmentWindow(points, origin, scaling);
+            else segmentRuns(points, origin, scaling);
         }
 
         //! Removes and returns the next cluster (never empty); an empty vector when none is left.
@@ -131,13 +130,10 @@ namespace rtl
                 if (seg_detail::isFinite<D>(ptr(p))) clusters_.emplace_back(1, p);
         }
 
-        // step 2 (the previous point): every cluster is a run of consecutive points, except one that may wrap the
-        // seam. One vectorisable pass marks which points are valid (bit 0) and linked to their predecessor (bit 1);
-        // runs are then copied out whole.
-        void segmentNeighbours(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
+        // flags_[i]: bit 0 = point i is valid, bit 1 = it meets the criterion with point i - 1 (i >= 1).
+        void neighbourFlags(const std::vector<VectorType> &pts, const VectorType &origin, const seg_detail::SquaredThreshold<ElementType> &thr)
         {
             const size_t n = pts.size();
-            const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
             ElementType o[D];
             for (int k = 0; k < D; ++k) o[k] = origin.data()[k];
             flags_.resize(n);
@@ -192,8 +188,30 @@ namespace rtl
                     }
                 }
             }
+        }
 
+        //! The end of the run of predecessor-linked points that starts at b: the first i > b without bit 1.
+        static size_t runEnd(const unsigned char *f, size_t b, size_t n)
+        {
             constexpr std::uint64_t all_linked = 0x0202020202020202ull;
+            size_t i = b + 1;
+            for (std::uint64_t w; i + 8 <= n; i += 8)
+            {
+                std::memcpy(&w, f + i, 8);
+                if ((w & all_linked) != all_linked) break;
+            }
+            while (i < n && (f[i] & 2u)) ++i;
+            return i;
+        }
+
+        // step 2 (the previous point): every cluster is a run of consecutive points, except one that may wrap the
+        // seam. One vectorisable pass marks which points are valid (bit 0) and linked to their predecessor (bit 1);
+        // runs are then copied out whole.
+        void segmentNeighbours(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
+        {
+            const size_t n = pts.size();
+            neighbourFlags(pts, origin, seg_detail::SquaredThreshold<ElementType>(scaling, lower_, upper_));
+            const unsigned char *f = flags_.data();
             size_t i = 0;
             while (i < n)
             {
@@ -202,13 +220,8 @@ namespace rtl
                     ++i;
                     continue;
                 }
-                const size_t b = i++;
-                for (std::uint64_t w; i + 8 <= n; i += 8)
-                {
-                    std::memcpy(&w, f + i, 8);
-                    if ((w & all_linked) != all_linked) break;
-                }
-                while (i < n && (f[i] & 2u)) ++i;
+                const size_t b = i;
+                i = runEnd(f, b, n);
                 clusters_.emplace_back(pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(i));
             }
 
@@ -295,131 +308,108 @@ namespace rtl
             finishWindow(pts);
         }
 
-        // Steps 3 .. max_masked_window + 1, untraced: the same components as segmentWindow, in two passes. The first
-        // computes, block by block and branch-free (so that it vectorises), a bit mask per point of the lags
-        // k = 1..s at which it meets the criterion. The second labels: a point linked to its predecessor whose other
-        // links all stay inside the current run of predecessor-linked points belongs to the run's component without
-        // any union-find work; only links that reach back past the run's start are merged.
-        void segmentMasked(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
+        // Steps >= 3, untraced: the components of segmentWindow, without comparing points of one run. A run is a
+        // maximal sequence of valid points each linked to its predecessor (one vectorised pass, neighbourFlags); its
+        // points are one component, so only the links of its first step - 1 points that reach back past its start
+        // can join it to other runs. Union-find works on runs (root: the smallest run index), and clusters are
+        // copied out run by run. A scan of long runs costs about one distance per point, whatever the step.
+        void segmentRuns(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
             const size_t n = pts.size(), s = step_ - 1;
             const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
-            ElementType o[D];
-            for (int k = 0; k < D; ++k) o[k] = origin.data()[k];
-            masks_.resize(n);
-            std::uint32_t *mask = masks_.data();
-            // block of points [i0, i0 + m) with the s points before it: coordinates one array per axis (NaN before
-            // the scan start, so that those lags never link), validity as 0 / 1
-            constexpr size_t block = 256;
-            ElementType c[D][block + max_masked_window];
-            ElementType tb[block];
-            std::uint32_t vb[block + max_masked_window];
-            for (size_t i0 = 0; i0 < n; i0 += block)
+            const ElementType *o = ptr(origin);
+            neighbourFlags(pts, origin, thr);
+            const unsigned char *f = flags_.data();
+            run_begin_.clear();
+            run_end_.clear();
+            parent_.clear();
+            for (size_t i = 0; i < n;)
             {
-                const size_t m = std::min(block, n - i0);
-                for (size_t j = 0; j < s + m; ++j)
+                if (!(f[i] & 1u))
                 {
-                    const bool inside = i0 + j >= s;
-                    const ElementType *p = inside ? ptr(pts[i0 + j - s]) : nullptr;
-                    bool valid = inside;
-                    for (int k = 0; k < D; ++k)
-                    {
-                        c[k][j] = inside ? p[k] : ElementType(0);
-                        if (inside) valid &= (p[k] - p[k]) == ElementType(0);
-                    }
-                    vb[j] = valid ? 1u : 0u;
+                    ++i;
+                    continue;
                 }
-                for (size_t j = 0; j < m; ++j)
+                const size_t b = i, r = run_begin_.size();
+                i = runEnd(f, b, n);
+                run_begin_.push_back(b);
+                run_end_.push_back(i);
+                parent_.push_back(r);
+                // point q compares with q - k, k = 1..s; those with k <= q - b lie in this run
+                for (size_t q = b; q < i && q - b < s; ++q)
                 {
-                    ElementType rsq = 0;
-                    for (int k = 0; k < D; ++k)
+                    const ElementType *p = ptr(pts[q]);
+                    const ElementType tq = thr(seg_detail::squaredDistance<D>(p, o));
+                    size_t rj = r;   // the run holding j, found walking back (j decreases)
+                    for (size_t k = q - b + 1; k <= s && k <= q; ++k)
                     {
-                        const ElementType a = c[k][j + s] - o[k];
-                        rsq += a * a;
+                        const size_t j = q - k;
+                        if (!(f[j] & 1u) || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tq)) continue;
+                        while (run_begin_[rj] > j) --rj;
+                        unite(r, rj);
                     }
-                    tb[j] = thr(rsq);
                 }
-                std::uint32_t *mb = mask + i0;
-                for (size_t j = 0; j < m; ++j) mb[j] = vb[j + s] << 31;
-                for (size_t lag = 1; lag <= s; ++lag)
+            }
+            const size_t runs = run_begin_.size();
+            if (runs == 0) return;
+
+            // Seam: point i < s (the later point) with j = i + n - k, k = i + 1..s.
+            for (size_t i = 0, ri = 0; i < std::min(s, n); ++i)
+            {
+                if (!(f[i] & 1u)) continue;
+                while (run_end_[ri] <= i) ++ri;
+                const ElementType *p = ptr(pts[i]);
+                const ElementType tq = thr(seg_detail::squaredDistance<D>(p, o));
+                size_t rj = runs - 1;
+                for (size_t k = i + 1; k <= s; ++k)
                 {
-                    const std::uint32_t bit = lag - 1;
-                    for (size_t j = 0; j < m; ++j)
-                    {
-                        ElementType dsq = 0;
-                        for (int k = 0; k < D; ++k)
-                        {
-                            const ElementType d = c[k][j + s] - c[k][j + s - lag];
-                            dsq += d * d;
-                        }
-                        mb[j] |= (static_cast<std::uint32_t>(dsq <= tb[j]) & vb[j + s - lag]) << bit;
-                    }
+                    const size_t j = i + n - k;
+                    if (j <= i) break;
+                    if (!(f[j] & 1u) || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tq)) continue;
+                    while (run_begin_[rj] > j) --rj;
+                    unite(ri, rj);
                 }
             }
 
-            parent_.resize(n);
-            size_t cur = none, run_start = 0;   // root of the current run, and where the run began
-            for (size_t i = 0; i < n; ++i)
+            // Output: a cluster per root run, in run order, sized first. A skip of more than step - 2 indices between
+            // two runs of one cluster can only come from the seam: the cluster is rotated there.
+            slot_.resize(runs);
+            last_.clear();
+            rotate_at_.clear();
+            std::vector<size_t> &size = cluster_size_;   // points per cluster
+            size.clear();
+            for (size_t r = 0; r < runs; ++r)
             {
-                std::uint32_t b = mask[i];
-                if (!(b >> 31))
+                const size_t root = find(r);
+                if (root == r)
                 {
-                    parent_[i] = none;
-                    cur = none;
-                    continue;
+                    slot_[r] = size.size();
+                    size.push_back(0);
                 }
-                b &= 0x7fffffffu;
-                if ((b & 1u) && cur != none)
-                {
-                    const size_t inside = i - run_start;   // lags up to `inside` stay in the run
-                    const std::uint32_t far = inside >= s ? 0u : b >> inside;
-                    if (far == 0)
-                    {
-                        parent_[i] = cur;
-                        continue;
-                    }
-                    // merge the components reached past the run's start
-                    size_t root = find(cur);
-                    for (size_t k = inside + 1; far >> (k - inside - 1); ++k)
-                        if ((far >> (k - inside - 1)) & 1u)
-                        {
-                            const size_t r = find(i - k);
-                            if (r < root)
-                            {
-                                parent_[root] = r;
-                                root = r;
-                            }
-                            else if (r > root) parent_[r] = root;
-                        }
-                    parent_[i] = root;
-                    cur = root;
-                    continue;
-                }
-                // not linked to the predecessor: a new run, whose component is that of any earlier link
-                run_start = i;
-                size_t root = none;
-                for (size_t k = 1; b >> (k - 1); ++k)
-                    if ((b >> (k - 1)) & 1u)
-                    {
-                        const size_t r = find(i - k);
-                        if (root == none) root = r;
-                        else if (r < root)
-                        {
-                            parent_[root] = r;
-                            root = r;
-                        }
-                        else if (r > root) parent_[r] = root;
-                    }
-                parent_[i] = root == none ? i : root;
-                cur = parent_[i];
+                size[slot_[root]] += run_end_[r] - run_begin_[r];
             }
-            // the seam pass reads the thresholds of the first s points only
-            tsq_.resize(std::min(s, n));
-            for (size_t i = 0; i < tsq_.size(); ++i) tsq_[i] = thr(seg_detail::squaredDistance<D>(ptr(pts[i]), o));
-            finishWindow(pts);
+            const size_t first = clusters_.size();
+            clusters_.resize(first + size.size());
+            last_.assign(size.size(), 0);
+            rotate_at_.assign(size.size(), 0);
+            for (size_t c = 0; c < size.size(); ++c) clusters_[first + c].reserve(size[c]);
+            for (size_t r = 0; r < runs; ++r)
+            {
+                const size_t c = slot_[find(r)], b = run_begin_[r];
+                std::vector<VectorType> &cl = clusters_[first + c];
+                if (!cl.empty() && b - last_[c] > s) rotate_at_[c] = cl.size();
+                cl.insert(cl.end(), pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(run_end_[r]));
+                last_[c] = run_end_[r] - 1;
+            }
+            for (size_t c = 0; c < size.size(); ++c)
+                if (rotate_at_[c] > 0)
+                {
+                    std::vector<VectorType> &cl = clusters_[first + c];
+                    std::rotate(cl.begin(), cl.begin() + static_cast<std::ptrdiff_t>(rotate_at_[c]), cl.end());
+                }
         }
 
-        // The seam and the output of segmentWindow and segmentMasked, from parent_ (none for gaps) and, for the
+        // The seam and the output of segmentWindow, from parent_ (none for gaps) and, for the
         // first step - 1 points, tsq_.
         void finishWindow(const std::vector<VectorType> &pts)
         {
@@ -547,8 +537,7 @@ namespace rtl
         std::vector<ElementType> tsq_;
         std::vector<size_t> parent_, slot_, last_, rotate_at_;
         std::vector<size_t> trace_first_;                     // traced runs: the scan index each cluster starts with
-        std::vector<std::uint32_t> masks_;                    // segmentMasked: bit k - 1 = linked at lag k, bit 31 = valid
-        static constexpr size_t max_masked_window = 31;
+        std::vector<size_t> run_begin_, run_end_, cluster_size_;   // segmentRuns: runs [begin, end), points per cluster
         Observer *observer_ = nullptr;
     };
 }

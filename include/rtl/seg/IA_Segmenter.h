@@ -121,6 +121,20 @@ namespace rtl
                 ++stream_;
                 return;
             }
+            // step > 1, the window is full and all in the staged cluster: a point within reach of the newest one
+            // joins it, and no other comparison can change anything (every window point is in that cluster)
+            if (step_ > 1 && uniform_ && checked_ && origin_finite && valid && wrec_[head_] == stage_rec_ &&
+                widx_[head_] == stage_next_ &&
+                seg_detail::squaredDistance<D>(pt.data().data(), wpts_[head_ == 0 ? step_ - 1 : head_ - 1].data().data()) <= thr_(rsq))
+            {
+                stage_[staged_++] = wpts_[head_];
+                ++stage_next_;
+                if (staged_ == stage_capacity) flushStage();
+                wpts_[head_] = pt;
+                widx_[head_] = stream_++;
+                head_ = head_ + 1 == step_ ? 0 : head_ + 1;
+                return;
+            }
             addPointSlow(pt, valid, origin_finite, rsq);
         }
 
@@ -149,6 +163,7 @@ namespace rtl
             for (size_t k = 0; k < count_; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
             head_ = 0;
             count_ = 0;
+            uniform_ = false;
         }
 
     private:
@@ -222,6 +237,7 @@ namespace rtl
             wpts_[slot] = pt;
             wrec_[slot] = rec;
             widx_[slot] = stream_++;
+            uniform_ = rec != none && count_ == step_ && std::all_of(wrec_.begin(), wrec_.end(), [rec](size_t r) { return r == rec; });
         }
 
         struct Record
@@ -411,7 +427,15 @@ namespace rtl
                 free_.push_back(r);
                 return;
             }
-            pushAlive(R, wpts_[slot], step_ == 1 ? stream_ - 1 : widx_[slot]);
+            const size_t idx = step_ == 1 ? stream_ - 1 : widx_[slot];
+            pushAlive(R, wpts_[slot], idx);
+            if (step_ > 1 && R.in_window > 1)
+            {
+                // stage this cluster's next points (the step > 1 hot path) while they continue its alive list
+                if (stage_rec_ != r) flushStage();
+                stage_rec_ = R.contiguous ? r : none;
+                stage_next_ = idx + 1;
+            }
             std::vector<VectorType> &v = R.alive->second;
             if (--R.in_window == 0)
             {
@@ -456,6 +480,7 @@ namespace rtl
         size_t merge(size_t a, size_t b)
         {
             flushStage();
+            stage_rec_ = none;   // the merged alive list may no longer be contiguous
             const size_t keep = lists_.recs[a].id < lists_.recs[b].id ? a : b, gone = keep == a ? b : a;
             for (size_t w = 0; w < step_; ++w)
                 if (wrec_[w] == gone) wrec_[w] = keep;
@@ -541,6 +566,9 @@ namespace rtl
                 rec[m] = wrec_[w];
                 idx[m] = step_ == 1 ? stream_ - 1 : widx_[w];
             }
+            flushStage();
+            stage_rec_ = none;
+            uniform_ = false;
             count_ = std::min(count_, step);
             head_ = 0;
             step_ = step;
@@ -564,7 +592,9 @@ namespace rtl
         std::vector<std::vector<VectorType>> closed_;           // closing order; closed_head_ is the next to hand out
         size_t closed_head_ = 0;
         std::vector<std::vector<VectorType>> pool_;             // emptied alive lists, capacity kept
-        size_t stage_rec_ = none;                               // record of the staged points (step 1)
+        size_t stage_rec_ = none;                               // record of the staged points
+        size_t stage_next_ = 0;                                 // step > 1: the stream index the next staged point has
+        bool uniform_ = false;                                  // step > 1: the window is full, all in one cluster
         static constexpr size_t stage_capacity = 256;
         mutable std::vector<VectorType> stage_ = std::vector<VectorType>(stage_capacity);   // its newest alive points, not yet in the alive map; on the heap so that a move is cheap
         mutable size_t staged_ = 0;
