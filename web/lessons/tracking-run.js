@@ -7,7 +7,7 @@
 import { buildTree } from './tf-tree.js';
 
 export const DEFAULTS = Object.freeze({
-  dataset: 'intel', first: 2, count: 10, gate: 1, sigma: 0.1, accel: 0.05, misses: 1,
+  dataset: 'intel', first: 2, count: 10, gate: 1, sigma: 0.1, accel: 0.01, misses: 1,
   segment: Object.freeze({ step: 3, lowerBound: 0.1, upperBound: 0.5 }), minPoints: 5, initialSpeedSigma: 0.5,
 });
 
@@ -107,7 +107,7 @@ export function runTracker(rtl, scans, p) {
       const base = { scan: p.first + s, position: s, time: scan.timestamp, pose: [scan.x, scan.y, scan.theta], map: here.map };
       if (s === 0) {
         for (const c of clusters) start(c, s);
-        steps.push({ ...base, kind: 'start', dt: 0, clusters, tracks: live.map((t) => trackView(t, { status: 'new' })), ended: [] });
+        steps.push({ ...base, kind: 'start', dt: 0, clusters, tracks: live.map((t, j) => trackView(t, { status: 'new', cluster: j })), ended: [] });
         prev = scan;
         continue;
       }
@@ -150,7 +150,7 @@ export function runTracker(rtl, scans, p) {
         }
         t.trail.push([t.state[0], t.state[1]]);
       });
-      const views2 = live.map((t, i) => trackView(t, { status: status.get(t.id), predicted: predicted[i], measured: measured.get(t.id) ?? null }));
+      const views2 = live.map((t, i) => trackView(t, { status: status.get(t.id), predicted: predicted[i], measured: measured.get(t.id) ?? null, cluster: pairedOf.get(i) ?? null }));
       for (let i = live.length - 1; i >= 0; i--) {
         const t = live[i];
         if (status.get(t.id) !== 'ended') continue;
@@ -159,7 +159,7 @@ export function runTracker(rtl, scans, p) {
         t.kf.dispose();
         live.splice(i, 1);
       }
-      for (const c of clusters) if (c.track === null) { start(c, s); views2.push(trackView(live[live.length - 1], { status: 'new' })); }
+      for (const c of clusters) if (c.track === null) { start(c, s); views2.push(trackView(live[live.length - 1], { status: 'new', cluster: c.index })); }
       steps.push({ ...base, kind: 'correct', dt, clusters, assoc, tracks: views2, ended: ended.reverse() });
     }
   } finally {

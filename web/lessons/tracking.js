@@ -54,7 +54,8 @@ function explain(st, p) {
   if (st.kind === 'predict') {
     return {
       text: `<p>${at}, Δt = ${st.dt.toFixed(1)} s later. Each filter <b>predicts</b> (constant velocity): x ← A x moves the position by v·Δt, P ← A P Aᵀ + Q grows its uncertainty (dashed circles: 1σ).</p><p class="why">The new scan has ${n} cluster${n === 1 ? '' : 's'} (crosses), not associated yet.</p>`,
-      details: ul(st.tracks.map((t) => `<b>T${t.id}</b>: ${xy(t.previous.state)} → ${xy(t.predicted)}, σ ${m(Math.sqrt((t.previous.P[0] + t.previous.P[5]) / 2), 2)} → ${m(t.sigma, 2)}`)),
+      details: ul(st.tracks.map((t) => `<b>T${t.id}</b>: ${xy(t.previous.state)} → ${xy(t.predicted)}, σ ${m(Math.sqrt((t.previous.P[0] + t.previous.P[5]) / 2), 2)} → ${m(t.sigma, 2)}`)) +
+        '<p class="why">estimate → prediction, position σ before → after</p>',
     };
   }
   if (st.kind === 'associate') {
@@ -65,13 +66,18 @@ function explain(st, p) {
     };
   }
   const rows = st.tracks.map((t) => {
-    if (t.status === 'corrected') return `<b>T${t.id}</b>: prediction ${xy(t.predicted)}, centroid ${xy(t.measured)} → estimate ${xy(t.state)}, ${m(Math.hypot(t.state[0] - t.measured[0], t.state[1] - t.measured[1]), 2)} from the centroid; speed ${speed(t.state).toFixed(2)} m/s`;
-    if (t.status === 'coasting') return `<b>T${t.id}</b>: missed (${t.misses} of ${p.misses} allowed), keeps its prediction ${xy(t.state)}`;
+    if (t.status === 'corrected') {
+      // how far along the way from its prediction to its centroid the estimate went (the gain, seen on the map)
+      const way = Math.hypot(t.measured[0] - t.predicted[0], t.measured[1] - t.predicted[1]);
+      const went = way > 0 ? Math.hypot(t.state[0] - t.predicted[0], t.state[1] - t.predicted[1]) / way : 1;
+      return `<b>T${t.id}</b>: ${xy(t.predicted)} → ${xy(t.state)}, ${Math.round(went * 100)} % of the way to C${t.cluster + 1}; ${speed(t.state).toFixed(2)} m/s, σ ${m(t.sigma, 2)}`;
+    }
+    if (t.status === 'coasting') return `<b>T${t.id}</b>: missed (${t.misses} of ${p.misses} allowed), keeps its prediction`;
     if (t.status === 'ended') return `<b>T${t.id}</b> ends: missed ${t.misses} scan${t.misses === 1 ? '' : 's'} in a row (more than ${p.misses}); its filter is disposed`;
-    return `<b>T${t.id}</b> starts at ${xy(t.state)} (an unpaired cluster)`;
+    return `<b>T${t.id}</b> starts at C${t.cluster + 1} ${xy(t.state)}`;
   });
   return {
-    text: `<p>${at}: each paired filter <b>corrects</b> with its centroid, x ← x + K (z − H x): the estimate (dot) lands between the prediction (ring) and the centroid (cross), nearer to whichever is less uncertain.</p>`,
+    text: `<p>${at}: each paired filter <b>corrects</b> with its centroid, x ← x + K (z − H x): the estimate (dot) lands between the prediction (ring) and the centroid (cross), nearer to whichever is less uncertain.</p><p class="why">Beside the matrix: prediction → estimate, and how far the gain K moved it towards the centroid.</p>`,
     details: ul(rows),
   };
 }
