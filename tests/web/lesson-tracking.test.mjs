@@ -246,6 +246,20 @@ describe('tracking lesson in Chromium', { timeout: 300000 }, () => {
     await setField(page, 'count', 10);
   });
 
+  test('clicking a track in the figure goes back to the step where it started', async () => {
+    await goStep(page, 15);
+    const s = await state(page);
+    const t = s.tracks.find((x) => x.id === 5);
+    assert.equal(t.status, 'corrected');
+    const at = await page.evaluate(([x, y]) => window.__rtl.clientPoint(x, y), [t.state[0], t.state[1]]);
+    await page.mouse.click(at.x, at.y);
+    await page.waitForFunction(() => window.__rtl.lessons.find((l) => l.id === 'tracking').step !== 15, null, { timeout: PAGE_TIMEOUT });
+    const b = await state(page);
+    assert.equal(b.kind, 'correct');
+    assert.equal(b.tracks.find((x) => x.id === 5)?.status, 'new');
+    assert.ok(s.log.find((x) => x.id === 5).born === b.scan, `T5 was born in scan ${b.scan}`);
+  });
+
   test('a smaller gate leaves more pairs unassigned; an impossible excerpt is marked', async () => {
     const wide = await state(page);
     await setField(page, 'gate', 0.1);

@@ -104,7 +104,18 @@ export default {
     // an older build of the package (before assign and KalmanFilter) says so instead of failing
     const missing = typeof host.rtl.assign === 'function' && typeof host.rtl.KalmanFilter === 'function' ? null
       : 'This build of rtl-wasm has no assign() or KalmanFilter yet (a newer "npm run build" will): nothing to track.';
-    let run = { steps: [], tracks: [] }, params = null, fitted = null;
+    let run = { steps: [], tracks: [] }, params = null, fitted = null, shown = -1;
+    // clicking a track (its dot or ring) goes back to the step where it started
+    const drawnAt = (st, t) => (st.kind === 'predict' || st.kind === 'associate' ? t.predicted : t.state);
+    host.figure.onPick = (x, y) => {
+      const st = run.steps[shown];
+      if (!st) return;
+      let best = null, bd = (14 / host.figure.scale) ** 2;
+      for (const t of st.tracks) { const [px, py] = drawnAt(st, t), d = (px - x) ** 2 + (py - y) ** 2; if (d < bd) { bd = d; best = t; } }
+      if (!best) return;
+      const born = run.steps.findIndex((b) => b.tracks.some((t) => t.id === best.id));
+      if (born >= 0) host.goTo?.(born);
+    };
     return {
       recompute() {
         if (missing) return { steps: 0 };
@@ -121,7 +132,7 @@ export default {
         return { steps: run.steps.length, start: Math.max(0, firstAssoc) };
       },
       show(k) {
-        this.step = k;
+        this.step = shown = k;
         const st = run.steps[k];
         if (!st) {
           host.figure.show(new Scene('Tracking clusters'));
@@ -158,14 +169,14 @@ export default {
             if (t.predicted && t.status !== 'new') s.marker(t.predicted[0], t.predicted[1], { colour, size: 6 });
             if (t.status !== 'ended') s.marker(t.state[0], t.state[1], { colour, shape: 'dot', size: 9 });
           }
-          const at = st.kind === 'predict' || st.kind === 'associate' ? t.predicted : t.state;
+          const at = drawnAt(st, t);
           s.label(at[0], at[1], `T${t.id}${t.status === 'ended' ? ' ends' : t.status === 'new' && st.kind !== 'start' ? ' new' : ''}`, { colour, bold: true });
         }
         host.figure.show(s);
         const { text, details } = explain(st, params);
         table.details.innerHTML = details;
         host.text.innerHTML = text +
-          '<p class="legend">Figure (map frame): crosses = cluster centroids C1…, rings = predicted positions, dots = Kalman estimates, lines = each track\'s estimates so far; colours = tracks, grey = points in no track.</p>';
+          '<p class="legend">Figure (map frame): crosses = cluster centroids C1…, rings = predicted positions, dots = Kalman estimates, lines = each track\'s estimates so far; colours = tracks, grey = points in no track. Click a track to go to the step where it started.</p>';
         table.show(st, params.gate, st.kind === 'associate' || st.kind === 'correct');
       },
       finalState() {
