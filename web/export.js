@@ -59,13 +59,20 @@ export function sceneDrawing(scene, e, pxPerMetre = 100) {
   return { points: new Float64Array(xy), labels: Int32Array.from(labels), segments: new Float64Array(lines), title: scene.title };
 }
 
+// The package calls' arguments for what `figure` shows now: the drawing and the SVG size (800 px wide, the view's
+// aspect). The page passes them to toSvg / toTikz unchanged, so a script making the same calls gets the same bytes.
+export function exportArguments(figure) {
+  const e = figure.extent(), h = Math.round((800 * (e.maxY - e.minY)) / (e.maxX - e.minX));
+  return { drawing: sceneDrawing(figure.scene, e, figure.scale), svg: { width: 800, height: Math.min(Math.max(h, 100), 4000) } };
+}
+
 // SVG and TikZ texts of what `figure` shows now.
 export function figureSvg(rtl, figure) {
-  const e = figure.extent(), w = 800, h = Math.round((800 * (e.maxY - e.minY)) / (e.maxX - e.minX));
-  return rtl.toSvg(sceneDrawing(figure.scene, e, figure.scale), { width: w, height: Math.min(Math.max(h, 100), 4000) });
+  const { drawing, svg } = exportArguments(figure);
+  return rtl.toSvg(drawing, svg);
 }
 export function figureTikz(rtl, figure) {
-  return rtl.toTikz(sceneDrawing(figure.scene, figure.extent(), figure.scale));
+  return rtl.toTikz(exportArguments(figure).drawing);
 }
 
 export function download(name, type, text) {

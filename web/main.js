@@ -1,12 +1,12 @@
 // The page's boot: loads the package (through the import map, /dist/index.js), builds the lesson menu from
 // web/lessons/index.js, opens the lesson named by the URL hash, and connects it to the figure, the player and
 // the export buttons. Test hook: window.__rtl = { ready, errors, lessons: [{ id, title, steps, step }], current,
-// revision, finalState(), figureExtent(), clientPoint(x, y) }.
+// revision, finalState(), figureExtent(), clientPoint(x, y), exportArguments() }.
 import init from 'rtl-wasm';
 import { createData } from './data.js';
 import { Figure } from './figure.js';
 import { Player } from './player.js';
-import { download, figureSvg, figureTikz } from './export.js';
+import { download, exportArguments, figureSvg, figureTikz } from './export.js';
 import LESSONS from './lessons/index.js';
 
 const $ = (id) => document.getElementById(id);
@@ -135,6 +135,11 @@ async function main() {
   hook.finalState = () => state.instance?.finalState() ?? null;
   hook.figureExtent = () => state.figure?.extent() ?? null;
   hook.clientPoint = (x, y) => state.figure.clientPoint(x, y);
+  // the export buttons' package-call arguments as plain data (tests repeat the calls in Node)
+  hook.exportArguments = () => {
+    const { drawing, svg } = exportArguments(state.figure);
+    return { drawing: { ...drawing, points: Array.from(drawing.points), labels: Array.from(drawing.labels), segments: Array.from(drawing.segments) }, svg };
+  };
   const name = () => `rtl-${state.lesson.id}-step${state.player.step + 1}`;
   $('dl-svg').addEventListener('click', () => download(`${name()}.svg`, 'image/svg+xml', figureSvg(state.rtl, state.figure)));
   $('dl-tikz').addEventListener('click', () => download(`${name()}.tex`, 'text/x-tex', figureTikz(state.rtl, state.figure)));

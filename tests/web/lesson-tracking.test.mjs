@@ -203,12 +203,20 @@ describe('tracking lesson in Chromium', { timeout: 300000 }, () => {
     assert.ok(inView > 20, `${inView} points in view`);
     const download = async (id) => { const [dl] = await Promise.all([page.waitForEvent('download'), page.click(id)]); return readFileSync(await dl.path(), 'utf8'); };
     const svg = await download('#dl-svg'), tikz = await download('#dl-tikz');
+    const args = await page.evaluate(() => window.__rtl.exportArguments());
+    // the files are the package's calls on the figure's drawing, byte for byte
+    assert.equal(svg, rtl.toSvg(args.drawing, args.svg));
+    assert.equal(tikz, rtl.toTikz(args.drawing));
     const title = `Tracking, scan ${s.scan} (associate): Intel Research Lab, scans 2–11, map frame`;
-    assert.equal(await page.evaluate(() => document.querySelector('#canvas').getAttribute('aria-label')), 'Figure of the lesson Tracking clusters');
-    assert.ok(svg.includes(`<title>${title}</title>`), 'the SVG has the figure title');
-    assert.equal((svg.match(/<circle /g) ?? []).length, inView);
+    assert.equal(args.drawing.title, title);
+    assert.ok(svg.includes(`>${title}</text>`), 'the SVG draws the figure title');
+    assert.equal(args.drawing.points.length / 2, inView, 'one dot per point in view');
+    // coloured as on screen: the paired clusters' points in their tracks' colours, the rest grey
+    const labels = new Set(args.drawing.labels);
+    for (const c of s.clusters) if (c.track !== null) assert.ok(labels.has(c.track - 1), `T${c.track}'s colour`);
+    assert.ok(labels.has(-1));
     assert.match(tikz, /\\begin\{tikzpicture\}/);
-    assert.ok(tikz.includes('Tracking, scan'), 'the TikZ has the figure title');
+    assert.equal((tikz.match(/\\Mark[A-Z]+\{/g) ?? []).length, inView);
   });
 
   test("why: driving (scans 18-29), a track paired with a cluster that is not its nearest is explained with assign()'s numbers", async () => {

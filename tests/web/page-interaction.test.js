@@ -96,24 +96,30 @@ describe('lesson page interaction', { timeout: 240000 }, () => {
     const whole = await svgOf();
     const shown = await page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'compare').step);
     const name = ['FTLS', 'AFTLS', 'ITLS', 'Douglas–Peucker', 'Reumann–Witkam'][shown];
-    assert.ok(whole.includes(`<title>Compare: ${name} on cluster ${s.cluster + 1} of Intel Research Lab, scan 17</title>`), 'the figure title');
-    const circles = (svg) => (svg.match(/<circle /g) ?? []).length;
+    // the file is the package's toSvg of the figure's drawing, byte for byte (the same call in Node)
+    const args = await page.evaluate(() => window.__rtl.exportArguments());
+    assert.equal(whole, rtl.toSvg(args.drawing, args.svg));
+    assert.equal(args.drawing.title, `Compare: ${name} on cluster ${s.cluster + 1} of Intel Research Lab, scan 17`);
+    assert.ok(whole.includes(`>${args.drawing.title}</text>`), 'the figure title is drawn');
+    const circles = (a) => a.drawing.points.length / 2;
     // the figure fits the chosen cluster: all of its points are in the view
     const clusterSize = (await page.evaluate(() => window.__rtl.finalState())).rows[0].n;
-    assert.equal(circles(whole), clusterSize, `one dot per point of cluster ${s.cluster + 1}`);
+    assert.equal(circles(args), clusterSize, `one dot per point of cluster ${s.cluster + 1}`);
     await page.focus('#canvas');
     for (let i = 0; i < 4; i++) await page.keyboard.press('+');
-    const zoomed = await svgOf();
-    assert.ok(circles(zoomed) < circles(whole), `zoomed export has ${circles(zoomed)} of ${circles(whole)} points`);
+    const zoomed = await svgOf(), zoomedArgs = await page.evaluate(() => window.__rtl.exportArguments());
+    assert.equal(zoomed, rtl.toSvg(zoomedArgs.drawing, zoomedArgs.svg));
+    assert.ok(circles(zoomedArgs) < circles(args), `zoomed export has ${circles(zoomedArgs)} of ${circles(args)} points`);
     // the exported extent is the view: its frame is the drawing's bounding box
     const e = await page.evaluate(() => window.__rtl.figureExtent());
     const ratio = (e.maxY - e.minY) / (e.maxX - e.minX);
-    const [, w, h] = zoomed.match(/viewBox="0 0 (\d+) (\d+)"/).map(Number);
+    const [, w, h] = zoomed.match(/viewBox="0 0 ([\d.]+) ([\d.]+)"/).map(Number);
     assert.ok(Math.abs(h / w - ratio) < 0.02, `aspect ${h / w} vs view ${ratio}`);
     const [tex] = await Promise.all([page.waitForEvent('download'), page.click('#dl-tikz')]);
     const tikz = readFileSync(await tex.path(), 'utf8');
     assert.match(tikz, /\\begin\{tikzpicture\}/);
-    assert.equal((tikz.match(/\\Mark[A-Z]+\{/g) ?? []).length, circles(zoomed), 'TikZ has the same points as the SVG');
+    assert.equal(tikz, rtl.toTikz(zoomedArgs.drawing));
+    assert.equal((tikz.match(/\\Mark[A-Z]+\{/g) ?? []).length, circles(zoomedArgs), 'one TikZ mark per point in view');
     await page.keyboard.press('0');
   });
 
