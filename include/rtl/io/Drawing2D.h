@@ -50,7 +50,7 @@ namespace rtl
 
         //! At most this many grid lines or axis ticks per grid/axis: beyond it the grid/axis draws no ticks at all
         //! (a tick that small relative to the range is a mistake, and TeX could not hold the output anyway).
-        static const size_t max_ticks = 10000;
+        static constexpr size_t max_ticks = 10000;
 
         //! What a primitive is; its geometry lives in Primitive's fields as documented there.
         enum class Kind

@@ -1,6 +1,7 @@
 // The TikZ back-end of Drawing2D: the standalone document or only the tikzpicture (rtl-api §4.4 conventions).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -14,8 +15,53 @@ namespace rtl
 {
     namespace latex_detail
     {
+        //! How data coordinates become TikZ coordinates. Normally (`paper` false) the picture works in data units
+        //! with the unit vectors x=<sx>cm, y=<sy>cm. TeX cannot hold that when a unit vector or a coordinate is out of
+        //! its range (dimensions < 16384 pt = 575 cm, pgfmath numbers < 16384, no exponent in "1e-05cm"), e.g. for a
+        //! data range of 1e-3 or coordinates of 1e6: then (`paper` true) every coordinate is written in cm relative to
+        //! the data minimum, (v - min) * s, with x=1cm, y=1cm; radii become "rx and ry" pairs.
+        struct TikzMap
+        {
+            bool paper = false;
+            double ox = 0, oy = 0, sx = 1, sy = 1;
+
+            double X(double x) const { return paper ? (x - ox) * sx : x; }
+            double Y(double y) const { return paper ? (y - oy) * sy : y; }
+            std::string pt(double x, double y) const { return tikzPoint(X(x), Y(y)); }
+            //! A radius of r data units: "r", or "<r sx> and <r sy>" on paper.
+            std::string radius(double r) const { return paper ? number(r * sx) + " and " + number(r * sy) : number(r); }
+            //! Data-unit distance along x / y as written.
+            double dx(double d) const { return paper ? d * sx : d; }
+            double dy(double d) const { return paper ? d * sy : d; }
+        };
+
+        //! Data units are safe if every unit vector and every coordinate the picture writes stays inside TeX's range.
+        inline TikzMap tikzMap(const Drawing2D &d, const Drawing2D::Frame &f)
+        {
+            double ext_x = std::max(std::abs(f.min_x - f.ox), std::abs(f.max_x + f.ox));
+            double ext_y = std::max(std::abs(f.min_y - f.oy), std::abs(f.max_y + f.oy));
+            if (d.clipped())
+            {
+                std::vector<float> c = d.clipRegion();
+                ext_x = std::max({ext_x, std::abs(static_cast<double>(c[0])), std::abs(static_cast<double>(c[2]))});
+                ext_y = std::max({ext_y, std::abs(static_cast<double>(c[1])), std::abs(static_cast<double>(c[3]))});
+            }
+            auto ok = [](double s, double ext) { return s >= 1e-4 && s <= 500 && ext < 16000 && ext * s < 500; };
+            TikzMap m;
+            m.paper = !(ok(f.sx, ext_x) && ok(f.sy, ext_y));
+            if (m.paper)
+            {
+                m.ox = f.min_x;
+                m.oy = f.min_y;
+                m.sx = f.sx;
+                m.sy = f.sy;
+            }
+            return m;
+        }
+
         //! Grid lines, axes with ticks and labels, and the axis descriptions of a drawing.
-        inline void writeTikzGridsAndAxes(const Drawing2D &d, const Drawing2D::Frame &f, std::string &out)
+        inline void writeTikzGridsAndAxes(const Drawing2D &d, const Drawing2D::Frame &f, const TikzMap &map,
+                                          std::string &out)
         {
             double x0 = f.min_x - f.ox, x1 = f.max_x + f.ox, y0 = f.min_y - f.oy, y1 = f.max_y + f.oy;
             for (const auto &g : d.grids())
@@ -23,9 +69,9 @@ namespace rtl
                 for (double v : g.horizontal ? Drawing2D::ticks(y0, y1, g.tick) : Drawing2D::ticks(x0, x1, g.tick))
                 {
                     if (g.horizontal)
-                        out += "\\draw[" + g.style + "] (" + tikzPoint(x0, v) + ") -- (" + tikzPoint(x1, v) + ");\n";
+                        out += "\\draw[" + g.style + "] (" + map.pt(x0, v) + ") -- (" + map.pt(x1, v) + ");\n";
                     else
-                        out += "\\draw[" + g.style + "] (" + tikzPoint(v, y0) + ") -- (" + tikzPoint(v, y1) + ");\n";
+                        out += "\\draw[" + g.style + "] (" + map.pt(v, y0) + ") -- (" + map.pt(v, y1) + ");\n";
                 }
             }
             // Tick marks are 0.1 cm long on paper: convert to data units per axis.
@@ -35,19 +81,19 @@ namespace rtl
                 std::string anc = tikzAnchor(a.position);
                 bool log = (a.is_x ? d.axisTypeX() : d.axisTypeY()) == Drawing2D::axis_type_log10;
                 if (a.is_x)
-                    out += "\\draw[" + a.style + "] (" + tikzPoint(x0, a.crossing) + ") -- (" +
-                           tikzPoint(x1, a.crossing) + ");\n";
+                    out += "\\draw[" + a.style + "] (" + map.pt(x0, a.crossing) + ") -- (" +
+                           map.pt(x1, a.crossing) + ");\n";
                 else
-                    out += "\\draw[" + a.style + "] (" + tikzPoint(a.crossing, y0) + ") -- (" +
-                           tikzPoint(a.crossing, y1) + ");\n";
+                    out += "\\draw[" + a.style + "] (" + map.pt(a.crossing, y0) + ") -- (" +
+                           map.pt(a.crossing, y1) + ");\n";
                 for (double v : a.is_x ? Drawing2D::ticks(x0, x1, a.tick) : Drawing2D::ticks(y0, y1, a.tick))
                 {
                     if (a.is_x)
-                        out += "\\draw[" + a.style + "] (" + tikzPoint(v, a.crossing - tick_y) + ") -- (" +
-                               tikzPoint(v, a.crossing + tick_y) + ")";
+                        out += "\\draw[" + a.style + "] (" + map.pt(v, a.crossing - tick_y) + ") -- (" +
+                               map.pt(v, a.crossing + tick_y) + ")";
                     else
-                        out += "\\draw[" + a.style + "] (" + tikzPoint(a.crossing - tick_x, v) + ") -- (" +
-                               tikzPoint(a.crossing + tick_x, v) + ")";
+                        out += "\\draw[" + a.style + "] (" + map.pt(a.crossing - tick_x, v) + ") -- (" +
+                               map.pt(a.crossing + tick_x, v) + ")";
                     std::string label = a.format.empty() ? "" : numberToLatexString(log ? std::pow(10.0, v) : v, a.format);
                     if (!label.empty())
                     {
@@ -61,23 +107,23 @@ namespace rtl
                             lx += a.is_x ? 0.0 : tick_x;
                         else if (a.position & tikz_position_left)
                             lx -= a.is_x ? 0.0 : tick_x;
-                        out += " (" + tikzPoint(lx, ly) + ") node[anchor=" + anc + "] {" + label + "}";
+                        out += " (" + map.pt(lx, ly) + ") node[anchor=" + anc + "] {" + label + "}";
                     }
                     out += ";\n";
                 }
             }
             // Descriptions sit outside the plot region (beyond the tick labels): centred below it and left of it.
             if (!d.descriptionX().empty())
-                out += "\\node[anchor=north, yshift=-0.7cm] at (" + tikzPoint((x0 + x1) / 2, y0) + ") {" +
+                out += "\\node[anchor=north, yshift=-0.7cm] at (" + map.pt((x0 + x1) / 2, y0) + ") {" +
                        LaTeX::escapeLaTeXCharacters(d.descriptionX()) + "};\n";
             if (!d.descriptionY().empty())
-                out += "\\node[anchor=south, rotate=90, yshift=1.2cm] at (" + tikzPoint(x0, (y0 + y1) / 2) + ") {" +
+                out += "\\node[anchor=south, rotate=90, yshift=1.2cm] at (" + map.pt(x0, (y0 + y1) / 2) + ") {" +
                        LaTeX::escapeLaTeXCharacters(d.descriptionY()) + "};\n";
         }
 
         //! One polyline; long ones are cut into paths of at most 500 points (sharing the joint) so that TeX does not
         //! run out of memory on one huge path.
-        inline void writeTikzPolyline(const Drawing2D::Primitive &p, std::string &out)
+        inline void writeTikzPolyline(const Drawing2D::Primitive &p, const TikzMap &map, std::string &out)
         {
             std::string path, last;
             size_t run = 0;
@@ -90,9 +136,9 @@ namespace rtl
                     run = 1;
                 }
                 std::string xy;
-                appendNumber(xy, q.first);
+                appendNumber(xy, map.X(q.first));
                 xy += ',';
-                appendNumber(xy, q.second);
+                appendNumber(xy, map.Y(q.second));
                 path += run == 0 ? "\\draw[" + p.style + "] (" : std::string(" -- (");
                 path += xy;
                 path += ')';
@@ -103,13 +149,14 @@ namespace rtl
             out += path + ";\n";
         }
 
-        inline void writeTikzPrimitive(const Drawing2D::Primitive &p, const Drawing2D::Frame &f, std::string &out)
+        inline void writeTikzPrimitive(const Drawing2D::Primitive &p, const Drawing2D::Frame &f, const TikzMap &map,
+                                       std::string &out)
         {
             using K = Drawing2D::Kind;
-            auto pt = [&](size_t i) { return tikzPoint(p.points[i].first, p.points[i].second); };
+            auto pt = [&](size_t i) { return map.pt(p.points[i].first, p.points[i].second); };
             switch (p.kind)
             {
-                case K::polyline: writeTikzPolyline(p, out); break;
+                case K::polyline: writeTikzPolyline(p, map, out); break;
                 case K::marks:
                     for (const auto &m : p.marks)
                     {
@@ -118,9 +165,9 @@ namespace rtl
                         double deg = (dx == 0.0 && dy == 0.0) ? 0.0 : std::atan2(dy, dx) * 180.0 / pi;
                         out += p.mark;
                         out += '{';
-                        appendNumber(out, m.x);
+                        appendNumber(out, map.X(m.x));
                         out += "}{";
-                        appendNumber(out, m.y);
+                        appendNumber(out, map.Y(m.y));
                         out += "}{";
                         appendNumber(out, deg);
                         out += "}\n";
@@ -141,14 +188,14 @@ namespace rtl
                     out += "cycle;\n";
                     break;
                 case K::rectangle: out += "\\draw[" + p.style + "] (" + pt(0) + ") rectangle (" + pt(1) + ");\n"; break;
-                case K::circle: out += "\\draw[" + p.style + "] (" + pt(0) + ") circle (" + number(p.r1) + ");\n"; break;
+                case K::circle: out += "\\draw[" + p.style + "] (" + pt(0) + ") " + (map.paper ? "ellipse (" : "circle (") + map.radius(p.r1) + ");\n"; break;
                 case K::ellipse:
                     out += "\\draw[" + p.style + ", rotate around={" + number(p.a1 * 180.0 / pi) + ":(" + pt(0) +
-                           ")}] (" + pt(0) + ") ellipse (" + number(p.r1) + " and " + number(p.r2) + ");\n";
+                           ")}] (" + pt(0) + ") ellipse (" + number(map.dx(p.r1)) + " and " + number(map.dy(p.r2)) + ");\n";
                     break;
                 case K::pie:
                 {
-                    std::string b = number(p.a1 * 180.0 / pi), e = number(p.a2 * 180.0 / pi), r = number(p.r1);
+                    std::string b = number(p.a1 * 180.0 / pi), e = number(p.a2 * 180.0 / pi), r = map.radius(p.r1);
                     out += "\\draw[" + p.style + "] (" + pt(0) + ") -- ++(" + b + ":" + r + ") arc (" + b + ":" + e +
                            ":" + r + ") -- cycle;\n";
                     break;
@@ -166,19 +213,20 @@ namespace rtl
     {
         using latex_detail::number;
         Drawing2D::Frame f = d.frame();
+        latex_detail::TikzMap map = latex_detail::tikzMap(d, f);
         std::string out;
-        out += "\\begin{tikzpicture}[x=" + number(f.sx) + "cm, y=" + number(f.sy) + "cm";
+        out += "\\begin{tikzpicture}[x=" + number(map.paper ? 1.0 : f.sx) + "cm, y=" + number(map.paper ? 1.0 : f.sy) + "cm";
         std::string style_options = d.registry().styleOptions();
         if (!style_options.empty())
             out += ",\n\t" + style_options;
         out += "]\n";
         out += d.registry().colorDefinitions();
-        out += "\\pgfmathsetmacro{\\MaxX}{" + number(f.max_x) + "}\n";
-        out += "\\pgfmathsetmacro{\\MinX}{" + number(f.min_x) + "}\n";
-        out += "\\pgfmathsetmacro{\\MaxY}{" + number(f.max_y) + "}\n";
-        out += "\\pgfmathsetmacro{\\MinY}{" + number(f.min_y) + "}\n";
-        out += "\\pgfmathsetmacro{\\MarkGlobalScaleX}{" + number(1.0 / f.sx) + "}\n";
-        out += "\\pgfmathsetmacro{\\MarkGlobalScaleY}{" + number(1.0 / f.sy) + "}\n";
+        out += "\\pgfmathsetmacro{\\MaxX}{" + number(map.X(f.max_x)) + "}\n";
+        out += "\\pgfmathsetmacro{\\MinX}{" + number(map.X(f.min_x)) + "}\n";
+        out += "\\pgfmathsetmacro{\\MaxY}{" + number(map.Y(f.max_y)) + "}\n";
+        out += "\\pgfmathsetmacro{\\MinY}{" + number(map.Y(f.min_y)) + "}\n";
+        out += "\\pgfmathsetmacro{\\MarkGlobalScaleX}{" + number(map.paper ? 1.0 : 1.0 / f.sx) + "}\n";
+        out += "\\pgfmathsetmacro{\\MarkGlobalScaleY}{" + number(map.paper ? 1.0 : 1.0 / f.sy) + "}\n";
         // The data frame as an invisible path: the picture is never empty (an empty one has zero size, which
         // \resizebox cannot scale) and always covers the plot region.
         out += "\\path (\\MinX,\\MinY) rectangle (\\MaxX,\\MaxY);\n";
@@ -187,16 +235,15 @@ namespace rtl
         if (d.clipped())
         {
             std::vector<float> c = d.clipRegion();
-            out += "\\clip (" + latex_detail::tikzPoint(c[0], c[1]) + ") rectangle (" +
-                   latex_detail::tikzPoint(c[2], c[3]) + ");\n";
+            out += "\\clip (" + map.pt(c[0], c[1]) + ") rectangle (" + map.pt(c[2], c[3]) + ");\n";
         }
-        latex_detail::writeTikzGridsAndAxes(d, f, out);
+        latex_detail::writeTikzGridsAndAxes(d, f, map, out);
         os << out;
         // Primitives in chunks, so that a figure of millions of points is not held twice in memory.
         out.clear();
         for (const auto &p : d.primitives())
         {
-            latex_detail::writeTikzPrimitive(p, f, out);
+            latex_detail::writeTikzPrimitive(p, f, map, out);
             if (out.size() > (1u << 16))
             {
                 os << out;
