@@ -14,9 +14,13 @@
 //   all (e.g. 3, 5 or 7 points whose short ranges do not fit), PartitionSearch2D::cover() lets consecutive ranges
 //   share one point, so split mode returns false only for invalid input (fewer than 2 points, non-finite points,
 //   invalid sigma or delta).
+// - A result that ElementType cannot hold (an errSquared() or a polyline vertex that overflows it, e.g. float
+//   points beyond ~1e19 whose squared residuals exceed FLT_MAX) is rejected: false, with no failure() corner
+//   (issue 15 item 7), rather than returning true with infinite numbers.
 // - Observer (last, default NoTrace): the events of FtlsTrace.h, from every stage.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -151,7 +155,7 @@ namespace rtl::vect_detail
             if (!ok)
                 return false;
             failure_.reset();
-            if (!makePolylines(pts, lines, idx))
+            if (!makePolylines(pts, lines, idx) || !representable(lines))
                 return false;
             if constexpr (Observer::enabled)
                 if (observer_)
@@ -214,6 +218,18 @@ namespace rtl::vect_detail
         std::vector<size_t> offsets;
         std::vector<OutputType> segments_;
         std::vector<VectorType> vertices_;
+
+        //! Every errSquared() and vertex finite in ElementType.
+        bool representable(const std::vector<Approximation> &lines) const
+        {
+            for (const auto &l : lines)
+                if (!std::isfinite(static_cast<double>(l.errSquared())))
+                    return false;
+            for (const auto &v : vertices())
+                if (!std::isfinite(static_cast<double>(v.x())) || !std::isfinite(static_cast<double>(v.y())))
+                    return false;
+            return true;
+        }
 
         static ComputeType totalError(const std::vector<Approximation> &lines)
         {
