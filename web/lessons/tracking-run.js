@@ -81,7 +81,8 @@ const trackView = (t, extra) => ({ id: t.id, state: t.state, P: t.P, sigma: posi
 
 // Runs the tracker over scans[first .. first + count - 1] with the lesson's parameters; returns { steps, tracks }:
 // steps[k] the snapshot after step k (0: the first scan starts the tracks; then per scan: predict, associate,
-// correct), tracks the log of every track (its measurements and estimates, for checks).
+// correct), tracks the log of every track (born/ended and each update: scan number, dt, centroid z or null when
+// missed, prediction, estimate; for checks).
 export function runTracker(rtl, scans, p) {
   const live = [], log = [], steps = [];
   let nextId = 1;
@@ -94,7 +95,7 @@ export function runTracker(rtl, scans, p) {
     try {
       kf.setState(t.state); kf.setCovarianceMatrix(P0); kf.setMeasurementMatrix(MEASUREMENT); kf.setMeasurementNoiseCovariance(R);
     } catch (e) { kf.dispose(); live.pop(); throw e; }
-    log.push({ id: t.id, born: p.first + s, ended: null, updates: [{ scan: s, dt: 0, z: c.centroid.slice(), state: t.state.slice() }] });
+    log.push({ id: t.id, born: p.first + s, ended: null, updates: [{ scan: p.first + s, dt: 0, z: c.centroid.slice(), state: t.state.slice() }] });
     c.track = t.id;
     return t;
   };
@@ -142,11 +143,11 @@ export function runTracker(rtl, scans, p) {
           c.track = t.id;
           status.set(t.id, 'corrected');
           measured.set(t.id, c.centroid);
-          entry.updates.push({ scan: s, dt, z: c.centroid.slice(), predicted: predicted[i], state: t.state.slice() });
+          entry.updates.push({ scan: p.first + s, dt, z: c.centroid.slice(), predicted: predicted[i], state: t.state.slice() });
         } else {
           t.misses++;
           status.set(t.id, t.misses > p.misses ? 'ended' : 'coasting');
-          entry.updates.push({ scan: s, dt, z: null, predicted: predicted[i], state: t.state.slice() });
+          entry.updates.push({ scan: p.first + s, dt, z: null, predicted: predicted[i], state: t.state.slice() });
         }
         t.trail.push([t.state[0], t.state[1]]);
       });
