@@ -108,6 +108,18 @@ namespace
         return keys;
     }
 
+    //! Equal bit for bit (NaN == NaN): segment ends are copies of input points.
+    template<int d, typename T>
+    bool same(const rtl::VectorND<d, T> &a, const rtl::VectorND<d, T> &b)
+    {
+        for (int k = 0; k < d; ++k)
+        {
+            const T x = a[k], y = b[k];
+            if (std::memcmp(&x, &y, sizeof(T)) != 0) return false;
+        }
+        return true;
+    }
+
     //! Indices of the kept points from the output polyline (consecutive segment end points).
     template<int d, typename T, class Seg>
     std::vector<size_t> keysOf(const std::vector<rtl::VectorND<d, T>> &pts, const std::vector<Seg> &segs, bool &ok)
@@ -118,8 +130,8 @@ namespace
         for (size_t s = 0; s <= segs.size() && !segs.empty(); ++s)
         {
             const auto target = s < segs.size() ? segs[s].beg() : segs.back().end();
-            if (s > 0 && s < segs.size()) ok &= segs[s - 1].end() == target;
-            while (i < pts.size() && !(pts[i] == target || (!finite(target) && !finite(pts[i])))) ++i;
+            if (s > 0 && s < segs.size()) ok &= same(segs[s - 1].end(), target);
+            while (i < pts.size() && !same(pts[i], target)) ++i;
             if (i == pts.size()) { ok = false; return out; }
             out.push_back(i);
             ++i;   // distinct indices, ascending
