@@ -10,8 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "rtl/core/Matrix.h"
-#include "rtl/core/VectorND.h"
+#include "rtl/Core.h"     // Matrix, VectorND and their aliases, used with the algorithms
 
 #include "rtl/alg/kalman/Kalman.h"
 #include "rtl/alg/kalman/KalmanX.h"
