@@ -86,7 +86,7 @@ copyFileSync(join(es, 'rtl.wasm'), join(DIST, 'rtl.wasm'));
 
 // api.js is written once, as an ES module whose last statement is `export { ... };`; derive the CommonJS twin.
 // Fragments (plain function declarations, no imports or exports) go in front of it, in the same scope.
-const API_FRAGMENTS = ['alg.js', 'simplify.js'];
+const API_FRAGMENTS = ['alg.js', 'simplify.js', 'draw.js'];
 const api = [...API_FRAGMENTS, 'api.js'].map((f) => readFileSync(join(JS, f), 'utf8')).join('\n')
   .replaceAll('__RTL_VERSION__', pkg.version);
 const exportLine = /^export \{([^}]*)\};\s*$/m;

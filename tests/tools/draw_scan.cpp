@@ -2,13 +2,15 @@
 // writers and prints the document, so that tests/js/draw-native.test.mjs can check that the package's output is
 // the C++ library's byte for byte.
 //
-//   draw_scan tikz|tikz-bare <points.f64> <labels.f64|-> <segments.f64|-> <title.txt|-> <width> <height> <markRadius>
+//   draw_scan tikz|tikz-bare|svg <points.f64> <labels.f64|-> <segments.f64|-> <title.txt|-> <width> <height> <markRadius>
 //   draw_scan tikz3d <points.f64> <labels.f64|-> <segments.f64|-> <planes.f64|-> <planeCounts.f64|->
 //                    <polygons.f64|-> <polygonCounts.f64|-> <fov|nan> <dirX> <dirY> <dirZ> <width> <height> <markRadius>
 // .f64: little-endian doubles (labels and counts too, as the package passes them); '-': none.
-#include <rtl/io/LaTeXTikz2D.h>
+#include <rtl/io/Drawing2D.h>
 #include <rtl/io/LaTeXTikz3D.h>
 #include <rtl/io/ScanDrawing.h>
+#include <rtl/io/Svg2D.h>
+#include <rtl/io/Tikz2DWriter.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -43,23 +45,25 @@ std::vector<T> as(const std::vector<double>& v) {
 
 int run(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
-  if ((mode == "tikz" || mode == "tikz-bare") && argc == 9) {
+  if ((mode == "tikz" || mode == "tikz-bare" || mode == "svg") && argc == 9) {
     const auto xy = readDoubles(argv[2]), segs = readDoubles(argv[4]);
     const auto labels = as<int>(readDoubles(argv[3]));
     rtl::ScanDrawingOptions o;
     o.width = std::stof(argv[6]);
     o.height = std::stof(argv[7]);
     o.mark_radius = std::stof(argv[8]);
-    rtl::LaTeXTikz2D d;
+    rtl::Drawing2D d;
     rtl::drawScan(d, xy.data(), xy.size() / 2, labels.empty() ? nullptr : labels.data(), segs.data(), segs.size() / 4,
                   readFile(argv[5]), o);
-    if (mode == "tikz")
-      d.writeTEX(std::cout);
+    if (mode == "svg")
+      rtl::writeSvg(d, std::cout);
+    else if (mode == "tikz")
+      rtl::writeTikz(d, std::cout);
     else
-      d.writeTikz(std::cout);
+      rtl::writeTikzPicture(d, std::cout);
     return 0;
   }
-  if (mode == "tikz3d" && argc == 17) {
+  if (mode == "tikz3d" && argc == 16) {
     const auto xyz = readDoubles(argv[2]), segs = readDoubles(argv[4]), planes = readDoubles(argv[5]),
                polygons = readDoubles(argv[7]);
     const auto labels = as<int>(readDoubles(argv[3]));

@@ -323,11 +323,14 @@ export type RwEvent =
 
 // ---------------------------------------------------------------------------------------------- drawings
 export interface Drawing {
+  /** 2 (default) */
+  dim?: 2;
   /** 2D points (x,y interleaved); NaN points (gaps) are not drawn */
   points?: PointArray;
   /** cluster label per point (integer, -1 = no cluster): cluster k gets colour k % 10 of the Okabe-Ito based
    *  palette of the demo page (#0072B2, #E69F00, #009E73, #D55E00, #CC79A7, #56B4E9, #8C6D1F, #1B7837, #762A83,
-   *  #332288), unlabelled points gray #808080; the same colours in SVG and TikZ */
+   *  #332288), unlabelled points gray #808080; the same colours in SVG and TikZ (C++: rtl::scan_palette in
+   *  rtl/io/ScanDrawing.h, which draws the picture for both) */
   labels?: ArrayLike<number>;
   /** line segments x1,y1,x2,y2,... (finite) */
   segments?: PointArray;
@@ -336,22 +339,60 @@ export interface Drawing {
   /** toTikz: a complete LaTeX document (default) or a bare tikzpicture (false); the option wins if both are given */
   standalone?: boolean;
 }
-/** TikZ in the conventions of the C++ rtl::LaTeXTikz2D (minimal document + preview, StyleX/ColorX/MarkX names,
- *  picture in data units scaled to the size); unlike it, one uniform scale so that scans keep their shape. */
+/** Faces of a 3D drawing: `vertices` x,y,z per vertex, all faces one after the other, `counts` the number of
+ *  vertices of each face (>= 3, summing to vertices.length / 3). An array of flat vertex arrays (one per face, as
+ *  vectorize's `polygons`) is accepted too. */
+export type Faces = { vertices: PointArray; counts: ArrayLike<number> } | PointArray[];
+/** A 3D scene for toTikz, rendered by the C++ rtl::LaTeXTikz3D (depth order, faces split where they cross). */
+export interface Drawing3D {
+  dim: 3;
+  /** 3D points (x,y,z interleaved) drawn as dots; NaN points (gaps) are not drawn */
+  points?: PointArray;
+  /** cluster label per point, colours as Drawing.labels */
+  labels?: ArrayLike<number>;
+  /** line segments x1,y1,z1,x2,y2,z2,... (finite), black */
+  segments?: PointArray;
+  /** filled faces: face k in palette colour k % 10 (lighter from behind), outlined */
+  planes?: Faces;
+  /** outlines only (black), hidden where a plane is in front */
+  polygons?: Faces;
+  standalone?: boolean;
+}
+/** TikZ written by the C++ library (rtl/io/ScanDrawing.h through rtl::LaTeXTikz2D; 3D: rtl::LaTeXTikz3D): minimal
+ *  document + preview, StyleX/ColorX/MarkX names, the picture in data units with unit vectors x=..cm, y=..cm (no
+ *  TeX dimension overflow for large coordinates); one uniform scale so that scans keep their shape. pdflatex's
+ *  default memory holds about 15,000 marks: larger drawings are written in full; compile them with lualatex or pass
+ *  fewer points. An empty 3D drawing gives "" (as LaTeXTikz3D::writeTEX). */
 export interface TikzOptions {
   /** complete LaTeX document (default true) or only the tikzpicture */
   standalone?: boolean;
-  /** picture size in cm (default 12 x 12; the data range is fitted inside, aspect kept) */
+  /** picture size in cm (default 12 x 12; 2D: the data range is fitted inside, aspect kept; 3D: the picture) */
   width?: number;
   height?: number;
-  /** point mark radius in cm (default 0.03) */
+  /** point mark radius in cm (default 0.03; 3D: at the scene's centre, perspective-scaled elsewhere) */
   markRadius?: number;
+  /** 3D only: field of view in degrees (default 60, in (0, 179]) and viewing direction (world, default [0, 0, -1];
+   *  world +z stays up); the camera is placed so the scene just fits. Without it, LaTeXTikz3D's default view. */
+  camera?: { fov?: number; direction?: ArrayLike<number> };
 }
+export interface LatexTableOptions {
+  /** heading row */
+  heading?: Array<string | number>;
+  /** \caption text (none if empty) */
+  caption?: string;
+  /** escape every cell and the caption as plain text (default true); false: cells are LaTeX, written as given */
+  escape?: boolean;
+  /** tabular column specification (rtl::LaTeXTable::setColumnStyle, e.g. "l|r"); default one "c" per column */
+  columns?: string;
+}
+/** SVG written by the C++ library (rtl/io/ScanDrawing.h through rtl::writeSvg: the same drawing as toTikz's): an XML
+ *  document whose width/height and viewBox are in cm, y axis up, points as <use> of one mark per cluster colour. */
 export interface SvgOptions {
-  /** pixels (default 800 x 800; the data range is fitted inside, aspect kept, y axis up) */
+  /** CSS pixels, 96 per inch (default 800 x 800): the data range is fitted inside with one scale (aspect kept), the
+   *  document adds a small margin (border and marks) */
   width?: number;
   height?: number;
-  /** point radius in pixels (default 2) */
+  /** point radius in CSS pixels (default 2) */
   pointRadius?: number;
 }
 
@@ -535,7 +576,16 @@ export interface RTL {
   vectorize<M extends VectorizeMethod>(points: PointArray, options: VectorizeOptions & { method: M; trace: true }):
     VectorizeResult & { trace: VectorizeEventByMethod[M][] };
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
-  toTikz(drawing: Drawing, options?: TikzOptions): string;
+  toTikz(drawing: Drawing | Drawing3D, options?: TikzOptions): string;
+  /** a LaTeX table (rtl::LaTeXTable: table/center/tabular, cells joined by " & "); rows are arrays of cells
+   *  (numbers written with String()), a null row is a \hline */
+  toLatexTable(rows: ReadonlyArray<ReadonlyArray<string | number> | null>, options?: LatexTableOptions): string;
+  /** optimal assignment (Munkres / Hungarian, rtl::solveAssignment) of rows to distinct columns: min(rows, cols)
+   *  pairs with the least (maximize: greatest) total cost. costs: row-major rows*cols numbers (rows/cols options;
+   *  a square matrix needs neither) or an array of equal-length rows. columns[i]: the column of row i, -1 for rows
+   *  left out (rows > cols); total: the sum of the assigned costs. */
+  assign(costs: PointArray | ReadonlyArray<PointArray>, options?: AssignOptions): AssignResult;
+  KalmanFilter: new (options: KalmanFilterOptions) => KalmanFilter;
   /** Drop-in for simplify-js's simplify(points, tolerance, highQuality): keeps exactly the points simplify-js
    *  keeps (its radial-distance pre-pass unless highQuality, then Douglas-Peucker on the squared distance to the
    *  chord segment), computed in C++ (rtl/vect/SimplifyCompatible.h). Objects form: returns a new array of the
@@ -551,12 +601,6 @@ export interface RTL {
    *  back on the next call */
   releaseBuffers(): void;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
-  /** optimal assignment (Munkres / Hungarian, rtl::solveAssignment) of rows to distinct columns: min(rows, cols)
-   *  pairs with the least (maximize: greatest) total cost. costs: row-major rows*cols numbers (rows/cols options;
-   *  a square matrix needs neither) or an array of equal-length rows. columns[i]: the column of row i, -1 for rows
-   *  left out (rows > cols); total: the sum of the assigned costs. */
-  assign(costs: PointArray | ReadonlyArray<PointArray>, options?: AssignOptions): AssignResult;
-  KalmanFilter: new (options: KalmanFilterOptions) => KalmanFilter;
   /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0, not
    *  finite, or >= maxRange: the log's own no-return value unless given) are NaN points. RangeError starting
    *  "readCarmenLog: line N:" for a malformed line, a non-finite pose or timestamp. */

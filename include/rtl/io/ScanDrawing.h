@@ -40,7 +40,7 @@ namespace rtl
     //! Draws n points xy (x, y interleaved; a point with a NaN coordinate is a gap and is not drawn), coloured by
     //! labels (nullptr: all unlabelled; -1 unlabelled, k >= 0 cluster k), then n_segments segments (x1, y1, x2, y2)
     //! in black and, if non-empty, the title (plain text, escaped by the drawing) centred above the data.
-    //! Unlabelled points come first (beneath), then the clusters in ascending order, each as one plot of dot marks.
+    //! Unlabelled points come first (beneath), then the clusters in ascending order, as unrotated dot marks.
     //! Drawing: LaTeXTikz2D or any class with its setSize/setScaleX/setScaleY/setMarkRadius/saveColor/addPlot/
     //! addEdge/addText calls. Preconditions (std::invalid_argument otherwise): xy finite or NaN (no infinities),
     //! labels >= -1, segment coordinates finite, options width/height > 0 and finite, mark_radius >= 0.
@@ -111,7 +111,11 @@ namespace rtl
         for (const auto &g : groups)
         {
             const std::string c = d.saveColor(std::string("{HTML}{") + scanColor(g.first) + "}");
-            d.addPlot(g.second, "", "draw=" + c + ",fill=" + c + ",line width=0.1pt", Drawing::latex_mark_dot);
+            const std::string style = "draw=" + c + ",fill=" + c + ",line width=0.1pt";
+            // One plot per point: a plot turns each mark along its neighbours (atan2, whose last digit differs
+            // between C libraries); dots need no direction, and so every platform writes the same bytes.
+            for (const auto &p : g.second)
+                d.addPlot(std::vector<Vector2f>{p}, "", style, Drawing::latex_mark_dot);
         }
         for (const auto &l : lines)
             d.addEdge(l, "draw=black,line width=0.6pt,line cap=round");

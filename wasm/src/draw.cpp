@@ -1,0 +1,177 @@
+// The package's drawings, written by the C++ library so that its output is the library's byte for byte:
+//   toTikz / toSvg (2D): rtl/io/ScanDrawing.h's scan picture (points by cluster, segments, title) drawn once into an
+//     rtl::Drawing2D and written by the TikZ or the SVG back-end;
+//   toTikz (dim 3): ScanDrawing.h's scene (points, segments, planes, polygons) rendered by rtl::LaTeXTikz3D;
+//   toLatexTable: rows of text cells through rtl::LaTeXTable.
+// One translation unit, because of the shim below.
+#include "adapter.h"
+
+#include <charconv>
+#include <cstdio>
+
+// Emscripten 3.1.6's libc++ has no floating-point std::to_chars, which rtl/io/LaTeXUtility.h's number output calls
+// as to_chars(first, last, double, chars_format::general, precision). Until that header has a portable path (asked
+// of io), this file supplies that one overload with the standard's definition: printf's %.<precision>g in the C
+// locale (musl's printf rounds exactly, so the text equals libstdc++'s to_chars; checked by tests/js/draw.test.mjs
+// against the native build). It must precede the io headers; no other file of the module includes them.
+#if defined(__EMSCRIPTEN__) && !defined(__cpp_lib_to_chars)
+namespace std {
+inline to_chars_result to_chars(char* first, char* last, double value, chars_format fmt, int precision) {
+  if (fmt != chars_format::general) return {last, errc::value_too_large};  // only what LaTeXUtility.h uses
+  const int n = std::snprintf(first, static_cast<std::size_t>(last - first), "%.*g", precision, value);
+  if (n < 0 || n >= last - first) return {last, errc::value_too_large};
+  return {first + n, errc()};
+}
+}  // namespace std
+#endif
+
+#include <rtl/io/Drawing2D.h>
+#include <rtl/io/LaTeXTable.h>
+#include <rtl/io/LaTeXTikz3D.h>
+#include <rtl/io/LaTeXUtility.h>
+#include <rtl/io/ScanDrawing.h>
+#include <rtl/io/Svg2D.h>
+#include <rtl/io/Tikz2DWriter.h>
+
+#include <sstream>
+
+namespace rtl_wasm {
+namespace {
+
+
+// What to write: 0 TikZ document, 1 bare tikzpicture, 2 SVG.
+val drawScan2D(std::uintptr_t xy, std::size_t n_xy, std::uintptr_t labels, std::size_t n_labels, std::uintptr_t segs,
+               std::size_t n_segs, std::string title, double width, double height, double markRadius, int format) {
+  return guarded([&] {
+    if (n_xy % 2 != 0) throw std::invalid_argument("drawing.points is not x,y interleaved");
+    if (n_segs % 4 != 0) throw std::invalid_argument("drawing.segments is not x1,y1,x2,y2 per segment");
+    const std::size_t n = n_xy / 2;
+    if (n_labels != 0 && n_labels != n) throw std::invalid_argument("one label per point expected");
+    // Labels arrive as doubles (checked by the JS layer: integers >= -1); the drawing takes ints.
+    std::vector<int> lab(n_labels);
+    for (std::size_t i = 0; i < n_labels; ++i) {
+      const double v = doubles(labels)[i];
+      if (!(v >= -1 && v <= 2147483647.0) || v != std::floor(v))
+        throw std::invalid_argument("drawing.labels[" + str(i) + "] must be an integer >= -1");
+      lab[i] = static_cast<int>(v);
+    }
+    rtl::ScanDrawingOptions o;
+    o.width = static_cast<float>(width);
+    o.height = static_cast<float>(height);
+    o.mark_radius = static_cast<float>(markRadius);
+    rtl::Drawing2D d;
+    rtl::drawScan(d, doubles(xy), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 4, title, o);
+    std::ostringstream os;
+    if (format == 2)
+      rtl::writeSvg(d, os);
+    else if (format == 1)
+      rtl::writeTikzPicture(d, os);
+    else
+      rtl::writeTikz(d, os);
+    return val(os.str());
+  }, "drawScan");
+}
+
+
+
+// Vertex counts arrive as doubles (checked by the JS layer: integers >= 3 summing to the vertex count).
+std::vector<std::size_t> counts(const double* p, std::size_t n, std::size_t vertices, const char* what) {
+  std::vector<std::size_t> out(n);
+  std::size_t sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(p[i] >= 0 && p[i] <= 4294967295.0) || p[i] != std::floor(p[i]))
+      throw std::invalid_argument(std::string("drawing.") + what + ".counts[" + str(i) + "] must be a non-negative integer");
+    out[i] = static_cast<std::size_t>(p[i]);
+    sum += out[i];
+  }
+  if (sum != vertices)
+    throw std::invalid_argument(std::string("drawing.") + what + ": the counts add up to " + str(sum) + " vertices, the vertices hold " +
+                                str(vertices));
+  return out;
+}
+
+val drawTikz3D(std::uintptr_t xyz, std::size_t n_xyz, std::uintptr_t labels, std::size_t n_labels, std::uintptr_t segs,
+               std::size_t n_segs, std::uintptr_t planes, std::size_t n_planes, std::uintptr_t plane_counts,
+               std::size_t n_plane_counts, std::uintptr_t polys, std::size_t n_polys, std::uintptr_t poly_counts,
+               std::size_t n_poly_counts, double fov, double dx, double dy, double dz, double width, double height,
+               double markRadius, bool standalone) {
+  return guarded([&] {
+    if (n_xyz % 3 != 0 || n_segs % 6 != 0 || n_planes % 3 != 0 || n_polys % 3 != 0)
+      throw std::invalid_argument("toTikz: 3D arrays must hold whole points (3 numbers) / segments (6 numbers)");
+    const std::size_t n = n_xyz / 3;
+    if (n_labels != 0 && n_labels != n) throw std::invalid_argument("toTikz: one label per point expected");
+    std::vector<int> lab(n_labels);
+    for (std::size_t i = 0; i < n_labels; ++i) {
+      const double v = doubles(labels)[i];
+      if (!(v >= -1 && v <= 2147483647.0) || v != std::floor(v))
+        throw std::invalid_argument("drawing.labels[" + str(i) + "] must be an integer >= -1");
+      lab[i] = static_cast<int>(v);
+    }
+    const auto pc = counts(doubles(plane_counts), n_plane_counts, n_planes / 3, "planes");
+    const auto qc = counts(doubles(poly_counts), n_poly_counts, n_polys / 3, "polygons");
+    rtl::ScanDrawingOptions o;
+    o.width = static_cast<float>(width);
+    o.height = static_cast<float>(height);
+    o.mark_radius = static_cast<float>(markRadius);
+    rtl::LaTeXTikz3D d;
+    if (!std::isnan(fov))
+      d.setView(static_cast<float>(fov),
+                rtl::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz)));
+    rtl::drawScene3D(d, doubles(xyz), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 6, doubles(planes),
+                     pc.data(), pc.size(), doubles(polys), qc.data(), qc.size(), o);
+    std::ostringstream os;
+    if (standalone)
+      d.writeTEX(os);
+    else
+      d.writeTikz(os);
+    return val(os.str());
+  }, "drawScene3D");
+}
+
+
+
+// A JS array of strings (the JS layer checked and converted every cell).
+std::vector<std::string> strings(const val& a) {
+  const auto n = a["length"].as<unsigned>();
+  std::vector<std::string> out;
+  out.reserve(n);
+  for (unsigned i = 0; i < n; ++i) out.push_back(a[i].as<std::string>());
+  return out;
+}
+
+val latexTable(val rows, val heading, std::string caption, std::string columns, bool escape) {
+  return guarded([&] {
+    rtl::LaTeXTable t;
+    if (!columns.empty()) t.setColumnStyle(columns);
+    const auto h = strings(heading);
+    if (escape)
+      t.setHeadingEscaped(h);
+    else
+      t.setHeading(h);
+    const auto n = rows["length"].as<unsigned>();
+    for (unsigned i = 0; i < n; ++i) {
+      const val r = rows[i];
+      if (r.isNull()) {
+        t.addHLine();
+        continue;
+      }
+      const auto cells = strings(r);
+      if (escape)
+        t.addRowEscaped(cells);
+      else
+        t.addRow(cells);
+    }
+    std::ostringstream os;
+    t.writeTable(os, escape ? rtl::LaTeX::escapeLaTeXCharacters(caption) : caption);
+    return val(os.str());
+  });
+}
+
+}  // namespace
+}  // namespace rtl_wasm
+
+EMSCRIPTEN_BINDINGS(rtl_draw) {
+  emscripten::function("drawScan2D", &rtl_wasm::drawScan2D);
+  emscripten::function("drawTikz3D", &rtl_wasm::drawTikz3D);
+  emscripten::function("latexTable", &rtl_wasm::latexTable);
+}
