@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -68,6 +69,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     require(t.size() < 8'000'000);
     for (const char *w : {"nan", "inf"})
         for (size_t p = t.find(w); p != std::string::npos; p = t.find(w, p + 1))
-            require(p > 0 && std::isalpha(static_cast<unsigned char>(t[p - 1])));   // only inside words
+            if (!(p > 0 && std::isalpha(static_cast<unsigned char>(t[p - 1]))))   // only inside words
+            {
+                std::fprintf(stderr, "'%s' in the output: ...%s...\n", w, t.substr(p < 80 ? 0 : p - 80, 160).c_str());
+                require(false);
+            }
     return 0;
 }

@@ -680,6 +680,8 @@ TEST(LaTeXTable, WritesTheDocumentedLayout)
     writtenTables().emplace_back(u, "");
     EXPECT_EQ(os2.str(), "\\begin{table}\n\\begin{center}\n\\begin{tabular}{ccc}\n\t1 & 2 & 3\\\\\n"
                          "\\end{tabular}\n\\end{center}\n\\end{table}\n\n");
+    EXPECT_EQ(u.tableString(""), os2.str());
+    EXPECT_EQ(t.tableString("segments \\& $\\sigma$"), os.str());
 }
 
 TEST(LaTeXTable, EscapedVariantsTakePlainText)

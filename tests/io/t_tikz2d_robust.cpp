@@ -250,3 +250,24 @@ TEST(Tikz2DRobust, ExtremeDocumentsCompileWithPdflatex)
     EXPECT_NE(log.find("Output written on robust.pdf (" + std::to_string(pictures.size()) + " pages"),
               std::string::npos);
 }
+
+TEST(Tikz3DRobust, AxisLabelsStayFiniteAndTheirLoopEnds)
+{
+    // fuzz_tikz3d finding: an infinite tick gave the label "$-nan$"; a huge axis coordinate must not stall the loop.
+    for (float tick : {std::numeric_limits<float>::infinity(), 1.0f})
+    {
+        for (float at : {0.0f, 7.7e31f, 3e38f})
+        {
+            rtl::LaTeXTikz3D d;
+            d.addLine(rtl::LineSegment3f(rtl::Vector3f(at, 0, 0), rtl::Vector3f(at, 1, 1)), "draw=black");
+            d.addAxis("draw=black", "%g", rtl::LaTeXTikz3D::position_above, tick, rtl::Vector3f(at, 0, 0),
+                      rtl::Vector3f(at + 1.0f, 0, 0));
+            std::ostringstream os;
+            d.writeTEX(os);
+            EXPECT_EQ(os.str().find("nan"), std::string::npos) << tick << " " << at;
+            EXPECT_EQ(os.str().find("{$inf"), std::string::npos) << tick << " " << at;
+            EXPECT_EQ(os.str().find("{$-inf"), std::string::npos) << tick << " " << at;
+            EXPECT_LT(os.str().size(), 200000u);
+        }
+    }
+}

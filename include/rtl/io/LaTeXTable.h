@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,14 @@ namespace rtl
         void addRowEscaped(const std::vector<std::string> &row_cells) { addRow(escapeCells(row_cells)); }
 
         void addHLine() { rows.push_back({true, {}}); }
+
+        //! The text writeTable writes, as a string (e.g. for a binding that returns strings).
+        [[nodiscard]] std::string tableString(const std::string &desc) const
+        {
+            std::ostringstream os;
+            writeTable(os, desc);
+            return os.str();
+        }
 
         //! Writes table/center/tabular, the heading and rows (cells joined by " & ", each line starting with a tab and
         //! ending with "\\"), and `\caption{desc}` (desc as given) only if `desc` is non-empty, then a blank line.

@@ -32,7 +32,10 @@ namespace rtl
     //!   region) to the requested size, times the user scales (scaleX()/scaleY() report sx, sy). Unit vectors rather
     //!   than xscale/yscale, because TikZ multiplies a coordinate by the unit vector before any transformation: with
     //!   xscale, a coordinate above ~575 (x 1 cm) overflows TeX's 16384 pt, with x=<sx>cm only the paper position
-    //!   counts. Remaining TeX limit: sx, sy <= ~575 cm per unit, i.e. a 10 cm axis needs a data range >= ~0.02.
+    //!   counts. Where even that is out of TeX's range (a unit vector outside 1e-4..500 cm, e.g. a data range of 1e-3,
+    //!   or coordinates >= 16000 or > 500 cm from the origin on paper, e.g. 1e6), the picture is written on paper
+    //!   instead: x=1cm, y=1cm, every coordinate (v - min) * s in cm, \MinX... in cm, \MarkGlobalScaleX/Y = 1
+    //!   (latex_detail::TikzMap); such documents did not compile before.
     //! - The picture always contains the data frame (\MinX,\MinY)-(\MaxX,\MaxY) as an invisible path.
     //! - Marks are `\newcommand{\MarkA}[3]{...}` (x, y, rotation in degrees) drawn in a scope shifted to (x, y) that
     //!   resets the unit vectors to 1 cm, so marks are \MarkRadius cm in size whatever the axis scaling.

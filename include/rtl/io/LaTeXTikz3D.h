@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <list>
 #include <map>
 #include <memory>
@@ -741,18 +742,25 @@ namespace rtl
                 if (!cropLine(a.beg, dir, alo, ahi, t0, t1))
                     continue;
                 addLineItem(items, R * (a.beg + dir * t0) + t, R * (a.beg + dir * t1) + t, a.style, style_index, planes);
-                if (a.format.empty() || !(a.tick > 0))
+                if (a.format.empty() || !(a.tick > 0) || !std::isfinite(a.tick))
                     continue;
                 double origin = a.beg.dot(dir);   // coordinate value at a.beg
                 double v0 = std::ceil((origin + t0) / a.tick - 1e-9), v1 = std::floor((origin + t1) / a.tick + 1e-9);
-                if (!(v1 - v0 < 1000))
+                if (!std::isfinite(v0) || !std::isfinite(v1) || !(v1 - v0 < 1000))
                     continue;
-                for (double v = v0; v <= v1; v += 1.0)
+                // Counted with an integer: `v += 1.0` stands still once |v| >= 2^53 (issue 15.2, in 3D too).
+                double last_value = -std::numeric_limits<double>::infinity();
+                size_t count = v1 < v0 ? 0 : static_cast<size_t>(v1 - v0) + 1;
+                for (size_t k = 0; k < count; ++k)
                 {
-                    V3 p = R * (a.beg + dir * (v * a.tick - origin)) + t;
-                    if (p.z() >= -near)
+                    double value = (v0 + static_cast<double>(k)) * a.tick;
+                    if (!std::isfinite(value) || !(value > last_value))
                         continue;
-                    std::string label = latex_detail::numberToLatexString(v * a.tick, a.format);
+                    last_value = value;
+                    V3 p = R * (a.beg + dir * (value - origin)) + t;
+                    if (p.z() >= -near || !p.allFinite())
+                        continue;
+                    std::string label = latex_detail::numberToLatexString(value, a.format);
                     if (!label.empty())
                         labels += "\\node[anchor=" + latex_detail::tikzAnchor(a.position) + ", inner sep=1pt] at (" +
                                   P(p) + ") {" + label + "};\n";
