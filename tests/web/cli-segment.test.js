@@ -112,12 +112,15 @@ describe('rtl CLI: segmentation', { timeout: 120000 }, () => {
     assert.ok(j.segmentation.clusters.length >= 1);
   });
 
-  test('SVG of a segmented scan: one coloured group per cluster', () => {
+  test('SVG of a segmented scan: one colour per cluster (the palette of 10 repeats), one dot per return', () => {
     const r = rtl(['tests/data/intel.log', '--scan', '2', '-f', 'svg']);
     assert.equal(r.code, 0, r.err);
-    const n = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2']).out).segmentation.clusters.length;
-    assert.equal([...r.out.matchAll(/<g class="cluster" data-cluster="\d+"/g)].length, n);
-    assert.match(r.out, /<title>intel\.log scan 2; CAR step 2, bounds 0\.1-0\.5 m; \d+\.\d x \d+\.\d m<\/title>/);
+    const j = JSON.parse(rtl(['tests/data/intel.log', '--scan', '2']).out), n = j.segmentation.clusters.length;
+    assert.ok(n > 1);
+    // the C++ writer defines one mark per colour and draws each point as a <use> of its cluster's mark
+    assert.equal([...r.out.matchAll(/<g id="Mark[A-Z]+"><circle /g)].length, Math.min(n, 10));
+    assert.equal((r.out.match(/<use href="#Mark[A-Z]+"/g) ?? []).length, j.returns);
+    assert.match(r.out, />intel\.log scan 2; CAR step 2, bounds 0\.1-0\.5 m; \d+\.\d x \d+\.\d m<\/text>/);
     const ia = rtl(['tests/data/intel.log', '--scan', '2', '--segmenter', 'ia', '--step', '4', '--upper', '0.8', '-f', 'tikz']);
     assert.equal(ia.code, 0, ia.err);
     assert.match(ia.out, /intel\.log scan 2; IA step 4, bounds 0\.1-0\.8 m, scaling 0\.05;/);

@@ -40,7 +40,7 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
       copyFileSync(join(DATA, 'intel.log'), join(app, 'intel.log'));
       const r = spawnSync('npx', ['--offline', 'rtl', 'intel.log', '--scan', '5', '-m', 'dp', '-f', 'svg'], { cwd: app, encoding: 'utf8', timeout: 60000 });
       assert.equal(r.status, 0, r.stderr);
-      assert.match(r.stdout, /^<svg[\s\S]*<title>intel\.log scan 5; CAR step 2, bounds 0\.1-0\.5 m; DP epsilon 0\.09 m; /);
+      assert.match(r.stdout, /^<\?xml[^>]*>\n<svg[\s\S]*>intel\.log scan 5; CAR step 2, bounds 0\.1-0\.5 m; DP epsilon 0\.09 m; /);
       assert.equal(r.stdout, rtl(['tests/data/intel.log', '--scan', '5', '-m', 'dp', '-f', 'svg']).out, 'the same figure as from the checkout');
     } finally {
       rmSync(dir, { recursive: true, force: true });
@@ -135,11 +135,11 @@ describe('rtl CLI (bin/rtl.js)', { timeout: 120000 }, () => {
     let r = rtl(['tests/data/csail.log', '--scan', '3', '--no-segment', '--fit', '-f', 'svg']);
     assert.equal(r.code, 0, r.err);
     const scan = loadLog('csail')[3];
-    assert.match(r.out, /^<svg[\s>]/);
+    assert.match(r.out, /^<\?xml[^>]*>\n<svg[\s>]/);
     assert.match(r.out, /<\/svg>\s*$/);
     // The title names the scan and what was done, not the file's path.
-    assert.match(r.out, /<title>csail\.log scan 3; not segmented; TLS line fit, min 3 points; \d+\.\d x \d+\.\d m<\/title>/);
-    assert.equal(r.out.match(/<circle /g).length, returnsOf(scan).length, 'one dot per return');
+    assert.match(r.out, />csail\.log scan 3; not segmented; TLS line fit, min 3 points; \d+\.\d x \d+\.\d m<\/text>/);
+    assert.equal((r.out.match(/<use href="#Mark[A-Z]+"/g) ?? []).length, returnsOf(scan).length, 'one dot per return');
     assert.equal(r.out.match(/<line /g).length, 1, 'the fitted line');
     r = rtl(['tests/data/csail.log', '--scan', '3', '--no-segment', '--fit', '-f', 'tikz']);
     assert.equal(r.code, 0, r.err);
