@@ -296,7 +296,8 @@ namespace
                     // Compared as vertex sequences: with duplicate points the indices matched back are ambiguous.
                     bool same = keys.size() == model_lo.size();
                     for (size_t q = 0; same && q < keys.size(); ++q) same = pts[keys[q]] == pts[model_lo[q]];
-                    if (model_lo == model_hi && !same)
+                    // At epsilon within rounding of 0 the decisions are the library's rounding: no model to compare.
+                    if (e > 2 * margin && model_lo == model_hi && !same)
                     {
                         size_t q = 0;
                         while (q < keys.size() && q < model_lo.size() && pts[keys[q]] == pts[model_lo[q]]) ++q;

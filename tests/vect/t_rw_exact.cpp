@@ -126,3 +126,13 @@ TEST(ReumannWitkamExact, MatchesLongDoubleReferenceAtEveryScale)
         }
     EXPECT_GT(compared, 120);
 }
+
+// A chain near 1e-30 in float: squared distances underflow unless rescaled (found by fuzz_vect_simplify).
+TEST(ReumannWitkamExact, TinyChainRescaled)
+{
+    using V = rtl::Vector2f;
+    const std::vector<V> pts{V(0, 0), V(1e-30f, 0), V(2e-30f, 1e-32f), V(3e-30f, 1e-32f), V(4e-30f, 1e-32f)};
+    rtl::VectorizerReumannWitkam2f rw(1e-33f);
+    // 2 leaves the x axis strip (1e-32 > 1e-33); 3 is 1e-32 below the strip 1 -> 2; 4 stays on y = 1e-32.
+    EXPECT_EQ(keptBy(rw, pts), (std::vector<size_t>{0, 1, 2, 4}));
+}

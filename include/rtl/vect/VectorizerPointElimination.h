@@ -514,13 +514,18 @@ namespace rtl
                     tame &= c <= lim;
                     if (c > max_abs && std::isfinite(c)) max_abs = c;
                 }
-            // Rescaled so that the largest coordinate is just within `lim`: squares cannot overflow, and epsilon
-            // shrinks as little as possible (its square underflows only where the chain's own rounding is far
-            // coarser than epsilon).
-            if (tame)
-                scan<false>(input, Element(1));
+            // Outside the tame range, and where squares could underflow (a tiny chain, or eps^2 below the normal
+            // range), distances are measured in double on coordinates rescaled so that the largest is about
+            // 2^500 (below 2^1000 for tiny double chains): nothing overflows, and tiny distances keep their digits.
+            const Element low = std::sqrt(std::numeric_limits<Element>::min()) * Element(1048576);
+            if (tame && max_abs >= low && eps2 >= std::numeric_limits<Element>::min())
+                scan<false>(input, 1);
             else
-                scan<true>(input, static_cast<Element>(std::ldexp(vect_detail::unitScale(static_cast<double>(max_abs)), std::ilogb(lim))));
+            {
+                int e = 0;
+                std::frexp(max_abs > 0 ? static_cast<double>(max_abs) : 1.0, &e);
+                scan<true>(input, std::ldexp(1.0, std::min(500 - e, 1000)));
+            }
             if (keys.back() != n - 1)
             {
                 keys.push_back(n - 1);
@@ -577,15 +582,28 @@ namespace rtl
         //! The scan after the first key; `rescaled`: distances on coordinates times s (a power of two), compared
         //! with (epsilon s)^2.
         template<bool rescaled>
-        void scan(const std::vector<VectorType> &input, Element s)
+        void scan(const std::vector<VectorType> &input, double s)
         {
             const size_t n = input.size();
-            const Element e2 = rescaled ? (eps_ * s) * (eps_ * s) : eps2;
+            const double es = static_cast<double>(eps_) * s, e2 = es * es;
             const auto far = [&](const VectorType &p, const VectorType &a, const VectorType &u) {
                 if constexpr (rescaled)
-                    return distance2(p * s, a * s, u) > e2;
+                {
+                    double v[dimensions], vu = 0, r2 = 0;
+                    for (int q = 0; q < dimensions; ++q)
+                    {
+                        v[q] = static_cast<double>(p[q]) * s - static_cast<double>(a[q]) * s;
+                        vu += v[q] * static_cast<double>(u[q]);
+                    }
+                    for (int q = 0; q < dimensions; ++q)
+                    {
+                        const double r = v[q] - static_cast<double>(u[q]) * vu;
+                        r2 += r * r;
+                    }
+                    return r2 > e2;
+                }
                 else
-                    return distance2(p, a, u) > e2;
+                    return distance2(p, a, u) > eps2;
             };
             size_t k = 0;
             size_t j = 1;
@@ -624,7 +642,10 @@ namespace rtl
                             }
                         k = i - 1;
                         keys.push_back(k);
-                        dir = direction(input[k], input[i]);
+                        // Equal points leave the strip only by rounding (epsilon about 0): keep the direction
+                        // rather than take the NaN of a zero difference.
+                        if (!(input[i] == input[k]))
+                            dir = direction(input[k], input[i]);
                     }
                     ++i;
                 }
