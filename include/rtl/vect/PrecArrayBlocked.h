@@ -203,11 +203,13 @@ namespace rtl
         static void step(ComputeType &hi, ComputeType &lo, ComputeType v, ComputeType *row, int k)
         {
             if constexpr (exact)
+            {
                 twoSumAdd(hi, lo, v);
+                row[cols + k] = lo;
+            }
             else
                 hi += v;
             row[k] = hi;
-            row[cols + k] = lo;
         }
 
         static void add(ComputeType *s, const VectorND<dimensions, ElementType> &p)
