@@ -15,42 +15,58 @@ namespace rtl_ops {
 // tuned for.
 constexpr std::size_t kKeptPoints = std::size_t(1) << 21;
 
-// The reset functions of the kept types, in a fixed table: registering a type never allocates, so releaseKept()
-// brings the heap back to where it was before the first call.
-struct KeptResets {
+// The release functions of the kept types, in a fixed table: registering a type never allocates.
+struct KeptReleases {
   static constexpr std::size_t capacity = 64;
-  void (*reset[capacity])() = {};
+  void (*release[capacity])() = {};
   std::size_t count = 0;
 };
-inline KeptResets& keptResets() {
-  static thread_local KeptResets r;
+inline KeptReleases& keptReleases() {
+  static KeptReleases r;
   return r;
 }
 
-// The kept object of type T (default constructed on first use; one per thread: the wasm module has one).
+// Storage of the kept T: built on first use, destroyed by releaseKept() and built again on the next use, so that
+// after a release the heap is exactly as before the first call (no default-constructed leftovers).
+template <class T>
+struct KeptSlot {
+  alignas(T) unsigned char storage[sizeof(T)];
+  bool alive = false;
+  T* get() { return std::launder(reinterpret_cast<T*>(storage)); }
+};
+template <class T>
+KeptSlot<T>& keptSlot() {
+  static KeptSlot<T> slot;  // trivially destructible: the object inside lives until releaseKept() or exit
+  return slot;
+}
+
+// The kept object of type T. Not thread-safe: one caller at a time (the wasm module has one thread).
 template <class T>
 T& kept() {
-  static thread_local T t;
-  static thread_local const bool registered = [] {
-    auto& r = keptResets();
-    if (r.count == KeptResets::capacity) throw std::logic_error("kept.h: more kept types than KeptResets::capacity");
-    // Destroy and rebuild rather than assign: types with a declared destructor have no move assignment, and a
-    // copy assignment from a fresh object would keep the buffers' capacity.
-    r.reset[r.count++] = [] {
-      T& old = kept<T>();
-      old.~T();
-      new (&old) T();
+  static const bool registered = [] {
+    auto& r = keptReleases();
+    if (r.count == KeptReleases::capacity) throw std::logic_error("kept.h: more kept types than KeptReleases::capacity");
+    r.release[r.count++] = [] {
+      auto& s = keptSlot<T>();
+      if (!s.alive) return;
+      s.get()->~T();
+      s.alive = false;
     };
     return true;
   }();
   (void)registered;
-  return t;
+  auto& s = keptSlot<T>();
+  if (!s.alive) {
+    new (s.storage) T();
+    s.alive = true;
+  }
+  return *s.get();
 }
 
-// Frees every kept object's buffers (each is replaced by a fresh one).
+// Frees every kept object and its buffers (they are built again on their next use).
 inline void releaseKept() {
-  const auto& r = keptResets();
-  for (std::size_t k = 0; k < r.count; ++k) r.reset[k]();
+  const auto& r = keptReleases();
+  for (std::size_t k = 0; k < r.count; ++k) r.release[k]();
 }
 
 // Releases the kept buffers when it goes out of scope if the call's input had more than kKeptPoints points.
