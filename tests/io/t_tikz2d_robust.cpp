@@ -271,3 +271,20 @@ TEST(Tikz3DRobust, AxisLabelsStayFiniteAndTheirLoopEnds)
         }
     }
 }
+
+TEST(Tikz2DRobust, LogAxisLabelsBeyondDoubleAreLeftOut)
+{
+    // fuzz_tikz2d finding: the overrun of a log axis reached 10^438, whose label was "$inf$" (and 10^-400 gave "$0$").
+    rtl::Svg2D d(rtl::Svg2D::axis_type_linear, rtl::Svg2D::axis_type_log10);
+    d.setGridAxisOverrun(rtl::Svg2D::overrun_absolute, 400.0f);
+    d.addPlot(std::vector<Vector2f>{Vector2f(0, 1), Vector2f(1, 1e38f)}, "draw=black");
+    d.addAxisY("draw=black", "%g", rtl::Svg2D::position_left, 100.0f);
+    std::ostringstream t;
+    rtl::writeTikz(d, t);
+    EXPECT_EQ(t.str().find("inf"), std::string::npos);
+    EXPECT_NE(t.str().find("{$10^{300}$}"), std::string::npos);
+    EXPECT_EQ(count(t.str(), "node[anchor=east]"), 7u);   // -300 ... 300: 10^400 is inf and 10^-400 is 0 in double
+    std::string s = svg(d);
+    EXPECT_EQ(s.find(">inf<"), std::string::npos);
+    EXPECT_TRUE(xml_check::check(s).ok);
+}

@@ -563,6 +563,16 @@ namespace rtl
             return node;
         }
 
+        //! Puts an item that lies on `side` of node's plane into that subtree (or the node's side list).
+        static void place(Node *node, const Item &it, int side, double eps)
+        {
+            std::unique_ptr<Node> &child = side > 0 ? node->front : node->back;
+            if (!child)
+                (side > 0 ? node->front_items : node->back_items).push_back(it);
+            else
+                insert(child.get(), it, eps);
+        }
+
         static void insert(Node *node, const Item &it, double eps)
         {
             while (true)
@@ -582,8 +592,11 @@ namespace rtl
                     Item fa = it, fb = it;
                     fa.b = x;
                     fb.a = x;
-                    insert(node, fa, eps);   // each half now lies on one side
-                    insert(node, fb, eps);
+                    // Each half goes to its end's side without being tested against this plane again: with large
+                    // coordinates the rounded split point can miss the plane by more than eps, and re-testing
+                    // recursed without end (fuzz_tikz3d: stack overflow).
+                    place(node, fa, sa > 0 ? 1 : -1, eps);
+                    place(node, fb, sb > 0 ? 1 : -1, eps);
                     return;
                 }
                 if (side == 0)

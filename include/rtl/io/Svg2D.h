@@ -329,8 +329,10 @@ namespace rtl
                         else
                             out += "<line x1=\"" + num(px - 0.05) + "\" y1=\"" + num(py) + "\" x2=\"" + num(px + 0.05) +
                                    "\" y2=\"" + num(py) + "\"" + ta + "/>\n";
-                        std::string label =
-                                ax.format.empty() ? "" : latex_detail::numberToLatexString(log ? std::pow(10.0, v) : v, ax.format);
+                        double value = log ? std::pow(10.0, v) : v;   // no label beyond double on log axes
+                        std::string label = ax.format.empty() || !std::isfinite(value) || (log && !(value > 0))
+                                                    ? ""
+                                                    : latex_detail::numberToLatexString(value, ax.format);
                         if (label.empty())
                             continue;
                         double lx = px, ly = py;

@@ -94,7 +94,9 @@ namespace rtl
                     else
                         out += "\\draw[" + a.style + "] (" + map.pt(a.crossing - tick_x, v) + ") -- (" +
                                map.pt(a.crossing + tick_x, v) + ")";
-                    std::string label = a.format.empty() ? "" : numberToLatexString(log ? std::pow(10.0, v) : v, a.format);
+                    // On log axes the overrun can reach decades beyond double (10^400): no label there.
+                    double value = log ? std::pow(10.0, v) : v;
+                    std::string label = a.format.empty() || !std::isfinite(value) || (log && !(value > 0)) ? "" : numberToLatexString(value, a.format);
                     if (!label.empty())
                     {
                         // The label touches the tick end on the side the position flags name.
