@@ -100,6 +100,33 @@ TEST(Svg2D, SizeViewBoxAndPositionsFollowTheFrame)
     EXPECT_NE(s.find("fill=\"#ff0000\""), std::string::npos);
 }
 
+// Regression: a title placed above the data (anchor=south at the top edge, as the package's scan pictures do) was cut
+// off at the top of the viewBox, and a one-line scan lost it entirely.
+TEST(Svg2D, TextBeyondTheDataGetsRoomInTheViewBox)
+{
+    rtl::Svg2D d;
+    d.setSize(10, 6);
+    d.setBorder(0);
+    d.setMarkRadius(0);
+    d.addLine(Vector2f(0, 0), Vector2f(4, 0), "draw=black");   // a flat picture: zero height
+    const std::string title = "scan 5 of intel.log, CAR step 2";
+    d.addText(title, "anchor=south", Vector2f(2, 0));
+    d.addText("right edge label", "anchor=west", Vector2f(4, 0));
+    std::string s = svg(d);
+    ASSERT_TRUE(xml_check::check(s).ok) << xml_check::check(s).error;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(s, m, std::regex("viewBox=\"0 0 ([-0-9.e]+) ([-0-9.e]+)\"")));
+    const double w = std::stod(m[1]), h = std::stod(m[2]);
+    ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(<g transform="translate\(([-0-9.e]+),([-0-9.e]+)\))")));
+    const double tx = std::stod(m[1]), ty = std::stod(m[2]);
+    // The title's baseline sits on the data's top edge (y = 0 inside the group): a 10 pt line above it fits.
+    EXPECT_GE(ty, 1.25 * 0.3514 - 1e-4) << s;   // numbers are written with 6 digits
+    EXPECT_GE(h, 1.25 * 0.3514 - 1e-4);
+    // The label starts at the right end of the data (x = 10 cm) and its characters fit to the right of it.
+    EXPECT_GE(w - tx - 10.0, 0.6 * 0.3514 * 16 - 1e-4) << s;
+    EXPECT_NEAR(tx, 0.0, 1e-9);   // nothing reaches left: no padding there without a border
+}
+
 TEST(Svg2D, ClipRegionIsAClipPath)
 {
     rtl::Svg2D d;

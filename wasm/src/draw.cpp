@@ -3,27 +3,7 @@
 //     rtl::Drawing2D and written by the TikZ or the SVG back-end;
 //   toTikz (dim 3): ScanDrawing.h's scene (points, segments, planes, polygons) rendered by rtl::LaTeXTikz3D;
 //   toLatexTable: rows of text cells through rtl::LaTeXTable.
-// One translation unit, because of the shim below.
 #include "adapter.h"
-
-#include <charconv>
-#include <cstdio>
-
-// Emscripten 3.1.6's libc++ has no floating-point std::to_chars, which rtl/io/LaTeXUtility.h's number output calls
-// as to_chars(first, last, double, chars_format::general, precision). Until that header has a portable path (asked
-// of io), this file supplies that one overload with the standard's definition: printf's %.<precision>g in the C
-// locale (musl's printf rounds exactly, so the text equals libstdc++'s to_chars; checked by tests/js/draw.test.mjs
-// against the native build). It must precede the io headers; no other file of the module includes them.
-#if defined(__EMSCRIPTEN__) && !defined(__cpp_lib_to_chars)
-namespace std {
-inline to_chars_result to_chars(char* first, char* last, double value, chars_format fmt, int precision) {
-  if (fmt != chars_format::general) return {last, errc::value_too_large};  // only what LaTeXUtility.h uses
-  const int n = std::snprintf(first, static_cast<std::size_t>(last - first), "%.*g", precision, value);
-  if (n < 0 || n >= last - first) return {last, errc::value_too_large};
-  return {first + n, errc()};
-}
-}  // namespace std
-#endif
 
 #include <rtl/io/Drawing2D.h>
 #include <rtl/io/LaTeXTable.h>
@@ -37,7 +17,6 @@ inline to_chars_result to_chars(char* first, char* last, double value, chars_for
 
 namespace rtl_wasm {
 namespace {
-
 
 // What to write: 0 TikZ document, 1 bare tikzpicture, 2 SVG.
 val drawScan2D(std::uintptr_t xy, std::size_t n_xy, std::uintptr_t labels, std::size_t n_labels, std::uintptr_t segs,

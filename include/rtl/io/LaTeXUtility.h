@@ -186,8 +186,15 @@ namespace rtl::latex_detail
         if (std::abs(value) < 1e-30)
             value = 0.0;
         char buf[32];
-        auto res = std::to_chars(buf, buf + sizeof(buf), value, std::chars_format::general, 6);
-        char *end = res.ptr;
+#if defined(__cpp_lib_to_chars)
+        char *end = std::to_chars(buf, buf + sizeof(buf), value, std::chars_format::general, 6).ptr;
+#else
+        // Standard libraries without floating-point to_chars (libc++ before 14, e.g. Emscripten 3.1's): the
+        // standard defines chars_format::general with a precision as printf's %.*g in the C locale, which programs
+        // have unless they call setlocale; the package's tests compare this path's output with the native one.
+        const int n = std::snprintf(buf, sizeof(buf), "%.6g", value);
+        char *end = buf + (n > 0 && n < static_cast<int>(sizeof(buf)) ? n : 0);
+#endif
         // TikZ's parser reads "1e-05" fine, but not "1e+05": drop the plus sign.
         std::string_view sv(buf, static_cast<size_t>(end - buf));
         auto plus = sv.find('+');

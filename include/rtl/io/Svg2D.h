@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -58,8 +59,23 @@ namespace rtl
                     labels = labels || !a.format.empty();
                 if (labels)
                     margin += 1.6;
-                width = finiteOr((vx1 - vx0) * f.sx, 0) + 2 * margin;
-                height = finiteOr((vy1 - vy0) * f.sy, 0) + 2 * margin;
+                const double data_w = finiteOr((vx1 - vx0) * f.sx, 0), data_h = finiteOr((vy1 - vy0) * f.sy, 0);
+                // Text nodes (a title above the data, a label at an edge) reach beyond the data: each side gets the
+                // margin or, if more, room for the text boxes that cross it (estimated from the font size).
+                pad_left = pad_right = pad_top = pad_bottom = margin;
+                for (const auto &p : d.primitives())
+                {
+                    if (p.kind != Drawing2D::Kind::text || p.points.empty())
+                        continue;
+                    const auto [bx0, by0, bx1, by1] = textBox(p.text, style(p.style).anchor, X(p.points[0].first),
+                                                             Y(p.points[0].second));
+                    pad_left = std::max(pad_left, d.border() - bx0);
+                    pad_top = std::max(pad_top, d.border() - by0);
+                    pad_right = std::max(pad_right, bx1 - data_w + d.border());
+                    pad_bottom = std::max(pad_bottom, by1 - data_h + d.border());
+                }
+                width = data_w + pad_left + pad_right;
+                height = data_h + pad_top + pad_bottom;
             }
 
             void write(std::ostream &os)
@@ -84,10 +100,10 @@ namespace rtl
                 os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                    << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << num(width)
                    << "cm\" height=\"" << num(height) << "cm\" viewBox=\"0 0 " << num(width) << " " << num(height)
-                   << "\" font-family=\"serif\" font-size=\"0.3514\">\n";
+                   << "\" font-family=\"serif\" font-size=\"" << num(font_cm) << "\">\n";
                 if (!defs.empty())
                     os << "<defs>\n" << defs << "</defs>\n";
-                os << "<g transform=\"translate(" << num(margin) << "," << num(margin) << ")\">\n"
+                os << "<g transform=\"translate(" << num(pad_left) << "," << num(pad_top) << ")\">\n"
                    << body << "</g>\n</svg>\n";
             }
 
@@ -251,6 +267,21 @@ namespace rtl
                 out += "<path d=\"" + path + " Z\"" + attributes(s, true) + "/>\n";
             }
 
+            //! The box (x0, y0, x1, y1) a text node covers on paper: the font is 0.3514 cm (10 pt); a character is
+            //! taken as 0.6 of it wide (serif fonts average less), a line as 1.25 of it high.
+            static std::array<double, 4> textBox(const std::string &t, const std::string &anchor, double x, double y)
+            {
+                std::size_t chars = 0;
+                for (unsigned char c : t)
+                    chars += (c & 0xC0) != 0x80 ? 1 : 0;   // UTF-8: count code points, not bytes
+                const double w = 0.6 * font_cm * static_cast<double>(chars), h = 1.25 * font_cm;
+                const double left = anchor.find("west") != std::string::npos ? x
+                                    : anchor.find("east") != std::string::npos ? x - w : x - w / 2;
+                const double top = anchor.find("north") != std::string::npos ? y
+                                   : anchor.find("south") != std::string::npos ? y - h : y - h / 2;
+                return {left, top, left + w, top + h};
+            }
+
             //! A text node: the TikZ anchor names the side of the text that sits at the point.
             void text(const std::string &t, const SvgStyle &s, double x, double y, const std::string &extra,
                       std::string &out, const std::string &anchor_override = "")
@@ -369,7 +400,8 @@ namespace rtl
             std::map<std::string, SvgStyle> styles;
             std::map<std::string, std::string> arrows;
             std::string defs;
-            double x0, x1, y0, y1, left, top, margin, width, height;
+            static constexpr double font_cm = 0.3514;   // the document's font-size (10 pt)
+            double x0, x1, y0, y1, left, top, margin, width, height, pad_left, pad_right, pad_top, pad_bottom;
         };
     }
 
