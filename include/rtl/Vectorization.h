@@ -44,18 +44,35 @@ namespace rtl
 {
     namespace vect_detail
     {
+        //! Every coordinate within [-limit, limit] (false for NaN). An integer AND over all coordinates, without an
+        //! early exit, vectorises: this pass costs a fraction of a nanosecond per point instead of a branch per point.
         template<class V>
-        bool allFinite(const std::vector<V> &pts)
+        bool allWithin(const std::vector<V> &pts, double limit)
         {
-            // |v| <= max is false exactly for NaN and +-inf. An integer AND over all coordinates, without an early
-            // exit, vectorises: this pass costs a fraction of a nanosecond per point instead of a branch per point.
             typedef std::remove_cv_t<std::remove_reference_t<decltype(pts.front().data()(0))>> E;
             const E max = std::numeric_limits<E>::max();
+            const E lim = limit >= static_cast<double>(max) ? max : static_cast<E>(limit);
             int ok = 1;
             for (const auto &p : pts)
                 for (Eigen::Index k = 0; k < p.data().size(); ++k)
-                    ok &= static_cast<int>(std::abs(p.data()(k)) <= max);
+                    ok &= static_cast<int>(std::abs(p.data()(k)) <= lim);
             return ok != 0;
+        }
+
+        //! No NaN or infinite coordinate (|v| <= max is false exactly for those).
+        template<class V>
+        bool allFinite(const std::vector<V> &pts)
+        {
+            typedef std::remove_cv_t<std::remove_reference_t<decltype(pts.front().data()(0))>> E;
+            return allWithin(pts, static_cast<double>(std::numeric_limits<E>::max()));
+        }
+
+        //! The largest |coordinate| for which n points' moments about a range's first point cannot overflow C:
+        //! n * (2c)^2 <= max(C), with a factor 4 to spare for the cross terms and the error test.
+        template<typename C>
+        double momentSafeLimit(std::size_t n)
+        {
+            return std::sqrt(static_cast<double>(std::numeric_limits<C>::max()) / static_cast<double>(n > 0 ? n : 1)) / 8.0;
         }
 
         template<typename E>
@@ -105,7 +122,11 @@ namespace rtl
 
             bool operator()(const std::vector<VectorType> &pts)
             {
-                if (pts.size() < 2 || !validParameter(this->sigma) || !allFinite(pts) ||
+                // Coordinates whose squared moments would overflow ComputeType (|c| > momentSafeLimit, ~1e150 for
+                // double sums of a million points) are rejected like non-finite ones: their fits would be inf or NaN
+                // and ranges beyond sigma would pass (found by fuzz_vect_simplify).
+                if (pts.size() < 2 || !validParameter(this->sigma) ||
+                    !allWithin(pts, momentSafeLimit<ComputeType>(pts.size())) ||
                     (extractor.setSigma(this->sigma), !extractor(pts, this->approx, this->idx)) || !post(pts, this->approx, this->idx))
                 {
                     this->fail();
@@ -139,7 +160,10 @@ namespace rtl
         };
     }
 
-    //! Incremental TLS lines, trimmed by the projections of each range's end points. Observer: see
+    //! Incremental TLS lines, trimmed by the projections of each range's end points. operator() is false for fewer
+    //! than 2 points, an invalid sigma, a non-finite coordinate, or a coordinate beyond
+    //! vect_detail::momentSafeLimit<Compute>(n) (= sqrt(max / n) / 8: ~1e150 for double sums of 1e6 points), where
+    //! the sums would overflow. Observer: see
     //! vect_detail::VectorizerIncremental (e.g. rtl::ItlsTraceLog).
     template<typename Element, typename Compute, class Observer = NoTrace>
     class VectorizerITLSProjections2D : public vect_detail::VectorizerIncremental<ApproximationTlsLine2D<Element, Compute>, Observer>
