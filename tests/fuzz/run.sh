@@ -60,7 +60,10 @@ for harness in "$build"/tests/fuzz/fuzz_*; do
   nseeds=$(find "$seeds" -type f | wc -l)
   limits=(-max_total_time="$seconds")
   # Brief: the seeds, then a fixed number of mutations with a fixed seed, so that a test run does the same work.
-  [[ $mode == brief ]] && limits+=(-runs=$((nseeds + brief_runs)) -seed=1)
+  # A harness with an open finding (tests/fuzz/<name>.open says which) only replays its seeds in the brief pass.
+  runs=$brief_runs
+  [[ -f $root/tests/fuzz/$reader.open ]] && runs=0 && echo "   open finding, seeds only: $(head -1 "$root/tests/fuzz/$reader.open")"
+  [[ $mode == brief ]] && limits+=(-runs=$((nseeds + runs)) -seed=1)
   echo "== $name: $mode, ${seconds}s at most, $nseeds seeds + $(find "$corpus" -type f | wc -l) corpus inputs"
   log=$build/$name.log
   if "$harness" "${limits[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
