@@ -19,29 +19,12 @@
 #include <vector>
 
 #include "rtl/seg/CAR_Segmenter.h"
+#include "fuzz_common.h"
 
 namespace
 {
-    // __builtin_LINE (clang, gcc): the report names the broken check
-    void require(bool ok, int line = __builtin_LINE())
-    {
-        if (ok) return;
-        std::fprintf(stderr, "check failed at line %d\n", line);
-        std::abort();
-    }
-
-    struct Bytes
-    {
-        const std::uint8_t *p;
-        std::size_t n;
-        bool empty() const { return n == 0; }
-        std::uint8_t next()
-        {
-            if (n == 0) return 0;
-            --n;
-            return *p++;
-        }
-    };
+    using fuzz::Bytes;
+    using fuzz::require;
 
     template<class V>
     struct Model

@@ -22,22 +22,12 @@
 #include <Eigen/Eigenvalues>
 
 #include "rtl/Vectorization.h"
+#include "fuzz_common.h"
 
 namespace
 {
-    void require(bool ok, int line = __builtin_LINE())
-    {
-        if (ok) return;
-        std::fprintf(stderr, "check failed at line %d\n", line);
-        std::abort();
-    }
-
-    struct Bytes
-    {
-        const std::uint8_t *p;
-        std::size_t n;
-        std::uint8_t next() { if (n == 0) return 0; --n; return *p++; }
-    };
+    using fuzz::Bytes;
+    using fuzz::require;
 
     using LD = long double;
 
