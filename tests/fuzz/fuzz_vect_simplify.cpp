@@ -57,30 +57,34 @@ namespace
         return r;
     }
 
+    //! DP in long double. `tied` is set when a split point is not decided beyond rounding: another point's
+    //! distance is within `margin` of the farthest one's (the library, measuring in Element, may pick either).
     template<int d, typename T>
-    void dpModel(const std::vector<rtl::VectorND<d, T>> &p, size_t a, size_t b, LD eps, bool seg, std::vector<char> &keep)
+    void dpModel(const std::vector<rtl::VectorND<d, T>> &p, size_t a, size_t b, LD eps, bool seg, LD margin, std::vector<char> &keep, bool &tied)
     {
         std::vector<std::pair<size_t, size_t>> st{{a, b}};
         while (!st.empty())
         {
             auto [x, y] = st.back();
             st.pop_back();
-            LD best = eps * eps;
+            LD best = eps * eps, runner_up = -1;
             size_t far = 0;
             for (size_t i = x + 1; i < y; ++i)
             {
                 const LD q = dist2(p[i], p[x], p[y], seg);
-                if (q > best) { best = q; far = i; }
+                if (q > best) { runner_up = far ? best : runner_up; best = q; far = i; }
+                else if (q > runner_up) runner_up = q;
             }
+            if (far && runner_up >= 0 && std::sqrt(best) - std::sqrt(runner_up) <= margin) tied = true;
             if (far) { keep[far] = 1; st.emplace_back(x, far); st.emplace_back(far, y); }
         }
     }
     template<int d, typename T>
-    std::vector<size_t> dpRef(const std::vector<rtl::VectorND<d, T>> &p, LD eps, bool seg)
+    std::vector<size_t> dpRef(const std::vector<rtl::VectorND<d, T>> &p, LD eps, bool seg, LD margin, bool &tied)
     {
         std::vector<char> keep(p.size(), 0);
         keep.front() = keep.back() = 1;
-        dpModel(p, 0, p.size() - 1, eps, seg, keep);
+        dpModel(p, 0, p.size() - 1, eps, seg, margin, keep, tied);
         std::vector<size_t> out;
         for (size_t i = 0; i < p.size(); ++i) if (keep[i]) out.push_back(i);
         return out;
@@ -255,6 +259,7 @@ namespace
             {
                 std::vector<rtl::LineSegmentND<d, T>> segs;
                 std::vector<size_t> model_lo, model_hi;
+                bool tied = false;   // DP: a farthest point within rounding of another (found by the brief pass)
                 if (algo < 2)
                 {
                     rtl::VectorizerDouglasPeuckerND<d, T> dp(eps);
@@ -262,8 +267,8 @@ namespace
                     dp(pts, segs);
                     if (all_finite)
                     {
-                        model_lo = dpRef(pts, e > margin ? e - margin : 0, algo == 1);
-                        model_hi = dpRef(pts, e + margin, algo == 1);
+                        model_lo = dpRef(pts, e > margin ? e - margin : 0, algo == 1, margin, tied);
+                        model_hi = dpRef(pts, e + margin, algo == 1, margin, tied);
                     }
                 }
                 else
@@ -290,7 +295,7 @@ namespace
                     bool same = keys.size() == model_lo.size();
                     for (size_t q = 0; same && q < keys.size(); ++q) same = pts[keys[q]] == pts[model_lo[q]];
                     // At epsilon within rounding of 0 the decisions are the library's rounding: no model to compare.
-                    if (e > 2 * margin && model_lo == model_hi && !same)
+                    if (e > 2 * margin && model_lo == model_hi && !tied && !same)
                     {
                         size_t q = 0;
                         while (q < keys.size() && q < model_lo.size() && pts[keys[q]] == pts[model_lo[q]]) ++q;

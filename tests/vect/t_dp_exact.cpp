@@ -1,6 +1,7 @@
 // Douglas-Peucker over the whole finite range (issue 15.5) and its segment-distance option: the issue's inputs
 // (far points dropped when eps^2 |u|^2 and the squared cross product both overflowed), a brute-force long-double
-// reference at scales from 1e-30 to 1e300, and segment mode against simplifyCompatibleIndices.
+// reference at scales from 1e-30 to 1e300, farthest points tied in Element rounding, and segment mode against
+// simplifyCompatibleIndices.
 #include <cmath>
 #include <limits>
 #include <random>
@@ -11,56 +12,11 @@
 #include "rtl/Core.h"
 #include "rtl/vect/SimplifyCompatible.h"
 #include "rtl/Vectorization.h"
+#include "point_elimination_reference.h"
 
 namespace
 {
-    template<int d, typename T>
-    std::vector<size_t> keptBy(rtl::VectorizerDouglasPeuckerND<d, T> &dp, const std::vector<rtl::VectorND<d, T>> &pts)
-    {
-        std::vector<rtl::LineSegmentND<d, T>> segs;
-        dp(pts, segs);
-        // Recover indices from the segment end points (the test chains have distinct points).
-        std::vector<size_t> out;
-        size_t i = 0;
-        for (size_t s = 0; s <= segs.size() && !segs.empty(); ++s)
-        {
-            const auto &target = s < segs.size() ? segs[s].beg() : segs.back().end();
-            while (i < pts.size() && !(pts[i] == target)) ++i;
-            out.push_back(i);
-        }
-        return out;
-    }
-
-    //! Reference: recursive DP in long double (x87: squares of any double fit), line distance, first maximum.
-    template<int d, typename T>
-    void refStep(const std::vector<rtl::VectorND<d, T>> &p, size_t a, size_t b, long double eps, std::vector<char> &keep)
-    {
-        if (b - a < 2) return;
-        long double u[d], l2 = 0;
-        for (int k = 0; k < d; ++k) { u[k] = (long double)p[b][k] - (long double)p[a][k]; l2 += u[k] * u[k]; }
-        long double best = eps * eps;
-        size_t far = 0;
-        for (size_t i = a + 1; i < b; ++i)
-        {
-            long double v[d], vu = 0;
-            for (int k = 0; k < d; ++k) { v[k] = (long double)p[i][k] - (long double)p[a][k]; vu += v[k] * u[k]; }
-            const long double t = l2 > 0 ? vu / l2 : 0;
-            long double d2 = 0;
-            for (int k = 0; k < d; ++k) d2 += (v[k] - u[k] * t) * (v[k] - u[k] * t);
-            if (d2 > best) { best = d2; far = i; }
-        }
-        if (far) { keep[far] = 1; refStep(p, a, far, eps, keep); refStep(p, far, b, eps, keep); }
-    }
-    template<int d, typename T>
-    std::vector<size_t> reference(const std::vector<rtl::VectorND<d, T>> &p, long double eps)
-    {
-        std::vector<char> keep(p.size(), 0);
-        keep.front() = keep.back() = 1;
-        refStep(p, 0, p.size() - 1, eps, keep);
-        std::vector<size_t> out;
-        for (size_t i = 0; i < p.size(); ++i) if (keep[i]) out.push_back(i);
-        return out;
-    }
+    using pe_test::keptBy;
 
     //! Random walks scaled to `scale`, eps a fraction of it; compared where the reference decides the same at
     //! eps (1 +- 1e-5) (no near-tie). Returns the number of chains compared.
@@ -68,21 +24,13 @@ namespace
     int compareAtScale(double scale, unsigned seed)
     {
         std::mt19937 rng(seed);
-        std::normal_distribution<double> g(0, 1);
         int compared = 0;
         for (int c = 0; c < 20; ++c)
         {
-            std::vector<rtl::VectorND<d, T>> pts;
-            double pos[d] = {};
-            for (int i = 0; i < 200; ++i)
-            {
-                rtl::VectorND<d, T> v;
-                for (int k = 0; k < d; ++k) { pos[k] += g(rng); v[k] = static_cast<T>(pos[k] * scale); }
-                pts.push_back(v);
-            }
+            const auto pts = pe_test::randomWalk<d, T>(rng, 200, scale);
             const double eps = scale * (0.5 + c % 5);
-            const auto lo = reference(pts, (long double)eps * (1 - 1e-5L)), hi = reference(pts, (long double)eps * (1 + 1e-5L));
-            if (lo != hi) continue;
+            const auto lo = pe_test::dpReference(pts, (long double)eps * (1 - 1e-5L));
+            if (lo != pe_test::dpReference(pts, (long double)eps * (1 + 1e-5L))) continue;
             rtl::VectorizerDouglasPeuckerND<d, T> dp(static_cast<T>(eps));
             EXPECT_EQ(keptBy(dp, pts), lo) << "scale " << scale << " chain " << c;
             ++compared;
@@ -187,4 +135,29 @@ TEST(DouglasPeuckerSegment, NonFiniteNeverKept)
     dp(pts, segs);
     ASSERT_EQ(segs.size(), 2u);
     EXPECT_EQ(segs[0].end(), pts[2]);
+}
+
+// Found by fuzz_vect_simplify (2D float, a near-tie the harness's long-double model did not allow for): the
+// farthest point is chosen in Element arithmetic, so two points whose distances differ below float rounding are
+// a tie there and the first is kept, while double (and the exact distances) tell them apart. In exact integers
+// the cross products with chord 0 -> 3 are 484521520 (point 1) and 484521536 (point 2); in float both round to
+// 484521536.
+TEST(DouglasPeuckerExact, FarthestPointTiedInElementRounding)
+{
+    const std::vector<rtl::Vector2f> pf{{8205, 15}, {29555, 29555}, {29553, 29555}, {-8203, 7}};
+    std::vector<rtl::Vector2d> pd;
+    for (const auto &p : pf) pd.emplace_back(p[0], p[1]);
+    rtl::VectorizerDouglasPeucker2f dpf(2.0f);
+    rtl::VectorizerDouglasPeucker2d dpd(2.0);
+    EXPECT_EQ(keptBy(dpf, pf), (std::vector<size_t>{0, 1, 3}));   // tied in float: the first
+    EXPECT_EQ(keptBy(dpd, pd), (std::vector<size_t>{0, 2, 3}));   // point 2 is farther, by 16 / |u| = 9.8e-4
+    bool tied = false;
+    EXPECT_EQ(pe_test::dpReference(pf, 2.0L, 1e-3L * 1.01L, &tied), (std::vector<size_t>{0, 2, 3}));
+    EXPECT_TRUE(tied);   // the reference sees the near-tie (the fuzz harness skips such inputs)
+    tied = false;
+    pe_test::dpReference(pf, 2.0L, 1e-4L, &tied);
+    EXPECT_FALSE(tied);
+    // Every dropped point is still within epsilon of its chord in both.
+    EXPECT_LE(std::sqrt(pe_test::lineDistance2(pf, 2, 1, 3)), 2.0L);
+    EXPECT_LE(std::sqrt(pe_test::lineDistance2(pf, 1, 0, 2)), 2.0L);
 }

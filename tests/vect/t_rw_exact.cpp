@@ -9,51 +9,12 @@
 
 #include "rtl/Core.h"
 #include "rtl/Vectorization.h"
+#include "point_elimination_reference.h"
 
 namespace
 {
-    template<int d, typename T>
-    std::vector<size_t> keptBy(rtl::VectorizerReumannWitkamND<d, T> &rw, const std::vector<rtl::VectorND<d, T>> &pts)
-    {
-        std::vector<rtl::LineSegmentND<d, T>> segs;
-        rw(pts, segs);
-        std::vector<size_t> out;
-        size_t i = 0;
-        for (size_t s = 0; s <= segs.size() && !segs.empty(); ++s)
-        {
-            const auto &target = s < segs.size() ? segs[s].beg() : segs.back().end();
-            while (i < pts.size() && !(pts[i] == target)) ++i;
-            out.push_back(i);
-        }
-        return out;
-    }
-
-    //! Reference: the documented strip rule in long double (distance from the line through key and `through`).
-    template<int d, typename T>
-    std::vector<size_t> reference(const std::vector<rtl::VectorND<d, T>> &p, long double eps)
-    {
-        const auto dist2 = [&](size_t i, size_t a, size_t b) {
-            long double u[d], v[d], uu = 0, vu = 0;
-            for (int k = 0; k < d; ++k)
-            {
-                u[k] = (long double)p[b][k] - (long double)p[a][k];
-                v[k] = (long double)p[i][k] - (long double)p[a][k];
-                uu += u[k] * u[k];
-                vu += u[k] * v[k];
-            }
-            long double r = 0;
-            for (int k = 0; k < d; ++k) r += (v[k] - u[k] * vu / uu) * (v[k] - u[k] * vu / uu);
-            return r;
-        };
-        std::vector<size_t> keys{0};
-        size_t k = 0, j = 1;
-        while (j < p.size() && p[j] == p[k]) ++j;
-        size_t through = j;
-        for (size_t i = j + 1; i < p.size(); ++i)
-            if (dist2(i, k, through) > eps * eps) { k = i - 1; keys.push_back(k); through = i; }
-        if (keys.back() != p.size() - 1) keys.push_back(p.size() - 1);
-        return keys;
-    }
+    using pe_test::keptBy;
+    using pe_test::rwReference;
 }
 
 // Issue 15.6: eps 1e-50 narrowed to 0 through setEpsilon(float).
@@ -110,17 +71,17 @@ TEST(ReumannWitkamExact, MatchesLongDoubleReferenceAtEveryScale)
                 pd.emplace_back(x * scale * 1e270, y * scale * 1e270, z * scale * 1e270);
             }
             const double eps = scale * (0.5 + c % 3);
-            if (reference(pf, eps * (1 - 1e-4L)) == reference(pf, eps * (1 + 1e-4L)))
+            if (rwReference(pf, eps * (1 - 1e-4L)) == rwReference(pf, eps * (1 + 1e-4L)))
             {
                 rtl::VectorizerReumannWitkam2f rw(static_cast<float>(eps));
-                EXPECT_EQ(keptBy(rw, pf), reference(pf, (long double)static_cast<float>(eps))) << scale << " " << c;
+                EXPECT_EQ(keptBy(rw, pf), rwReference(pf, (long double)static_cast<float>(eps))) << scale << " " << c;
                 ++compared;
             }
             const double epsd = eps * 1e270;
-            if (reference(pd, epsd * (1 - 1e-6L)) == reference(pd, epsd * (1 + 1e-6L)))
+            if (rwReference(pd, epsd * (1 - 1e-6L)) == rwReference(pd, epsd * (1 + 1e-6L)))
             {
                 rtl::VectorizerReumannWitkam3d rw(epsd);
-                EXPECT_EQ(keptBy(rw, pd), reference(pd, (long double)epsd)) << scale << " " << c;
+                EXPECT_EQ(keptBy(rw, pd), rwReference(pd, (long double)epsd)) << scale << " " << c;
                 ++compared;
             }
         }
