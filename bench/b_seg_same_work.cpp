@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "b_seg_common.h"
 #include "b_seg_timing.h"
 #include "bench_util.h"
 #include "rtl/seg/CAR_Segmenter.h"
@@ -27,21 +27,9 @@ namespace
     using V = rtl::VectorND<2, float>;
     constexpr float lower = 0.01f, upper = 0.1f;
 
-    // Closed scan of n points, k clusters: runs alternating between radius 10 and 12 (jumps of 2 m, over the upper
-    // bound), 1 mm noise (under the lower bound, so that every point meets all its window neighbours in its run).
-    std::vector<V> scan(size_t n, size_t k)
-    {
-        std::mt19937 rng(7);
-        std::uniform_real_distribution<float> noise(-0.0005f, 0.0005f);
-        std::vector<V> pts(n);
-        for (size_t i = 0; i < n; ++i)
-        {
-            const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-            const double r = ((i * k / n) % 2 ? 12.0 : 10.0) + noise(rng);
-            pts[i] = V(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)));
-        }
-        return pts;
-    }
+    // Closed scan, 1 mm noise (under the lower bound, so that every point meets all its window neighbours in its
+    // run; the jumps of 2 m are over the upper bound).
+    std::vector<V> scan(size_t n, size_t k) { return rtl::bench::seg::closedScan<V>(n, k, 0.0005f); }
 
     // The floor for a window of w: per point, the w lagged squared distances against its threshold.
     rtl::bench::seg::Timing floorTime(const std::vector<V> &pts, size_t w, float scaling, int reps)
@@ -104,9 +92,8 @@ namespace
             Result car_result;
             rtl::CAR_Segmenter<V> car(step, lower, upper);
             const auto t_car = rtl::bench::seg::measure([&] {
-                car.loadData(pts);
                 car_result = Result();
-                while (car.clustersAvailable() > 0) car_result.add(car.grabCluster());
+                rtl::bench::seg::segmentCar(car, pts, [&](const std::vector<V> &c) { car_result.add(c); });
             }, reps);
             rtl::bench::seg::row("floor_w" + std::to_string(step - 1) + tag, n, car_floor, car_floor);
             report("CAR_step" + std::to_string(step) + tag, n, t_car, car_floor, car_result);
@@ -116,13 +103,7 @@ namespace
             const auto t_ia = rtl::bench::seg::measure([&] {
                 rtl::IA_Segmenter<V> ia(step, lower, upper, car_scaling);
                 ia_result = Result();
-                for (const V &p : pts)
-                {
-                    ia.addPoint(p);
-                    while (ia.closedClustersAvailable() > 0) ia_result.add(ia.grabCluster());
-                }
-                ia.flush();
-                while (ia.closedClustersAvailable() > 0) ia_result.add(ia.grabCluster());
+                rtl::bench::seg::segmentIa(ia, pts, [&](const std::vector<V> &c) { ia_result.add(c); });
             }, reps);
             rtl::bench::seg::row("floor_w" + std::to_string(step) + tag, n, ia_floor, ia_floor);
             report("IA_step" + std::to_string(step) + tag, n, t_ia, ia_floor, ia_result);

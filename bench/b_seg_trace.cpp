@@ -7,10 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "b_seg_common.h"
 #include "b_seg_timing.h"
 #include "bench_util.h"
 #include "rtl/seg/CAR_Segmenter.h"
@@ -21,33 +21,19 @@ namespace
 {
     using V = rtl::VectorND<2, float>;
 
-    std::vector<V> scan(size_t n, size_t k)
-    {
-        std::mt19937 rng(7);
-        std::uniform_real_distribution<float> noise(-0.0025f, 0.0025f);
-        std::vector<V> pts(n);
-        for (size_t i = 0; i < n; ++i)
-        {
-            const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-            const double r = ((i * k / n) % 2 ? 12.0 : 10.0) + noise(rng);
-            pts[i] = V(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)));
-        }
-        return pts;
-    }
+    std::vector<V> scan(size_t n, size_t k) { return rtl::bench::seg::closedScan<V>(n, k, 0.0025f); }
 
     template<class Log>
     size_t runCar(const std::vector<V> &pts, size_t step, Log *log, size_t &clusters)
     {
         rtl::CAR_Segmenter<V, Log> car(step, 0.05f, 0.5f);
         car.setObserver(log);
-        car.loadData(pts);
         size_t points = 0;
         clusters = 0;
-        while (car.clustersAvailable() > 0)
-        {
-            points += car.grabCluster().size();
+        rtl::bench::seg::segmentCar(car, pts, [&](const std::vector<V> &c) {
+            points += c.size();
             ++clusters;
-        }
+        });
         return points;
     }
 
@@ -58,21 +44,10 @@ namespace
         ia.setObserver(log);
         size_t points = 0;
         clusters = 0;
-        for (const auto &p : pts)
-        {
-            ia.addPoint(p);
-            while (ia.closedClustersAvailable() > 0)
-            {
-                points += ia.grabCluster().size();
-                ++clusters;
-            }
-        }
-        ia.flush();
-        while (ia.closedClustersAvailable() > 0)
-        {
-            points += ia.grabCluster().size();
+        rtl::bench::seg::segmentIa(ia, pts, [&](const std::vector<V> &c) {
+            points += c.size();
             ++clusters;
-        }
+        });
         return points;
     }
 

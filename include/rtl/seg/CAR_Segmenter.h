@@ -73,6 +73,7 @@ namespace rtl
         void setMaxSize(size_t max_size)
         {
             flags_.reserve(max_size);
+            store_.reserve(max_size);
             if (step_ > 2)
             {
                 tsq_.reserve(max_size);
@@ -80,16 +81,20 @@ namespace rtl
             }
         }
 
-        [[nodiscard]] size_t clustersAvailable() const { return next_ < clusters_.size() ? clusters_.size() - next_ : 0; }
+        [[nodiscard]] size_t clustersAvailable() const { return next_ < out_.size() ? out_.size() - next_ : 0; }
 
         //! Segments a closed scan, replacing any clusters not grabbed yet.
         void loadData(const std::vector<VectorType> &points, const VectorType &origin = VectorType::zeros())
         {
             seg_detail::checkParameters<ElementType>("CAR_Segmenter::loadData", lower_, upper_,
                                                      seg_detail::isFinite<D>(origin.data().data()));
-            clusters_.clear();
+            out_.clear();
+            pieces_.clear();
             next_ = 0;
             if (points.empty()) return;
+            // the clusters are copied out of this copy when grabbed: a caller that frees each cluster before grabbing
+            // the next reuses one block of memory, where clusters allocated up front would be fresh pages each scan
+            store_.assign(points.begin(), points.end());
             const ElementType scaling = seg_detail::circularScaling<ElementType>(step_, points.size());
             if constexpr (traced)
                 if (observer_)
@@ -107,11 +112,23 @@ namespace rtl
         //! Removes and returns the next cluster (never empty); an empty vector when none is left.
         std::vector<VectorType> grabCluster()
         {
-            if (next_ >= clusters_.size()) return {};
-            std::vector<VectorType> c = std::move(clusters_[next_++]);
-            if (next_ == clusters_.size())
+            if (next_ >= out_.size()) return {};
+            const Cluster &cl = out_[next_++];
+            std::vector<VectorType> c;
+            if (cl.piece_end - cl.piece_begin == 1)
+                c.assign(store_.begin() + static_cast<std::ptrdiff_t>(pieces_[cl.piece_begin].begin),
+                         store_.begin() + static_cast<std::ptrdiff_t>(pieces_[cl.piece_begin].end));
+            else
             {
-                clusters_.clear();
+                c.reserve(cl.points);
+                for (size_t k = cl.piece_begin; k < cl.piece_end; ++k)
+                    c.insert(c.end(), store_.begin() + static_cast<std::ptrdiff_t>(pieces_[k].begin),
+                             store_.begin() + static_cast<std::ptrdiff_t>(pieces_[k].end));
+            }
+            if (next_ == out_.size())
+            {
+                out_.clear();
+                pieces_.clear();
                 next_ = 0;
             }
             return c;
@@ -126,8 +143,12 @@ namespace rtl
         // step 1: the window is empty, every valid point is a cluster of its own.
         void segmentAlone(const std::vector<VectorType> &pts)
         {
-            for (const VectorType &p : pts)
-                if (seg_detail::isFinite<D>(ptr(p))) clusters_.emplace_back(1, p);
+            for (size_t i = 0; i < pts.size(); ++i)
+                if (seg_detail::isFinite<D>(ptr(pts[i])))
+                {
+                    out_.push_back(Cluster{pieces_.size(), pieces_.size() + 1, 1});
+                    pieces_.push_back(Piece{i, i + 1});
+                }
         }
 
         // flags_[i]: bit 0 = point i is valid, bit 1 = it meets the criterion with point i - 1 (i >= 1).
@@ -212,8 +233,10 @@ namespace rtl
             const size_t n = pts.size();
             neighbourFlags(pts, origin, seg_detail::SquaredThreshold<ElementType>(scaling, lower_, upper_));
             const unsigned char *f = flags_.data();
-            size_t i = 0;
-            while (i < n)
+            run_begin_.clear();
+            run_end_.clear();
+            run_slot_.clear();
+            for (size_t i = 0; i < n;)
             {
                 if (!(f[i] & 1u))
                 {
@@ -222,25 +245,22 @@ namespace rtl
                 }
                 const size_t b = i;
                 i = runEnd(f, b, n);
-                clusters_.emplace_back(pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(i));
+                run_slot_.push_back(run_begin_.size());
+                run_begin_.push_back(b);
+                run_end_.push_back(i);
             }
+            size_t clusters = run_begin_.size();
 
             // Seam: point 0 follows point n - 1. With two or more clusters, point 0 opens the first and n - 1 closes
-            // the last; the joined cluster keeps the first place (smallest index). It starts with its end part only
-            // if gaps separate the two parts (an index skipped): two adjacent runs that cover every index stay in
+            // the last; the joined cluster keeps the first place (smallest index). emitClusters starts it with its
+            // end part only if an index is skipped between the two: two adjacent runs that cover every index stay in
             // increasing order, as the general step lists them.
-            if (n >= 2 && clusters_.size() >= 2 && (f[0] & 1u) && (f[n - 1] & 1u) &&
-                closeTo(pts[n - 1], pts[0], origin, scaling))
+            if (n >= 2 && clusters >= 2 && (f[0] & 1u) && (f[n - 1] & 1u) && closeTo(pts[n - 1], pts[0], origin, scaling))
             {
-                std::vector<VectorType> &first = clusters_.front(), &last = clusters_.back();
-                if (first.size() + last.size() == n) first.insert(first.end(), last.begin(), last.end());
-                else
-                {
-                    last.insert(last.end(), first.begin(), first.end());
-                    first = std::move(last);
-                }
-                clusters_.pop_back();
+                run_slot_.back() = 0;
+                --clusters;
             }
+            emitClusters(clusters, 1);
         }
 
         // General step: union-find over point indices, the root of a component being its smallest index; each point
@@ -335,11 +355,17 @@ namespace rtl
                 run_begin_.push_back(b);
                 run_end_.push_back(i);
                 parent_.push_back(r);
-                // point q compares with q - k, k = 1..s; those with k <= q - b lie in this run
-                for (size_t q = b; q < i && q - b < s; ++q)
+                // point q compares with q - k, k = 1..s; those with k <= q - b lie in this run. Most run starts
+                // reach no earlier point: the boxes of the run's first s points and of the s points before it
+                // are farther apart than any of their thresholds, and nothing is compared.
+                if (b == 0) continue;
+                const size_t qend = std::min(i, b + s);
+                if (!boxesWithin(pts.data(), b >= s ? b - s : 0, b, qend, thr, o)) continue;
+                for (size_t q = b; q < qend; ++q)
                 {
                     const ElementType *p = ptr(pts[q]);
                     const ElementType tq = thr(seg_detail::squaredDistance<D>(p, o));
+                    if (!anyWithin(pts.data(), q >= s ? q - s : 0, b, p, tq)) continue;
                     size_t rj = r;   // the run holding j, found walking back (j decreases)
                     for (size_t k = q - b + 1; k <= s && k <= q; ++k)
                     {
@@ -371,42 +397,108 @@ namespace rtl
                 }
             }
 
-            // Output: a cluster per root run, in run order, sized first. A skip of more than step - 2 indices between
-            // two runs of one cluster can only come from the seam: the cluster is rotated there.
-            slot_.resize(runs);
-            last_.clear();
-            rotate_at_.clear();
-            std::vector<size_t> &size = cluster_size_;   // points per cluster
-            size.clear();
+            // Output: a cluster per root run, numbered in run order.
+            run_slot_.resize(runs);
+            size_t clusters = 0;
             for (size_t r = 0; r < runs; ++r)
             {
                 const size_t root = find(r);
-                if (root == r)
-                {
-                    slot_[r] = size.size();
-                    size.push_back(0);
-                }
-                size[slot_[root]] += run_end_[r] - run_begin_[r];
+                run_slot_[r] = root == r ? clusters++ : run_slot_[root];
             }
-            const size_t first = clusters_.size();
-            clusters_.resize(first + size.size());
-            last_.assign(size.size(), 0);
-            rotate_at_.assign(size.size(), 0);
-            for (size_t c = 0; c < size.size(); ++c) clusters_[first + c].reserve(size[c]);
+            emitClusters(clusters, s);
+        }
+
+        //! Widens a squared threshold a little, so that a first look whose sums are rounded differently (or
+        //! contracted) than the exact comparison's cannot miss a link.
+        static ElementType widened(ElementType tsq) { return tsq * ElementType(1.0009765625) + std::numeric_limits<ElementType>::min(); }
+
+        //! A first look at the links from the points [b, qend) back to [jlo, b): false only when the bounding
+        //! boxes of the two sets are farther apart than every threshold of the first (the box gap is a lower
+        //! bound of each pair's distance, also in rounded arithmetic). Gaps' NaN coordinates are ignored by the
+        //! comparisons; their infinities only widen a box.
+        static bool boxesWithin(const VectorType *v, size_t jlo, size_t b, size_t qend,
+                                const seg_detail::SquaredThreshold<ElementType> &thr, const ElementType *o)
+        {
+            ElementType qlo[D], qhi[D], jl[D], jh[D], tmax = ElementType(0);
+            for (int k = 0; k < D; ++k)
+            {
+                qlo[k] = jl[k] = std::numeric_limits<ElementType>::infinity();
+                qhi[k] = jh[k] = -std::numeric_limits<ElementType>::infinity();
+            }
+            for (size_t q = b; q < qend; ++q)
+            {
+                const ElementType *p = ptr(v[q]), t = thr(seg_detail::squaredDistance<D>(p, o));
+                tmax = t > tmax ? t : tmax;
+                for (int k = 0; k < D; ++k)
+                {
+                    qlo[k] = p[k] < qlo[k] ? p[k] : qlo[k];
+                    qhi[k] = p[k] > qhi[k] ? p[k] : qhi[k];
+                }
+            }
+            for (size_t j = jlo; j < b; ++j)
+                for (int k = 0; k < D; ++k)
+                {
+                    const ElementType a = v[j].data()[k];
+                    jl[k] = a < jl[k] ? a : jl[k];
+                    jh[k] = a > jh[k] ? a : jh[k];
+                }
+            ElementType gap = ElementType(0);
+            for (int k = 0; k < D; ++k)
+            {
+                const ElementType g1 = qlo[k] - jh[k], g2 = jl[k] - qhi[k];
+                const ElementType g = g1 > g2 ? g1 : g2;
+                if (g > ElementType(0)) gap += g * g;
+            }
+            return gap <= widened(tmax);
+        }
+
+        //! A branch-free first look (most run starts reach no earlier point): false only when no point j in
+        //! [jlo, jhi) is within tsq of p. The threshold is widened a little, so that a vectorised sum rounded
+        //! differently (or contracted) cannot miss a link the exact comparison makes; gaps are left to that one.
+        static bool anyWithin(const VectorType *v, size_t jlo, size_t jhi, const ElementType *p, ElementType tsq)
+        {
+            const ElementType t = widened(tsq);
+            bool any = false;
+            for (size_t j = jlo; j < jhi; ++j) any |= seg_detail::squaredDistance<D>(p, ptr(v[j])) <= t;
+            return any;
+        }
+
+        //! The clusters from the runs [run_begin_[r], run_end_[r]) in scan order and the cluster of each run
+        //! (run_slot_, numbered by first run): pieces grouped by cluster, in scan order. A skip of more than s indices
+        //! between two runs of one cluster can only come from the seam: the cluster is rotated there, so that it
+        //! starts with its end-of-scan part.
+        void emitClusters(size_t clusters, size_t s)
+        {
+            const size_t runs = run_begin_.size();
+            out_.assign(clusters, Cluster{0, 0, 0});
             for (size_t r = 0; r < runs; ++r)
             {
-                const size_t c = slot_[find(r)], b = run_begin_[r];
-                std::vector<VectorType> &cl = clusters_[first + c];
-                if (!cl.empty() && b - last_[c] > s) rotate_at_[c] = cl.size();
-                cl.insert(cl.end(), pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(run_end_[r]));
-                last_[c] = run_end_[r] - 1;
+                Cluster &c = out_[run_slot_[r]];
+                ++c.piece_end;   // a count for now
+                c.points += run_end_[r] - run_begin_[r];
             }
-            for (size_t c = 0; c < size.size(); ++c)
+            size_t at = 0;
+            for (Cluster &c : out_)
+            {
+                c.piece_begin = at;
+                at += c.piece_end;
+                c.piece_end = c.piece_begin;   // the fill cursor below
+            }
+            pieces_.resize(runs);
+            rotate_at_.assign(clusters, 0);
+            for (size_t r = 0; r < runs; ++r)
+            {
+                const size_t c = run_slot_[r];
+                Cluster &cl = out_[c];
+                const size_t b = run_begin_[r];
+                if (cl.piece_end > cl.piece_begin && b - (pieces_[cl.piece_end - 1].end - 1) > s) rotate_at_[c] = cl.piece_end;
+                pieces_[cl.piece_end++] = Piece{b, run_end_[r]};
+            }
+            for (size_t c = 0; c < clusters; ++c)
                 if (rotate_at_[c] > 0)
-                {
-                    std::vector<VectorType> &cl = clusters_[first + c];
-                    std::rotate(cl.begin(), cl.begin() + static_cast<std::ptrdiff_t>(rotate_at_[c]), cl.end());
-                }
+                    std::rotate(pieces_.begin() + static_cast<std::ptrdiff_t>(out_[c].piece_begin),
+                                pieces_.begin() + static_cast<std::ptrdiff_t>(rotate_at_[c]),
+                                pieces_.begin() + static_cast<std::ptrdiff_t>(out_[c].piece_end));
         }
 
         // The seam and the output of segmentWindow, from parent_ (none for gaps) and, for the
@@ -435,11 +527,12 @@ namespace rtl
                 }
             }
 
-            // Copy runs of equal root into their cluster. A gap of more than step - 2 indices inside a cluster can
-            // only come from the seam: the cluster is rotated there, so that it starts with its end-of-scan part.
+            // Runs of equal root, each a piece of its cluster (numbered by smallest index).
             slot_.resize(n);
-            last_.clear();
-            rotate_at_.clear();
+            run_begin_.clear();
+            run_end_.clear();
+            run_slot_.clear();
+            size_t clusters = 0;
             size_t i = 0;
             while (i < n)
             {
@@ -450,41 +543,21 @@ namespace rtl
                 }
                 const size_t r = find(i), b = i++;
                 while (i < n && parent_[i] != none && (parent_[i] == r || find(i) == r)) ++i;
-                size_t c;
-                if (r == b)
-                {
-                    c = clusters_.size();
-                    slot_[r] = c;
-                    clusters_.emplace_back();
-                    last_.push_back(b);
-                    rotate_at_.push_back(0);
-                    if constexpr (traced) trace_first_.push_back(b);
-                }
-                else
-                {
-                    c = slot_[r];
-                    if (b - last_[c] > s)
-                    {
-                        rotate_at_[c] = clusters_[c].size();
-                        if constexpr (traced) trace_first_[c] = b;
-                    }
-                }
-                clusters_[c].insert(clusters_[c].end(), pts.begin() + static_cast<std::ptrdiff_t>(b), pts.begin() + static_cast<std::ptrdiff_t>(i));
-                last_[c] = i - 1;
+                if (r == b) slot_[r] = clusters++;
+                run_begin_.push_back(b);
+                run_end_.push_back(i);
+                run_slot_.push_back(slot_[r]);
             }
-            for (size_t c = 0; c < clusters_.size(); ++c)
-                if (rotate_at_[c] > 0)
-                    std::rotate(clusters_[c].begin(), clusters_[c].begin() + static_cast<std::ptrdiff_t>(rotate_at_[c]), clusters_[c].end());
+            emitClusters(clusters, s);
             if constexpr (traced)
                 if (observer_)
                 {
                     size_t label = 0;
-                    for (size_t c = 0; c < clusters_.size(); ++c, ++label)
+                    for (size_t c = 0; c < out_.size(); ++c, ++label)
                     {
                         while (parent_[label] != label) ++label;   // cluster c's label: the c-th root in scan order
-                        (*observer_)(car_trace::Cluster{c, label, trace_first_[c], clusters_[c].size()});
+                        (*observer_)(car_trace::Cluster{c, label, pieces_[out_[c].piece_begin].begin, out_[c].points});
                     }
-                    trace_first_.clear();
                 }
         }
 
@@ -529,15 +602,25 @@ namespace rtl
         size_t step_ = 2;
         ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
 
-        std::vector<std::vector<VectorType>> clusters_;
+        // the clusters not grabbed yet: out_[next_..] as pieces (index ranges) of store_, a copy of the scan
+        struct Piece
+        {
+            size_t begin, end;
+        };
+        struct Cluster
+        {
+            size_t piece_begin, piece_end, points;
+        };
+        std::vector<VectorType> store_;
+        std::vector<Piece> pieces_;
+        std::vector<Cluster> out_;
         size_t next_ = 0;
 
         // work buffers, kept between calls
         std::vector<unsigned char> flags_;
         std::vector<ElementType> tsq_;
-        std::vector<size_t> parent_, slot_, last_, rotate_at_;
-        std::vector<size_t> trace_first_;                     // traced runs: the scan index each cluster starts with
-        std::vector<size_t> run_begin_, run_end_, cluster_size_;   // segmentRuns: runs [begin, end), points per cluster
+        std::vector<size_t> parent_, slot_, rotate_at_;
+        std::vector<size_t> run_begin_, run_end_, run_slot_;   // runs [begin, end) and their clusters (emitClusters)
         Observer *observer_ = nullptr;
     };
 }
