@@ -34,6 +34,8 @@ const SPEC = {
   'min-points': { value: true },
   format: { short: 'f', value: true },
   standalone: {},
+  dim: { value: true },
+  camera: { value: true },
   output: { short: 'o', value: true },
   help: { short: 'h' },
   version: {},
@@ -101,6 +103,19 @@ export function splitArgv(argv) {
   return { values, positionals };
 }
 
+// --camera FOV[,DX,DY,DZ]: the package's toTikz camera {fov, direction} (degrees in (0, 179], any non-zero vector).
+function camera(text) {
+  if (text === undefined) return undefined;
+  const parts = text.split(',').map((t) => t.trim());
+  const x = parts.map(Number);
+  if ((parts.length !== 1 && parts.length !== 4) || parts.some((t) => t === '') || !x.every(Number.isFinite)) {
+    throw new UsageError(`--camera must be FOV or FOV,DX,DY,DZ (numbers), got "${text}"`);
+  }
+  if (!(x[0] > 0 && x[0] <= 179)) throw new UsageError(`--camera field of view must be in (0, 179] degrees, got ${x[0]}`);
+  if (parts.length === 4 && !(Math.hypot(x[1], x[2], x[3]) > 0)) throw new UsageError(`--camera direction must not be zero, got "${text}"`);
+  return parts.length === 4 ? { fov: x[0], direction: x.slice(1) } : { fov: x[0] };
+}
+
 export function parseCommandLine(argv) {
   const { values: v, positionals } = splitArgv(argv);
   if (v.help || v.version) return { help: v.help, version: v.version };
@@ -165,6 +180,8 @@ export function parseCommandLine(argv) {
     minPoints: num('min-points', 3, { min: 2, integer: true }),
     format: oneOf('format', FORMATS, 'json'),
     standalone: Boolean(v.standalone),
+    dim: num('dim', 2, { integer: true }),
+    camera: camera(v.camera),
     output: v.output,
   };
   if (opts.lower > opts.upper) throw new UsageError(`--lower (${opts.lower}) must not exceed --upper (${opts.upper})`);
@@ -187,5 +204,8 @@ export function parseCommandLine(argv) {
   if (opts.strict && !['ftls', 'aftls'].includes(opts.method)) throw new UsageError('--strict applies to --vectorize ftls or aftls only');
   if (opts.primitive === 'plane' && opts.method !== 'aftls') throw new UsageError('--primitive plane needs --vectorize aftls');
   if (opts.standalone && opts.format !== 'tikz') throw new UsageError('--standalone applies to --format tikz only');
+  if (opts.dim !== 2 && opts.dim !== 3) throw new UsageError(`--dim must be 2 or 3, got "${v.dim}"`);
+  if (opts.dim === 3 && opts.format !== 'tikz') throw new UsageError('--dim 3 draws TikZ only: pass --format tikz');
+  if (opts.camera && opts.dim !== 3) throw new UsageError('--camera applies to --dim 3 only');
   return opts;
 }

@@ -62,6 +62,11 @@ Output
   -f, --format FMT       json | svg | tikz (default json); SVG/TikZ titles name the scan,
                          the segmenter, the method and their parameters
       --standalone       TikZ: a complete LaTeX document instead of a tikzpicture
+      --dim D            2 (default) | 3: with --format tikz, 3 draws 3D points (bin, or
+                         CSV x,y,z) through the library's 3D renderer: clusters in colours,
+                         the segments, and the planes of --primitive plane
+      --camera F[,X,Y,Z] --dim 3: field of view F in degrees (default 60) and the viewing
+                         direction (default 0,0,-1: looking down); the scene is fitted
   -o, --output FILE      write to FILE instead of standard output
   -h, --help             show this help
       --version          show the package version
@@ -83,6 +88,7 @@ Examples
   rtl tests/data/rellis3d-os1-4x2048.bin --beams 4 --ring 1 --upper 0.8
   rtl points.csv --no-segment -m dp --epsilon 0.05
   rtl points.csv --no-segment --fit
+  rtl tests/data/rellis3d-os1-4x2048.bin --beams 4 --ring 1 -m itls -f tikz --dim 3 --camera 50,1,-1,-1
 `;
 
 const HINT = "Try 'rtl --help' for more information.\n";
@@ -381,7 +387,8 @@ function render(rtl, opts, input, result) {
     return JSON.stringify(rest, null, 1)
       .replace(/\[\s+([^[\]{}"]*?)\s+\]/g, (m, inner) => `[${inner.replace(/,\s+/g, ', ')}]`) + '\n';
   }
-  if (input.dim !== 2) throw new UsageError(`--format ${opts.format} draws 2D data only; use --format json for 3D points`);
+  if (opts.dim === 3) return render3D(rtl, opts, input, result);
+  if (input.dim !== 2) throw new UsageError(`--format ${opts.format} draws 2D data only; use --format json or --format tikz --dim 3 for 3D points`);
   const segments = (result.vectorization?.segments ?? []).flatMap((s) => s.coordinates);
   // A fitted line is drawn as the segment between the projections of its first and last point.
   for (const f of result.fits ?? []) {
@@ -399,6 +406,20 @@ function render(rtl, opts, input, result) {
   return opts.format === 'svg'
     ? need(rtl, 'toSvg', '--format svg')(drawing)
     : need(rtl, 'toTikz', '--format tikz')(drawing, { standalone: opts.standalone });
+}
+
+// The 3D picture: the same package call as the page's 3D export, toTikz({dim: 3, ...}, {camera}).
+function render3D(rtl, opts, input, result) {
+  if (input.dim !== 3) throw new InputError(`${inputName(input.source.file)}: --dim 3 draws 3D points, the input has 2D points`);
+  const v = result.vectorization;
+  const drawing = {
+    dim: 3,
+    points: input.points,
+    ...(result.labels ? { labels: result.labels } : {}),
+    segments: new Float64Array((v?.segments ?? []).flatMap((s) => s.coordinates)),
+    ...(v?.planes ? { planes: v.planes.map((p) => p.polygon) } : {}),
+  };
+  return need(rtl, 'toTikz', '--format tikz')(drawing, { standalone: opts.standalone, ...(opts.camera ? { camera: opts.camera } : {}) });
 }
 
 // The package's checks of option values it cannot take (e.g. a step beyond what the segmenter holds) are bad usage

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <map>
 #include <string>
@@ -47,6 +48,10 @@ namespace rtl
         static inline const char *latex_mark_dot = latex_detail::tikz_mark_dot;
         static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
         static inline const char *latex_var_style = latex_detail::tikz_var_style;
+
+        //! What one TikZ picture may hold by default, in mark equivalents (TikzBudget.h): below what pdflatex's
+        //! default main memory held here (about 9,000 filled dot marks), with a margin.
+        static constexpr size_t pdflatex_mark_limit = 8000;
 
         //! At most this many grid lines or axis ticks per grid/axis: beyond it the grid/axis draws no ticks at all
         //! (a tick that small relative to the range is a mistake, and TeX could not hold the output anyway).
@@ -126,6 +131,11 @@ namespace rtl
         }
         void setBorder(float border) { border_cm = std::max(0.0f, border); }
         void setMarkRadius(float radius) { mark_radius = std::max(0.0f, radius); }
+        //! The TikZ writer's budget in mark equivalents (a mark 1, a polyline point 1/8, any other primitive, grid
+        //! line or axis tick 1/2): a bigger drawing is thinned with a note in the picture (TikzBudget.h). 0: no limit
+        //! (for lualatex, whose memory grows); default pdflatex_mark_limit.
+        void setTexMarkLimit(size_t limit) { tex_mark_limit = limit; }
+        size_t texMarkLimit() const { return tex_mark_limit; }
         //! overrun_relative: grids and axes extend `magnitude` percent of the range beyond the data;
         //! overrun_absolute: `magnitude` data units.
         void setGridAxisOverrun(unsigned int type, float magnitude)
@@ -161,6 +171,7 @@ namespace rtl
             size_w = size_h = 10.0f;
             border_cm = 0.1f;
             mark_radius = 0.1f;
+            tex_mark_limit = pdflatex_mark_limit;
             overrun_type = overrun_relative;
             overrun_magnitude = 5.0f;
             user_scale_x = user_scale_y = 1.0f;
@@ -271,16 +282,7 @@ namespace rtl
         //! Circle of `radius` data units (an ellipse on paper if the axes are scaled differently).
         void addCircle(const Vector2f &centre, float radius, const std::string &style)
         {
-            float x = tx(centre.x()), y = ty(centre.y());
-            if (!finite(x, y) || !std::isfinite(radius))
-                return;
-            radius = std::abs(radius);
-            track(x - radius, y - radius);
-            track(x + radius, y + radius);
-            Primitive p = primitive(Kind::circle, style);
-            p.points = {{x, y}};
-            p.r1 = radius;
-            prims.push_back(std::move(p));
+            round(Kind::circle, centre, radius, 0.0f, 0.0f, style);
         }
         //! Ellipse with radii in data units, rotated by `rotation` radians counter-clockwise.
         void addEllipse(const Vector2f &centre, float x_radius, float y_radius, float rotation, const std::string &style)
@@ -305,18 +307,7 @@ namespace rtl
         //! Circular sector from angle_beg to angle_end (radians, counter-clockwise).
         void addPie(const Vector2f &centre, float radius, float angle_beg, float angle_end, const std::string &style)
         {
-            float x = tx(centre.x()), y = ty(centre.y());
-            if (!finite(x, y) || !std::isfinite(radius) || !finite(angle_beg, angle_end))
-                return;
-            radius = std::abs(radius);
-            track(x - radius, y - radius);
-            track(x + radius, y + radius);
-            Primitive p = primitive(Kind::pie, style);
-            p.points = {{x, y}};
-            p.r1 = radius;
-            p.a1 = angle_beg;
-            p.a2 = angle_end;
-            prims.push_back(std::move(p));
+            round(Kind::pie, centre, radius, angle_beg, angle_end, style);
         }
         void addLine(const Vector2f &beg, const Vector2f &end, const std::string &style)
         {
@@ -511,6 +502,24 @@ namespace rtl
             }
         }
 
+        //! A circle or pie: centre, |radius| and angles a1, a2 (unused by circles), tracked by the bounding box of the
+        //! full circle; nothing is drawn (and no style registered) unless all are finite.
+        void round(Kind kind, const Vector2f &centre, float radius, float a1, float a2, const std::string &style)
+        {
+            float x = tx(centre.x()), y = ty(centre.y());
+            if (!finite(x, y) || !std::isfinite(radius) || !finite(a1, a2))
+                return;
+            radius = std::abs(radius);
+            track(x - radius, y - radius);
+            track(x + radius, y + radius);
+            Primitive p = primitive(kind, style);
+            p.points = {{x, y}};
+            p.r1 = radius;
+            p.a1 = a1;
+            p.a2 = a2;
+            prims.push_back(std::move(p));
+        }
+
         void polygon(const std::vector<Vector2f> &pts, const std::string &style)
         {
             // The style is registered even if a vertex is not finite (as LaTeXTikz2D always did).
@@ -550,6 +559,7 @@ namespace rtl
 
         unsigned int axis_type_x, axis_type_y;
         float size_w = 10, size_h = 10, border_cm = 0.1f, mark_radius = 0.1f;
+        size_t tex_mark_limit = pdflatex_mark_limit;
         unsigned int overrun_type = overrun_relative;
         float overrun_magnitude = 5;
         float user_scale_x = 1, user_scale_y = 1;

@@ -44,9 +44,12 @@ namespace rtl
     //! - On log10 axes every coordinate is replaced by its log10 before it is tracked or drawn (non-positive values
     //!   are dropped); grid and axis ticks are then given in decades. Non-finite points are skipped and break lines.
     //! - User text (addText, descriptions) is escaped; number labels come from numberToLatexString.
-    //! - Size limit of the consumer, not of the writer: a picture is one TeX box, and pdflatex's default main memory
-    //!   (5e6 words) holds about 15,000 marks or a few 100,000 polyline points; use lualatex (dynamic memory) or
-    //!   thin the data out for bigger figures. Writing stays linear in the number of points.
+    //! - A picture is one TeX box, and pdflatex's default main memory (5e6 words) held about 9,000 dot marks here
+    //!   (TikzBudget.h). An addition to RTL: a drawing beyond texMarkLimit() mark equivalents (default 8,000; a
+    //!   polyline point counts 1/8) is written thinned, every k-th mark and polyline point, with a note below the
+    //!   picture saying so; drawings within it are written as before, byte for byte. If grid lines, axis ticks and
+    //!   primitives other than marks and polylines alone exceed it, writing throws std::length_error.
+    //!   setTexMarkLimit(0) writes everything (lualatex's memory grows). Writing stays linear in the points.
     class LaTeXTikz2D : public Drawing2D
     {
     public:
@@ -61,7 +64,8 @@ namespace rtl
         LaTeXTikz2D &operator=(const LaTeXTikz2D &) = default;
         LaTeXTikz2D &operator=(LaTeXTikz2D &&) noexcept = default;
 
-        //! Writes the standalone document; throws std::runtime_error if the file cannot be written.
+        //! Writes the standalone document; throws std::runtime_error if the file cannot be written (and
+        //! std::length_error as described above, before the document is written).
         void writeTEX(const std::string &file_name)
         {
             latex_detail::writeTexFile(file_name, "LaTeXTikz2D", [this](std::ostream &os) { writeTEX(os); });

@@ -10,6 +10,7 @@
 #include "rtl/io/Drawing2D.h"
 #include "rtl/io/LaTeXTikzCommon.h"
 #include "rtl/io/LaTeXUtility.h"
+#include "rtl/io/TikzBudget.h"
 
 namespace rtl
 {
@@ -151,17 +152,33 @@ namespace rtl
             out += path + ";\n";
         }
 
+        //! One primitive; `thin` and the running mark count `mark_index` (over the whole drawing) say which marks
+        //! and polyline points are written.
         inline void writeTikzPrimitive(const Drawing2D::Primitive &p, const Drawing2D::Frame &f, const TikzMap &map,
-                                       std::string &out)
+                                       const TikzThinning &thin, size_t &mark_index, std::string &out)
         {
             using K = Drawing2D::Kind;
             auto pt = [&](size_t i) { return map.pt(p.points[i].first, p.points[i].second); };
             switch (p.kind)
             {
-                case K::polyline: writeTikzPolyline(p, map, out); break;
+                case K::polyline:
+                    if (!thin.thinned())
+                        writeTikzPolyline(p, map, out);
+                    else
+                    {
+                        Drawing2D::Primitive q = p;
+                        q.points.clear();
+                        for (size_t i = 0; i < p.points.size(); ++i)
+                            if (i % thin.stride == 0 || i + 1 == p.points.size())
+                                q.points.push_back(p.points[i]);
+                        writeTikzPolyline(q, map, out);
+                    }
+                    break;
                 case K::marks:
                     for (const auto &m : p.marks)
                     {
+                        if (!thin.keepMark(mark_index++))
+                            continue;
                         // The rotation follows the direction as it appears on paper, i.e. after axis scaling.
                         double dx = static_cast<double>(m.dx) * f.sx, dy = static_cast<double>(m.dy) * f.sy;
                         double deg = (dx == 0.0 && dy == 0.0) ? 0.0 : std::atan2(dy, dx) * 180.0 / pi;
@@ -211,11 +228,14 @@ namespace rtl
     }
 
     //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to \input it.
+    //! A drawing beyond d.texMarkLimit() is thinned with a note; std::length_error (nothing written) if what cannot be
+    //! thinned exceeds it (TikzBudget.h).
     inline void writeTikzPicture(const Drawing2D &d, std::ostream &os)
     {
         using latex_detail::number;
         Drawing2D::Frame f = d.frame();
         latex_detail::TikzMap map = latex_detail::tikzMap(d, f);
+        latex_detail::TikzThinning thin = latex_detail::tikzThinning(d, f);
         std::string out;
         out += "\\begin{tikzpicture}[x=" + number(map.paper ? 1.0 : f.sx) + "cm, y=" + number(map.paper ? 1.0 : f.sy) + "cm";
         std::string style_options = d.registry().styleOptions();
@@ -243,14 +263,23 @@ namespace rtl
         os << out;
         // Primitives in chunks, so that a figure of millions of points is not held twice in memory.
         out.clear();
+        size_t mark_index = 0;
         for (const auto &p : d.primitives())
         {
-            latex_detail::writeTikzPrimitive(p, f, map, out);
+            latex_detail::writeTikzPrimitive(p, f, map, thin, mark_index, out);
             if (out.size() > (1u << 16))
             {
                 os << out;
                 out.clear();
             }
+        }
+        if (thin.thinned())
+        {
+            // Below the frame, and below x tick labels and the x description if there are any.
+            bool below = !d.descriptionX().empty() ||
+                         std::any_of(d.axes().begin(), d.axes().end(), [](const Drawing2D::Axis &a) { return a.is_x; });
+            out += "\\node[anchor=north west, yshift=" + std::string(below ? "-1.3cm" : "-0.1cm") +
+                   "] at (\\MinX,\\MinY) {" + latex_detail::tikzThinningNote(thin) + "};\n";
         }
         os << out << "\\end{tikzpicture}\n";
     }
@@ -258,6 +287,7 @@ namespace rtl
     //! Writes `d` as a standalone LaTeX document (the `minimal` class cropped to the picture by preview).
     inline void writeTikz(const Drawing2D &d, std::ostream &os)
     {
+        latex_detail::tikzThinning(d, d.frame());   // throws before the preamble is written
         latex_detail::writeTikzDocument(os, d.border(), [&d](std::ostream &o) { writeTikzPicture(d, o); });
     }
 }

@@ -1,0 +1,77 @@
+// How much of pdflatex's memory a TikZ picture of a Drawing2D takes, and how far to thin it so that it fits.
+//
+// A tikzpicture is one TeX box: everything in it stays in main memory until the page is shipped out. Measured with
+// pdfTeX 1.40.24 (TeX Live 2022, main_memory 5,000,000 words) on drawScan pictures of filled dot marks: about 495
+// words per mark; 8,906 marks compile, 9,062 fail with "TeX capacity exceeded". Drawing2D::pdflatex_mark_limit
+// (8,000) keeps a margin below that. The other costs are relative to a dot mark, measured on 2,000 of each:
+// a polyline point about 1/8, an edge (one \draw) about 1/2.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+#include "rtl/io/Drawing2D.h"
+
+namespace rtl
+{
+    namespace latex_detail
+    {
+        //! Every stride-th mark (counted over the whole drawing) and every stride-th point of each polyline (and its
+        //! last) are written; stride 1 writes everything.
+        struct TikzThinning
+        {
+            size_t stride = 1;
+            size_t marks = 0;   // marks in the drawing
+            size_t kept = 0;    // marks written
+            bool thinned() const { return stride > 1; }
+            bool keepMark(size_t index) const { return index % stride == 0; }
+        };
+
+        //! The thinning that brings `d` within d.texMarkLimit() mark equivalents. Throws std::length_error if what
+        //! cannot be thinned (primitives other than marks and polylines, grid lines, axis ticks) alone exceeds it.
+        inline TikzThinning tikzThinning(const Drawing2D &d, const Drawing2D::Frame &f)
+        {
+            TikzThinning t;
+            size_t vertices = 0, fixed = 0;   // polyline points; the rest, in halves of a mark
+            for (const auto &p : d.primitives())
+            {
+                if (p.kind == Drawing2D::Kind::marks)
+                    t.marks += p.marks.size();
+                else if (p.kind == Drawing2D::Kind::polyline)
+                    vertices += p.points.size();
+                else
+                    ++fixed;
+            }
+            double x0 = f.min_x - f.ox, x1 = f.max_x + f.ox, y0 = f.min_y - f.oy, y1 = f.max_y + f.oy;
+            for (const auto &g : d.grids())
+                fixed += (g.horizontal ? Drawing2D::ticks(y0, y1, g.tick) : Drawing2D::ticks(x0, x1, g.tick)).size();
+            for (const auto &a : d.axes())
+                fixed += 2 * (a.is_x ? Drawing2D::ticks(x0, x1, a.tick) : Drawing2D::ticks(y0, y1, a.tick)).size();
+            t.kept = t.marks;
+            const double limit = static_cast<double>(d.texMarkLimit()), rest = 0.5 * static_cast<double>(fixed);
+            const double thin = static_cast<double>(t.marks) + static_cast<double>(vertices) / 8.0;
+            if (d.texMarkLimit() == 0 || thin + rest <= limit)
+                return t;
+            if (rest > limit)
+                throw std::length_error("writeTikz: " + std::to_string(fixed) + " primitives, grid lines and axis ticks "
+                                        "exceed pdflatex's memory (texMarkLimit " + std::to_string(d.texMarkLimit()) +
+                                        " marks, one of these counts 1/2)");
+            const double room = limit - rest >= 1.0 ? limit - rest : 1.0;
+            t.stride = static_cast<size_t>(std::ceil(thin / room));
+            if (t.stride < 2)
+                t.stride = 2;
+            t.kept = (t.marks + t.stride - 1) / t.stride;
+            return t;
+        }
+
+        //! The visible note of a thinned picture, e.g. "Thinned for pdflatex's memory: 1 in 2 marks and line points
+        //! drawn (7500 of 15000 marks)."
+        inline std::string tikzThinningNote(const TikzThinning &t)
+        {
+            return "Thinned for pdflatex's memory: 1 in " + std::to_string(t.stride) + " marks and line points drawn (" +
+                   std::to_string(t.kept) + " of " + std::to_string(t.marks) + " marks).";
+        }
+    }
+}
