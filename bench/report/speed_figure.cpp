@@ -93,7 +93,7 @@ namespace
                 }
             }
         if (!std::isfinite(ymin)) { ymin = 0; ymax = 1; yright = 1; }
-        const double ylo = std::floor(ymin - 0.05);
+        const double ylo = ymin - 0.15;   // a tight frame: the decade ticks inside it are labelled
         // The legend's bottom 0.2 decades over the highest curve under it: ytop - legend height in decades.
         const double k = legend_h / height;
         const double ytop = std::max(ymax + 0.1, (yright + 0.2 - k * ylo) / (1 - k));

@@ -8,9 +8,9 @@
 //
 // Each round times every case once at one size (interleaved: load drift hits all cases alike); a case's time is
 // a batch of calls divided by the calls, so that a call of 10 points is not lost in the clock's resolution: as
-// many calls as cover --batch points (default 200,000), but no more than take about 5 ms. Reported: the medians over --rounds (default 11) of the
-// thread's CPU time (what the figure shows: on a shared machine it does not count the time the process waits for
-// a core) and of the wall time.
+// many calls as cover --batch points (default 200,000), but no more than take about 5 ms of CPU time. Reported:
+// the medians over --rounds (default 11) of the thread's CPU time (what the figure shows: on a shared machine it
+// does not count the waits for a core) and of the wall time.
 //
 // Usage: speed_native [--smoke] [--rounds=R] [--batch=P] [--sizes=10,100,...] [--out=FILE.tsv] [--points=DIR]
 //                     [--no-header]
@@ -191,28 +191,29 @@ namespace
         };
     }
 
-    //! Calls per timed batch: enough to cover `batch` points, but no more than take about 5 ms (doubling the calls
-    //! until they take 1 ms tells the time of one).
+    double threadCpuSeconds()
+    {
+        timespec t{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+        return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+    }
+
+    //! Calls per timed batch: enough to cover `batch` points, but no more than take about 5 ms of CPU time
+    //! (doubling the calls until they take 1 ms tells the time of one; CPU time, so that a wait for a core on a
+    //! loaded machine does not shrink the batch).
     size_t batchCalls(Case &c, size_t n, size_t batch)
     {
         const size_t by_points = std::max<size_t>(1, (batch + n - 1) / n);
         for (size_t k = 1;; k *= 2)
         {
             size_t out = 0;
-            const auto t0 = std::chrono::steady_clock::now();
+            const double t0 = threadCpuSeconds();
             for (size_t i = 0; i < k; ++i) out += c.run();
-            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            const double t = threadCpuSeconds() - t0;
             rtl::bench::doNotOptimize(out);
             if (t >= 1e-3 || k >= by_points)
                 return std::min(by_points, std::max<size_t>(1, static_cast<size_t>(std::ceil(5e-3 * static_cast<double>(k) / t))));
         }
-    }
-
-    double threadCpuSeconds()
-    {
-        timespec t{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-        return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
     }
 
     //! impl, case, points, rounds, calls per batch, median ns per point of the whole call in CPU and in wall time,

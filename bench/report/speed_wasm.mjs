@@ -7,7 +7,7 @@
 // Float64Array: one pass of squared distances to the chord and their maximum.
 //
 // Timing as in speed_native: interleaved rounds, each a batch of calls covering --batch points but taking no more
-// than about 5 ms, medians
+// than about 5 ms of CPU time, medians
 // over the rounds of the whole call (what a user waits for: checks, copy in, compute, results out) in the
 // process's CPU time (process.cpuUsage: this single-threaded work, plus whatever V8's helper threads do) and in
 // wall time, and of the library's part (rtl.lastComputeMs, wall time; not reported by StreamSegmenter: '-').
@@ -72,15 +72,22 @@ function cases(xy, ring) {
   ];
 }
 
-// Calls per timed batch: enough to cover `batch` points, but no more than take about 5 ms (doubling the calls
-// until they take 1 ms tells the time of one).
+const cpuMs = (since) => { const u = process.cpuUsage(since); return (u.user + u.system) / 1000; };
+// Calls per timed batch: enough to cover `batch` points, but no more than take about 5 ms. Before
+// that, 30 ms of calls let V8 compile the JavaScript around the call to its optimised tier; then doubling the
+// calls until they take 1 ms tells the time of one. That time is the least of three tries in wall time (the
+// process's CPU time also counts V8's compiler and GC threads; one wait for a core does not hit all three).
 function batchCalls(run, n) {
   const byPoints = Math.max(1, Math.ceil(batch / n));
+  for (const t0 = performance.now(); performance.now() - t0 < (smoke ? 1 : 30);) run();
   for (let k = 1; ; k *= 2) {
-    const t0 = performance.now();
-    for (let i = 0; i < k; i++) run();
-    const t = performance.now() - t0;
-    if (t >= 1 || k >= byPoints) return Math.min(byPoints, Math.max(1, Math.ceil((5 * k) / t)));
+    let t = Infinity;
+    for (let trial = 0; trial < 3; trial++) {
+      const t0 = performance.now();
+      for (let i = 0; i < k; i++) run();
+      t = Math.min(t, performance.now() - t0);
+    }
+    if (t >= 1 || k >= byPoints) return Math.min(byPoints, Math.max(1, Math.ceil((5 * k) / Math.max(t, 1e-3))));
   }
 }
 
@@ -95,9 +102,8 @@ for (const n of sizes) {
       let lib = 0;
       const t0 = performance.now(), c0 = process.cpuUsage();
       for (let k = 0; k < calls; k++) lib += c.run()[1];
-      const cu = process.cpuUsage(c0);
+      c.cpu.push(cpuMs(c0) / calls);
       c.wall.push((performance.now() - t0) / calls);
-      c.cpu.push((cu.user + cu.system) / 1000 / calls);
       c.lib.push(lib / calls);
     }
   }
