@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz_tikz::Reader in(data, size);
     uint8_t axes = in.byte();
     rtl::Svg2D d(axes & 1, (axes >> 1) & 1);
-    std::string tex_texts, xml_texts;   // what user text contributes ("nan" in a label is a finding, in a text not)
+    if (axes & 4)
+        d.setTexMarkLimit(1 + (axes >> 3));   // tiny budgets (1..32 marks): the thinning path and its note
+    std::string tex_texts, xml_texts;   // one line per user text (words must not join across texts); what it contributes ("nan" in a label is a finding, in a text not)
     size_t grids = 0, ops = 0;
     auto v2 = [&]() { float x = in.value(); return Vector2f(x, in.value()); };
     while (!in.empty() && ops++ < 64)
@@ -77,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     x ? d.addAxisX(st, fmt, pos, tick, in.value()) : d.addAxisY(st, fmt, pos, tick, in.value());
                 }
                 break;
-            case 10: { std::string t = in.text(); tex_texts += rtl::LaTeX::escapeLaTeXCharacters(t); xml_texts += rtl::svg_detail::xmlEscape(t); (in.byte() & 1) ? d.addDescriptionX(t) : d.addDescriptionY(t); break; }
+            case 10: { std::string t = in.text(); tex_texts += rtl::LaTeX::escapeLaTeXCharacters(t) + "\n"; xml_texts += rtl::svg_detail::xmlEscape(t) + "\n"; (in.byte() & 1) ? d.addDescriptionX(t) : d.addDescriptionY(t); break; }
             case 11:
             {
                 std::vector<Vector2f> v(in.byte() % 40);
@@ -108,13 +111,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             case 18: { Vector2f a = v2(); d.addCircle(a, in.value(), in.pick(fuzz_tikz::styles)); break; }
             case 19: { Vector2f a = v2(); float rx = in.value(), ry = in.value(); d.addEllipse(a, rx, ry, in.value(), in.pick(fuzz_tikz::styles)); break; }
             case 20: { Vector2f a = v2(); float r = in.value(), b = in.value(); d.addPie(a, r, b, in.value(), in.pick(fuzz_tikz::styles)); break; }
-            case 21: { std::string t = in.text(); tex_texts += rtl::LaTeX::escapeLaTeXCharacters(t); xml_texts += rtl::svg_detail::xmlEscape(t); d.addText(t, in.pick(fuzz_tikz::styles), v2()); break; }
+            case 21: { std::string t = in.text(); tex_texts += rtl::LaTeX::escapeLaTeXCharacters(t) + "\n"; xml_texts += rtl::svg_detail::xmlEscape(t) + "\n"; d.addText(t, in.pick(fuzz_tikz::styles), v2()); break; }
             case 22: d.saveColor(in.pick(fuzz_tikz::colors)); break;
             case 23: (in.byte() & 1) ? d.clearData() : d.clearAll(); break;
         }
     }
     std::ostringstream tikz, svg;
-    rtl::writeTikz(d, tikz);
+    try
+    {
+        rtl::writeTikz(d, tikz);
+    }
+    catch (const std::length_error &)
+    {
+        // The documented refusal (more unthinnable primitives than the budget) writes nothing; without a budget
+        // the same drawing is written.
+        require(tikz.str().empty());
+        d.setTexMarkLimit(0);
+        rtl::writeTikz(d, tikz);
+    }
     rtl::writeSvg(d, svg);
     const std::string t = tikz.str(), s = svg.str();
     fuzz_tikz::requireSafeLaTeX(t);
@@ -122,6 +136,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     require(r.ok);
     // Bounded: 6 grids/axes of at most max_ticks lines each, plus what the calls drew.
     require(t.size() < 8'000'000 && s.size() < 8'000'000);
+    // A thinned picture says so; the budget's count of marks written matches the marks in the output.
+    const rtl::latex_detail::TikzThinning thin = rtl::latex_detail::tikzThinning(d, d.frame());
+    require((t.find("{Thinned for pdflatex's memory: 1 in ") != std::string::npos) == thin.thinned());
+    size_t marks = 0;
+    for (size_t p = t.find("\n\\Mark"); p != std::string::npos; p = t.find("\n\\Mark", p + 1))
+        ++marks;
+    require(marks == thin.kept);
     requireFinite(t, tex_texts);
     requireFinite(s, xml_texts);
     return 0;
