@@ -10,7 +10,8 @@
 // than about 5 ms of CPU time, medians
 // over the rounds of the whole call (what a user waits for: checks, copy in, compute, results out) in the
 // process's CPU time (process.cpuUsage: this single-threaded work, plus whatever V8's helper threads do) and in
-// wall time, and of the library's part (rtl.lastComputeMs, wall time; not reported by StreamSegmenter: '-').
+// wall time, and of the library's part in CPU time (estimated from rtl.lastComputeMs, the library's wall time:
+// the call's CPU time times the library's share of its wall time; StreamSegmenter reports none: '-').
 //
 // Usage: node bench/report/speed_wasm.mjs --points=DIR [--smoke] [--rounds=R] [--batch=P] [--sizes=10,100,...]
 //        [--out=FILE.tsv] [--no-header]   (speed_native's columns, impl "wasm"; --no-header appends to --out)
@@ -102,9 +103,12 @@ for (const n of sizes) {
       let lib = 0;
       const t0 = performance.now(), c0 = process.cpuUsage();
       for (let k = 0; k < calls; k++) lib += c.run()[1];
-      c.cpu.push(cpuMs(c0) / calls);
-      c.wall.push((performance.now() - t0) / calls);
-      c.lib.push(lib / calls);
+      const cpu = cpuMs(c0) / calls, wall = (performance.now() - t0) / calls;
+      c.cpu.push(cpu);
+      c.wall.push(wall);
+      // The library's CPU time, estimated as the call's CPU time times the library's share of its wall time
+      // (lastComputeMs is wall time: alone it would count the waits for a core).
+      c.lib.push((cpu * lib) / calls / wall);
     }
   }
   for (const c of cs)
