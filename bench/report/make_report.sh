@@ -34,7 +34,7 @@ OUT=$(cd "$OUT" && pwd -P)
 POINTS="$OUT/points"
 rm -rf "$POINTS" && mkdir -p "$POINTS"
 trap 'rm -rf "$POINTS"' EXIT
-rm -f "$OUT"/native.tsv "$OUT"/wasm.tsv "$OUT"/*.pdf "$OUT"/*.svg "$OUT"/*.tex "$OUT"/report.md
+rm -f "$OUT"/native.tsv "$OUT"/wasm.tsv "$OUT"/report.md "$OUT"/speed_{vectorizers,segmenters}.{tex,svg,pdf,log}
 
 WASM=yes
 if ! command -v node >/dev/null 2>&1 || [ ! -f "$ROOT/dist/rtl.wasm" ]; then WASM=""; fi
@@ -56,7 +56,7 @@ if command -v pdflatex >/dev/null 2>&1; then
   for f in speed_vectorizers speed_segmenters; do
     (cd "$OUT" && pdflatex -interaction=nonstopmode -halt-on-error "$f.tex" >/dev/null) ||
       { echo "make_report.sh: pdflatex failed on $OUT/$f.tex (log: $OUT/$f.log)" >&2; exit 1; }
-    rm -f "$OUT/$f.aux"
+    rm -f "$OUT/$f.aux" "$OUT/$f.log"
   done
   PDF=yes
 fi
