@@ -1,54 +1,46 @@
 #!/usr/bin/env node
-// rtl-wasm benchmarks (figures, not pass/fail; run by `./run bench`, or `node bench/js/b_wasm.mjs [--reps=N] [--smoke]`):
-//  1. wasm vs native at 1M points: FTLS, Douglas-Peucker and the batch (CAR) segmenter. Native = the same adapter
-//     code in tests/tools/rtl_native ($RTL_NATIVE_BUILD_DIR/tools, default build/native), timed inside the process;
-//     wasm = the whole JS call (checks, copy in, compute, results out) and its compute part alone (lastComputeMs).
-//  2. array transfer vs compute at 100,000 points (the share of a call not spent in the library).
-//  3. Douglas-Peucker against simplify-js (highQuality = true, same tolerance, same polyline): same kept points?
-//     speed at 100,000 points.
-//  4. gzipped size of the .wasm and the JS.
+// rtl-wasm benchmarks (figures, not pass/fail; run by `./run bench`, or `node bench/js/b_wasm.mjs [--rounds=N] [--smoke]`):
+//  1. wasm vs native at 100,000 and 1,000,000 points: FTLS, Douglas-Peucker and the batch (CAR) segmenter, in one
+//     run, interleaved rounds (a native process call, then the wasm call), medians. Native = the same adapter code
+//     (wasm/src/*_ops.h) in tests/tools/rtl_native ($RTL_NATIVE_BUILD_DIR/tools, default build/native) on objects
+//     reused between its repetitions, its median of 3 calls per round; wasm = the library's own time of the call
+//     (lastComputeMs: the kept objects are reused too) and the whole JS call.
+//  2. time outside the library (argument checks, copy in, the C++ input check, results out) per function at
+//     100,000 points, as a share of the library's time (the goal: under 10 %).
+//  3. gzipped size of the .wasm and the JS.
+// RTL_PACKAGE=dir: a package folder built by wasm/build.mjs with RTL_DIST_DIR, instead of dist/.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { cpus, loadavg, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { gzipSync } from 'node:zlib';
-import simplify from 'simplify-js';
-import init from 'rtl-wasm';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const PKG = resolve(ROOT, process.env.RTL_PACKAGE || 'dist');
+const { default: init } = await import(pathToFileURL(join(PKG, 'index.node.mjs')).href);
 const args = process.argv.slice(2);
 const smoke = args.includes('--smoke');
-const reps = Number((args.find((a) => a.startsWith('--reps=')) || '').slice(7)) || (smoke ? 1 : 7);
-const N = smoke ? 100_000 : 1_000_000;
+const rounds = Number((args.find((a) => a.startsWith('--rounds=')) || '').slice(9)) || (smoke ? 1 : 7);
+const SIZES = smoke ? [10_000] : [100_000, 1_000_000];
+const N2 = smoke ? 10_000 : 100_000;
 const TOOL = join(resolve(ROOT, process.env.RTL_NATIVE_BUILD_DIR || 'build/native'), 'tools', 'rtl_native');
 const dir = mkdtempSync(join(tmpdir(), 'rtl-bench-'));
 process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
+const load = () => `load ${loadavg().map((l) => l.toFixed(2)).join(' ')} on ${cpus().length} cores`;
 
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
-// Median time of f() after one warm-up call (tier-up, memory growth); with `compute`, also the median of what
-// f() returns (the library's own time of that call).
-function time(f, n = reps) {
-  f();
-  const t = [], c = [];
-  for (let i = 0; i < n; i++) { const a = performance.now(); const r = f(); t.push(performance.now() - a); c.push(r); }
-  const total = median(t);
-  return Object.assign(new Number(total), { total, compute: median(c.map(Number)) });
-}
-const row = (name, ms, base, extra = '') =>
-  console.log(`${name.padEnd(44)} ${ms.toFixed(3).padStart(10)} ms${base ? `  ${(ms / base).toFixed(2).padStart(6)}x` : '        '}  ${extra}`);
+const fmt = (v, w = 9) => (Number.isFinite(v) ? v.toFixed(3) : '-').padStart(w);
 
-// A deterministic polyline like a long laser chain: straight runs with corners and 5 mm noise (x, y interleaved).
-function polyline(n, seed = 1) {
-  let s = seed;
-  const rnd = () => ((s = (s * 1103515245 + 12345) % 2147483648) / 2147483648);
+// The paper's noisy semicircle (r 8, uniform noise 0.01) of n points, x and y interleaved.
+function semicircle(n, seed = 1) {
+  let s = seed >>> 0;
+  const rnd = () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 4294967296);
   const xy = new Float64Array(2 * n);
-  let x = 0, y = 0, a = 0;
   for (let i = 0; i < n; i++) {
-    if (i % 200 === 0) a += (rnd() - 0.5) * 2.5;
-    x += 0.01 * Math.cos(a); y += 0.01 * Math.sin(a);
-    xy[2 * i] = x + (rnd() - 0.5) * 0.01;
-    xy[2 * i + 1] = y + (rnd() - 0.5) * 0.01;
+    const a = (Math.PI * i) / (n - 1);
+    xy[2 * i] = 8 * Math.cos(a) + 0.01 * (rnd() - 0.5);
+    xy[2 * i + 1] = 8 * Math.sin(a) + 0.01 * (rnd() - 0.5);
   }
   return xy;
 }
@@ -64,74 +56,66 @@ function scan(n) {
   return xy;
 }
 
-function native(op, xy, params) {
-  const f = join(dir, 'pts.f64');
-  writeFileSync(f, xy);
-  const out = JSON.parse(execFileSync(TOOL, [op, f, '2', ...params.map(String), `--reps=${reps}`], { encoding: 'utf8', maxBuffer: 1 << 30 }));
+function native(op, file, params) {
+  const out = JSON.parse(execFileSync(TOOL, [op, file, '2', ...params.map(String), '--reps=3'], { encoding: 'utf8', maxBuffer: 1 << 30 }));
   return out.seconds * 1e3;
 }
 
 const rtl = await init();
-console.log(`rtl-wasm ${rtl.version} benchmarks: median of ${reps} runs, Node ${process.versions.node}${smoke ? ' (smoke)' : ''}\n`);
+console.log(`rtl-wasm ${rtl.version} benchmarks (${PKG}): ${rounds} interleaved rounds, medians, Node ${process.versions.node}${smoke ? ' (smoke)' : ''}`);
 
-// ---- 1. wasm vs native at 1M points
-console.log(`1. wasm vs native, ${N.toLocaleString('en')} points (ratio: wasm / native compute)`);
-const line = polyline(N), ring = scan(N);
-const cases = [
-  ['FTLS (sigma 0.03, delta 0.3)', line, () => rtl.vectorize(line, { method: 'ftls', sigma: 0.03, delta: 0.3 }), 'vectorize', [0, 0, 0.03, 0.3, 0.09, 1, 10000]],
-  ['Douglas-Peucker (epsilon 0.03)', line, () => rtl.vectorize(line, { method: 'dp', epsilon: 0.03 }), 'vectorize', [3, 0, 0.03, 0.3, 0.03, 1, 10000]],
-  ['batch segmenter CAR (step 3, 0.1-0.5)', ring, () => rtl.segment(ring, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5]],
-];
+// ---- 1. wasm vs native
 const haveNative = existsSync(TOOL);
-if (!haveNative) console.log(`   (native tool ${TOOL} not built: native column skipped)`);
-for (const [name, xy, f, op, params] of cases) {
-  const nat = haveNative ? native(op, xy, params) : NaN;
-  const { total, compute } = time(() => { f(); return rtl.lastComputeMs; });
-  if (haveNative) row(`   native ${name}`, nat, 0);
-  row(`   wasm   ${name}: compute`, compute, haveNative ? nat : 0);
-  row(`   wasm   ${name}: whole call`, total, haveNative ? nat : 0);
+console.log(`\n1. wasm vs native (library call; native ${haveNative ? TOOL : 'tool not built: column skipped'}) (${load()})`);
+console.log(`${'case'.padEnd(40)} ${'native'.padStart(9)} ${'wasm lib'.padStart(9)} ${'wasm/nat'.padStart(9)} ${'whole'.padStart(9)} ${'whole/nat'.padStart(9)}  (ms)`);
+const CASES = [
+  ['FTLS (sigma 0.03, delta 3)', semicircle, (p) => rtl.vectorize(p, { method: 'ftls', sigma: 0.03, delta: 3 }), 'vectorize', [0, 0, 0.03, 3, 0.09, 1, 10000]],
+  ['Douglas-Peucker (epsilon 0.09)', semicircle, (p) => rtl.vectorize(p, { method: 'dp', epsilon: 0.09 }), 'vectorize', [3, 0, 0.03, 3, 0.09, 1, 10000]],
+  ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5]],
+];
+for (const n of SIZES) {
+  for (const [name, make, f, op, params] of CASES) {
+    const xy = make(n), file = join(dir, `${op}-${n}.f64`);
+    writeFileSync(file, xy);
+    f(xy);  // warm-up: tier-up, memory growth, the kept objects
+    const t = { nat: [], lib: [], whole: [] };
+    for (let r = 0; r < rounds; r++) {
+      if (haveNative) t.nat.push(native(op, file, params));
+      const a = performance.now(); f(xy); t.whole.push(performance.now() - a); t.lib.push(rtl.lastComputeMs);
+    }
+    const nat = haveNative ? median(t.nat) : NaN, lib = median(t.lib), whole = median(t.whole);
+    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(40)} ${fmt(nat)} ${fmt(lib)} ${fmt(lib / nat)} ${fmt(whole)} ${fmt(whole / nat)}`);
+  }
 }
 
-// ---- 2. transfer vs compute at 100,000 points
-console.log('\n2. array transfer (checks, copy in, results out) vs compute, 100,000 points');
-for (const [name, xy, f] of [
-  ['FTLS', polyline(100_000), (p) => rtl.vectorize(p, { method: 'ftls' })],
-  ['Douglas-Peucker', polyline(100_000), (p) => rtl.vectorize(p, { method: 'dp', epsilon: 0.03 })],
-  ['segmenter', scan(100_000), (p) => rtl.segment(p)],
-]) {
-  const { total, compute } = time(() => { f(xy); return rtl.lastComputeMs; }, reps * 3);
-  row(`   ${name}: whole call`, total, 0);
-  row(`   ${name}: transfer share`, total - compute, total, `(${(100 * (total - compute) / total).toFixed(1)} % of the call)`);
+// ---- 2. time outside the library per function
+console.log(`\n2. time outside the library call (checks, copy in, input check, results out), ${N2.toLocaleString('en')} points (${load()})`);
+console.log(`${'function'.padEnd(40)} ${'whole'.padStart(9)} ${'library'.padStart(9)} ${'outside'.padStart(9)} ${'% of lib'.padStart(9)}  (ms)`);
+const line2 = semicircle(N2), ring2 = scan(N2);
+const OUT = [
+  ['vectorize ftls', () => rtl.vectorize(line2, { method: 'ftls', sigma: 0.03, delta: 3 })],
+  ['vectorize aftls', () => rtl.vectorize(line2, { method: 'aftls', sigma: 0.03, delta: 3 })],
+  ['vectorize itls', () => rtl.vectorize(line2, { method: 'itls', epsilon: 0.09 })],
+  ['vectorize dp', () => rtl.vectorize(line2, { method: 'dp', epsilon: 0.09 })],
+  ['vectorize dp, distance segment', () => rtl.vectorize(line2, { method: 'dp', epsilon: 0.09, distance: 'segment' })],
+  ['vectorize rw', () => rtl.vectorize(line2, { method: 'rw', epsilon: 0.09 })],
+  ['segment (CAR, step 3)', () => rtl.segment(ring2, { step: 3, lowerBound: 0.1, upperBound: 0.5 })],
+  ['simplify (Float64Array)', () => rtl.simplify(line2, 0.09, true)],
+];
+const T = OUT.map(() => ({ whole: [], lib: [] }));
+for (const [, f] of OUT) f();
+for (let r = 0; r < 3 * rounds; r++) {  // interleaved: one call of each function per round
+  OUT.forEach(([, f], k) => { const a = performance.now(); f(); T[k].whole.push(performance.now() - a); T[k].lib.push(rtl.lastComputeMs); });
 }
+OUT.forEach(([name], k) => {
+  // the per-round difference, then its median: both parts of one call saw the same machine state
+  const outside = median(T[k].whole.map((w, i) => w - T[k].lib[i])), lib = median(T[k].lib);
+  console.log(`${name.padEnd(40)} ${fmt(median(T[k].whole))} ${fmt(lib)} ${fmt(outside)} ${(100 * outside / lib).toFixed(1).padStart(9)}`);
+});
 
-// ---- 3. simplify-js
-// Its Douglas-Peucker measures the distance to the chord *segment*; rtl's (rtl-api 6.8) to the chord's infinite
-// line. They keep the same points unless the farthest point projects outside its chord, which a profile (x
-// increasing) never does and a wandering polyline rarely does: both are reported.
-console.log('\n3. Douglas-Peucker vs simplify-js (highQuality = true), tolerance 0.03, 100,000 points');
-function profile(n) {
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) { xy[2 * i] = i * 0.01; xy[2 * i + 1] = Math.sin(i * 0.003) * 2 + Math.sin(i * 0.05) * 0.05 + ((i * 7919) % 13) * 0.001; }
-  return xy;
-}
-for (const [label, xy] of [['profile (x increasing)', profile(100_000)], ['wandering polyline', polyline(100_000, 7)]]) {
-  const objs = Array.from({ length: xy.length / 2 }, (_, i) => ({ x: xy[2 * i], y: xy[2 * i + 1] }));
-  const ours = rtl.vectorize(xy, { method: 'dp', epsilon: 0.03 });
-  const kept = [0, ...Array.from({ length: ours.count }, (_, k) => ours.indices[2 * k + 1] - 1)];
-  const index = new Map(objs.map((o, i) => [o, i]));
-  const theirKept = simplify(objs, 0.03, true).map((o) => index.get(o));
-  const theirSet = new Set(theirKept);
-  const common = kept.filter((i) => theirSet.has(i)).length;
-  const same = kept.length === theirKept.length && common === kept.length;
-  console.log(`   ${label}: kept rtl-wasm ${kept.length}, simplify-js ${theirKept.length}, in common ${common}: ${same ? 'identical' : 'differ'}`);
-  const tJs = time(() => simplify(objs, 0.03, true), reps * 3).total;
-  const tW = time(() => rtl.vectorize(xy, { method: 'dp', epsilon: 0.03 }), reps * 3).total;
-  row('     simplify-js (array of {x, y})', tJs, 0);
-  row('     rtl-wasm vectorize dp (Float64Array)', tW, tJs, `-> ${(tJs / tW).toFixed(1)}x faster`);
-}
-
-// ---- 4. size
-console.log('\n4. package size (gzip -9)');
-const gz = (f) => gzipSync(readFileSync(join(ROOT, 'dist', f)), { level: 9 }).length;
+// ---- 3. size
+console.log('\n3. package size (gzip -9)');
+const gz = (f) => gzipSync(readFileSync(join(PKG, f)), { level: 9 }).length;
 const wasmGz = gz('rtl.wasm'), jsGz = gz('rtl.mjs') + gz('api.mjs') + gz('index.mjs');
-console.log(`   rtl.wasm ${readFileSync(join(ROOT, 'dist', 'rtl.wasm')).length} B -> ${wasmGz} B gz; browser JS (rtl.mjs + api.mjs + index.mjs) ${jsGz} B gz; together ${((wasmGz + jsGz) / 1024).toFixed(1)} KiB`);
+console.log(`   rtl.wasm ${readFileSync(join(PKG, 'rtl.wasm')).length} B -> ${wasmGz} B gz; browser JS (rtl.mjs + api.mjs + index.mjs) ${jsGz} B gz; together ${((wasmGz + jsGz) / 1024).toFixed(1)} KiB`);
+console.log(`\n${load()}`);

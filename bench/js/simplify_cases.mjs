@@ -1,0 +1,72 @@
+// The simplify-js comparison shared by the Node (b_simplify.mjs) and Chromium (b_simplify_browser.mjs) benchmarks:
+// the same polylines, the same interleaved rounds, the same table. No Node or DOM APIs here.
+//
+// Per case, one round times, in this order: the floor (reading every {x, y} object of the array once, which any
+// {x, y} input costs), simplify-js, rtl-wasm on the {x, y} array, rtl-wasm on a Float64Array of the same
+// coordinates. The table gives medians over the rounds (round 0 warms up and is dropped) and the ratios.
+
+function rng(seed) {
+  let s = seed >>> 0;
+  return () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 4294967296);
+}
+// The paper's noisy semicircle (r 8, noise 0.01) and a random walk (steps uniform in +-0.5).
+export function semicircle(n) {
+  const r = rng(1);
+  return Array.from({ length: n }, (_, i) => {
+    const a = (Math.PI * i) / (n - 1);
+    return { x: 8 * Math.cos(a) + 0.01 * (r() - 0.5), y: 8 * Math.sin(a) + 0.01 * (r() - 0.5) };
+  });
+}
+export function walk(n) {
+  const r = rng(2);
+  let x = 0, y = 0;
+  return Array.from({ length: n }, () => ({ x: (x += r() - 0.5), y: (y += r() - 0.5) }));
+}
+
+const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+
+let sink = 0;  // keeps the floor loop's result alive
+function readOnce(pts) {
+  let s = 0;
+  for (let i = 0; i < pts.length; i++) {
+    const q = pts[i];
+    s += q.x + q.y;
+  }
+  sink += s;
+}
+
+// Runs every case; `clock()` gives milliseconds (wall or CPU). Returns rows of medians (ms) and prints nothing.
+export function runSimplifyBench({ rtl, simplifyJs, sizes, rounds, clock }) {
+  const rows = [];
+  for (const n of sizes) {
+    for (const [name, pts, tol] of [['semicircle', semicircle(n), 0.01], ['random walk', walk(n), 1]]) {
+      const xy = new Float64Array(2 * n);
+      pts.forEach((p, i) => { xy[2 * i] = p.x; xy[2 * i + 1] = p.y; });
+      for (const hq of [false, true]) {
+        const theirs = simplifyJs(pts, tol, hq), ours = rtl.simplify(pts, tol, hq);
+        if (ours.length !== theirs.length || ours.some((p, i) => p !== theirs[i])) throw new Error(`${name} ${n}: kept points differ`);
+        const t = { floor: [], js: [], obj: [], lib: [], f64: [] };
+        for (let r = 0; r <= rounds; r++) {
+          let a = clock(); readOnce(pts); const floor = clock() - a;
+          a = clock(); simplifyJs(pts, tol, hq); const js = clock() - a;
+          a = clock(); rtl.simplify(pts, tol, hq); const obj = clock() - a; const lib = rtl.lastComputeMs;
+          a = clock(); rtl.simplify(xy, tol, hq); const f64 = clock() - a;
+          if (r) { t.floor.push(floor); t.js.push(js); t.obj.push(obj); t.lib.push(lib); t.f64.push(f64); }
+        }
+        const m = Object.fromEntries(Object.entries(t).map(([k, v]) => [k, median(v)]));
+        rows.push({ case: `${name} ${n.toLocaleString('en')}${hq ? ' hq' : ''}`, kept: ours.length, ...m });
+      }
+    }
+  }
+  return rows;
+}
+
+export function formatRows(rows) {
+  const head = ['case'.padEnd(26), 'kept'.padStart(6), 'floor'.padStart(8), 'simplify-js'.padStart(12), 'rtl {x,y}'.padStart(10),
+    'speed-up'.padStart(9), 'rtl/floor'.padStart(10), 'js/floor'.padStart(9), 'library'.padStart(9), 'rtl f64'.padStart(9)].join(' ');
+  const lines = rows.map((r) => [r.case.padEnd(26), String(r.kept).padStart(6), r.floor.toFixed(2).padStart(8),
+    r.js.toFixed(2).padStart(12), r.obj.toFixed(2).padStart(10), `${(r.js / r.obj).toFixed(2)}x`.padStart(9),
+    (r.obj / r.floor).toFixed(1).padStart(10), (r.js / r.floor).toFixed(1).padStart(9), r.lib.toFixed(2).padStart(9),
+    r.f64.toFixed(2).padStart(9)].join(' '));
+  return [head, ...lines].join('\n');
+}
