@@ -93,11 +93,13 @@ namespace rtl::vect_detail
                 {
                     cand_lines = lines;
                     cand_idx = idx;
+                    continuity.keepExactSearch(true);   // both branches ending in the exact search: searched once
                     const bool ftls_ok = continuity(pts, prec, cand_lines, cand_idx);
                     optimizer_.setSigma(sigma);
                     if constexpr (Observer::enabled)
                         continuity.setObserver(observer_, 1);
                     ok = optimizer_(pts, prec, lines, idx) && continuity(pts, prec, lines, idx);
+                    continuity.keepExactSearch(false);
                     if constexpr (Observer::enabled)
                     {
                         continuity.setObserver(observer_, 0);
@@ -186,6 +188,17 @@ namespace rtl::vect_detail
         const std::vector<size_t> &polylineOffsets() const { return offsets; }
         const std::vector<CornerReport> &breaks() const { return breaks_; }
         const std::optional<CornerReport> &failure() const { return failure_; }
+        //! Work of both exact searches (the continuity repair's and the extraction fallback's / split mode's)
+        //! since construction: fits, corner tests and states (PartitionSearch2D::Work).
+        typename PartitionSearch2D<PrecArrayType, Approximation>::Work searchWork() const
+        {
+            auto w = continuity.searchWork();
+            const auto &v = search.work();
+            w.fits += v.fits;
+            w.corners += v.corners;
+            w.states += v.states;
+            return w;
+        }
 
     private:
         PrecArrayType prec;

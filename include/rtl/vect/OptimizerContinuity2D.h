@@ -59,6 +59,16 @@ namespace rtl
         //! Observer of the following calls (nullptr: none); it must outlive them. `branch` goes into the events.
         void setObserver(Observer *observer, int branch = 0) { observer_ = observer; branch_ = branch; }
 
+        //! Keeps the exact search's answer for the following calls on the same chain, sigma and delta (AFTLS's
+        //! two branches: the search does not depend on the partition it replaces); false forgets it.
+        void keepExactSearch(bool keep)
+        {
+            keep_ = keep;
+            kept_state = 0;
+        }
+        //! Work of the exact search since construction (PartitionSearch2D::work()).
+        const typename PartitionSearch2D<SumArray, Approximation>::Work &searchWork() const { return search.work(); }
+
         //! After a false return: the corner that no partition can meet (see PartitionSearch2D::failure()).
         const CornerReport &failure() const { return search.failure(); }
 
@@ -97,6 +107,10 @@ namespace rtl
         ComputeType delta2{9};
         ComputeType sigma2{std::numeric_limits<ComputeType>::infinity()};
         PartitionSearch2D<SumArray, Approximation> search;
+        bool keep_{false};
+        int kept_state{0};   // 0 none kept, 1 a partition, 2 none exists
+        std::vector<Approximation> kept_lines;
+        std::vector<IndexType> kept_indices;
         Observer *observer_{nullptr};
         int branch_{0};
         mutable int method_{0};   // the repair being tried, for the events
@@ -112,14 +126,32 @@ namespace rtl
                 }
         }
 
-        //! Replaces the whole partition by the exact search's; false iff no valid partition exists.
+        //! Replaces the whole partition by the exact search's; false iff no valid partition exists. Its answer
+        //! depends only on the chain, sigma and delta, so a kept one (keepExactSearch) is reused.
         bool exactSearch(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines, std::vector<IndexType> &indices)
         {
-            search.setSigmaSquared(sigma2);
-            search.setAllowBreaks(false);
             const size_t end = indices.back().second;
-            if (!search(pts, a, lines, indices))
-                return false;
+            if (kept_state == 0 || !keep_)
+            {
+                search.setSigmaSquared(sigma2);
+                search.setAllowBreaks(false);
+                const bool found = search(pts, a, lines, indices);
+                if (keep_)
+                {
+                    kept_state = found ? 1 : 2;
+                    kept_lines = lines;
+                    kept_indices = indices;
+                }
+                if (!found)
+                    return false;
+            }
+            else
+            {
+                if (kept_state == 2)
+                    return false;
+                lines = kept_lines;
+                indices = kept_indices;
+            }
             method_ = FtlsExactSearch;
             reportRepair(0, end, indices);
             return true;

@@ -9,9 +9,19 @@
 //   squared residual), compared lexicographically; a state extends by any fitting range [y, z) whose line meets
 //   its own within delta. Incoming states of a boundary are tried cheapest first, so the first one that meets the
 //   corner is the best and the search stops there.
-// Ranges are bounded by sigma: the total squared residual of [x, y) never decreases as y grows, so once it
-// exceeds (N - x) sigma^2 no longer range from x can fit. The cost is O(F) fits for the F fitting ranges plus
-// the corner checks (cheapest-first, usually one per range; quadratic per boundary only when corners fail).
+// Ranges are bounded by sigma: the total squared residual T of [x, y) never decreases as y grows, so once it
+// exceeds (N - x) sigma^2 no longer range from x can fit, and no end z with (z - x) sigma^2 < T can (skipped).
+// Corners: the few cheapest incoming lines are tried first (they usually meet). When they do not, a boundary
+// with many lines uses chords: every line crossing the disc of radius delta about the boundary midpoint cuts a
+// chord from it, and two lines cross inside the disc iff their chords' ends alternate around the circle, so the
+// cheapest meeting line is a 2D range-minimum query (a sweep over one end angle, a min-tree over the other), with
+// every comparison widened by the angles' rounding bound and each candidate confirmed by the exact test. Lines
+// within 0.1 % of tangent to the disc are tried one by one; lines clearly missing it never meet. The cost is
+// O(F) fits and O(F log F) corner work for the F fitting ranges (issue 15 item 7: it was O(F * incoming) when
+// corners fail). F itself is up to N * L for ranges of up to L points that fit sigma: on long straight runs
+// with corners that no line pair meets the search stays quadratic in L (work() counts it).
+// Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
+// crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
 //
 // With breaks allowed (split mode), a range may also start a new polyline where no incoming line meets it; the
 // cost counts such breaks first, so the result has the fewest breaks (none iff a strict result exists), then the
@@ -196,6 +206,14 @@ namespace rtl
             return true;
         }
 
+        //! Work done since construction: range fits evaluated, and corner tests plus chord-tree queries (a bound
+        //! on either per call is what the fuzz harness checks, so that a slow case cannot pass unseen).
+        struct Work
+        {
+            size_t fits{0}, corners{0}, states{0};
+        };
+        const Work &work() const { return work_; }
+
         //! After a false return without breaks: the furthest corner reached and its smallest crossing distance.
         const CornerReport &failure() const { return failure_; }
         //! After a true return: indices of the ranges that start a polyline (0 first; more only with breaks).
@@ -214,7 +232,21 @@ namespace rtl
         bool allow_breaks{false};
         std::vector<State> states;
         std::vector<std::vector<uint32_t>> incoming;   // states ending at each boundary
-        std::vector<Approximation> in_lines;
+        std::vector<Approximation> in_lines, out_lines;
+        struct Out
+        {
+            size_t y;
+            ComputeType total;
+        };
+        std::vector<Out> outs;
+        std::vector<size_t> picks, open_, tree, leaf_of, order, removed;
+        static constexpr size_t none_rank = std::numeric_limits<size_t>::max();
+        std::vector<ComputeType> vals;
+        Work work_;
+        struct Chord;
+        struct Item;
+        std::vector<Chord> in_chords, out_chords;
+        std::vector<Item> items, queries;
         std::vector<size_t> starts;
         std::vector<CornerReport> break_reports;
         CornerReport failure_;
@@ -255,8 +287,9 @@ namespace rtl
             return p.error < q.error;
         }
 
-        bool fits(const SumArray &a, size_t b, size_t e, ComputeType &total) const
+        bool fits(const SumArray &a, size_t b, size_t e, ComputeType &total)
         {
+            ++work_.fits;
             const auto s = a.sums(b, e);
             total = e - b <= 2 ? ComputeType(0) : Approximation::errorSquaredCompute(s) * static_cast<ComputeType>(e - b);
             return e - b == 2 || Approximation::errorBelow(s, sigma2);
@@ -273,45 +306,245 @@ namespace rtl
         {
             auto &in = incoming[x];
             std::sort(in.begin(), in.end(), [&](uint32_t p, uint32_t q) { return less(states[p], states[q]); });
-            in_lines.clear();
-            for (uint32_t s : in)
-                in_lines.emplace_back(a.sums(states[s].x, x));
+            outs.clear();
             for (size_t y = x + 2; y <= n; ++y)
             {
                 ComputeType total;
                 const bool ok = fits(a, x, y, total);
                 if (!ok && beyondReach(total, x, n))
                     break;
-                if (!ok || y + 1 == n)   // a range ending one point before the end leaves a 1-point tail
-                    continue;
-                State st{static_cast<uint32_t>(x), none, 0, 1, total};
-                if (x > 0)
+                if (ok && y + 1 != n)   // a range ending one point before the end leaves a 1-point tail
+                    outs.push_back(Out{y, total});
+                // The total never decreases with y: no end z with (z - x) sigma^2 * 1.01 <= total can fit.
+                if (!ok && total > ComputeType(0))
                 {
-                    const Approximation line(a.sums(x, y));
-                    const State &cheapest = states[in.front()];
-                    const State broken{0, 0, cheapest.breaks + 1, cheapest.ranges, cheapest.error};
-                    size_t pick = in.size();
-                    for (size_t k = 0; k < in.size(); ++k)
-                    {
-                        if (allow_breaks && !less(states[in[k]], broken))
-                            break;
-                        if (vect_detail::crossingDistanceSquared(pts, in_lines[k], line, x) <= delta2)
-                        {
-                            pick = k;
-                            break;
-                        }
-                    }
-                    if (pick == in.size() && !allow_breaks)
-                        continue;
-                    const State &prev = states[in[pick == in.size() ? 0 : pick]];
-                    st.back = in[pick == in.size() ? 0 : pick];
-                    st.breaks = prev.breaks + (pick == in.size() ? 1u : 0u);
-                    st.ranges = prev.ranges + 1;
-                    st.error = prev.error + total;
+                    const ComputeType reach = total / (ComputeType(1.01) * sigma2);
+                    if (reach > static_cast<ComputeType>(y - x + 1))
+                        y = std::max(y, x + std::min(static_cast<size_t>(reach), n - x) - 1);
                 }
-                incoming[y].push_back(static_cast<uint32_t>(states.size()));
-                states.push_back(st);
             }
+            if (x == 0)
+            {
+                for (const Out &o : outs)
+                    push(o.y, State{0, none, 0, 1, o.total});
+                return;
+            }
+            in_lines.clear();
+            for (uint32_t s : in)
+                in_lines.emplace_back(a.sums(states[s].x, x));
+            out_lines.clear();
+            for (const Out &o : outs)
+                out_lines.emplace_back(a.sums(x, o.y));
+            choosePredecessors(pts, x);
+            const State &cheapest = states[in.front()];
+            const State broken{0, 0, cheapest.breaks + 1, cheapest.ranges, cheapest.error};
+            for (size_t j = 0; j < outs.size(); ++j)
+            {
+                size_t pick = picks[j];
+                // With breaks, a line met only by a state no cheaper than a break from the cheapest one breaks.
+                if (allow_breaks && pick < in.size() && !less(states[in[pick]], broken))
+                    pick = in.size();
+                if (pick == in.size() && !allow_breaks)
+                    continue;
+                const uint32_t back = in[pick == in.size() ? 0 : pick];
+                const State &prev = states[back];
+                push(outs[j].y, State{static_cast<uint32_t>(x), back, prev.breaks + (pick == in.size() ? 1u : 0u), prev.ranges + 1,
+                                      prev.error + outs[j].total});
+            }
+        }
+
+        void push(size_t y, const State &st)
+        {
+            ++work_.states;
+            incoming[y].push_back(static_cast<uint32_t>(states.size()));
+            states.push_back(st);
+        }
+
+        bool meets(const std::vector<VectorType> &pts, size_t k, size_t j, size_t x)
+        {
+            ++work_.corners;
+            return vect_detail::crossingDistanceSquared(pts, in_lines[k], out_lines[j], x) <= delta2;
+        }
+
+        //! picks[j] = the first incoming line (in cost order) that meets outgoing line j within delta at boundary
+        //! x, or in_lines.size() if none does. Few pairs: tried in order. Many: by chords (see the file comment),
+        //! O((I + O) log I) plus the lines near tangent to the disc, which are tried one by one.
+        void choosePredecessors(const std::vector<VectorType> &pts, size_t x)
+        {
+            const size_t ni = in_lines.size(), no = out_lines.size();
+            picks.assign(no, ni);
+            // The cheapest few first (they usually meet); the rest one by one only while that stays cheap.
+            const size_t first = std::min<size_t>(ni, 4);
+            open_.clear();
+            for (size_t j = 0; j < no; ++j)
+            {
+                size_t k = 0;
+                while (k < first && !meets(pts, k, j, x))
+                    ++k;
+                if (k < first)
+                    picks[j] = k;
+                else if (first < ni)
+                    open_.push_back(j);
+            }
+            if (open_.empty())
+                return;
+            if (ni <= 16 || open_.size() * (ni - first) <= 1024)
+            {
+                for (size_t j : open_)
+                    for (size_t k = first; k < ni; ++k)
+                        if (meets(pts, k, j, x)) { picks[j] = k; break; }
+                return;
+            }
+            typedef VectorND<2, ComputeType> CV;
+            const CV m = (pts[x - 1].template cast<ComputeType>() + pts[x].template cast<ComputeType>()) * ComputeType(0.5);
+            ComputeType eta = 0;
+            in_chords.resize(ni);
+            out_chords.resize(no);
+            for (size_t k = first; k < ni; ++k)
+                in_chords[k] = chordOf(in_lines[k], m, eta);
+            for (size_t j : open_)
+                out_chords[j] = chordOf(out_lines[j], m, eta);
+            eta *= 2;
+            const ComputeType pi = std::acos(ComputeType(-1));
+            auto wrap = [&](Chord &c) { if (c.kind == regular && (c.p < -pi + eta || c.q > pi - eta || !(eta < ComputeType(0.01)))) c.kind = tangent; };
+            for (size_t k = first; k < ni; ++k) wrap(in_chords[k]);
+            for (size_t j : open_) wrap(out_chords[j]);
+            // Two chords cross inside the disc iff their ends alternate: p < u < q < v (case 1) or u < p < v < q
+            // (case 2), here with every comparison widened by eta, so no meeting pair is missed.
+            for (int c2 = 0; c2 < 2; ++c2)
+            {
+                items.clear();
+                for (size_t k = first; k < ni; ++k)
+                    if (in_chords[k].kind == regular)
+                        items.push_back(Item{c2 ? -in_chords[k].q : in_chords[k].p, c2 ? in_chords[k].p : in_chords[k].q, k});
+                queries.clear();
+                for (size_t j : open_)
+                    if (out_chords[j].kind == regular)
+                        queries.push_back(Item{c2 ? -out_chords[j].q : out_chords[j].p, 0, j});
+                sweep(pts, x, eta);
+            }
+            for (size_t j : open_)
+            {
+                if (out_chords[j].kind == misses)
+                    continue;
+                for (size_t k = first; k < std::min(picks[j], ni); ++k)
+                    if ((out_chords[j].kind == tangent ? in_chords[k].kind != misses : in_chords[k].kind == tangent) && meets(pts, k, j, x))
+                    {
+                        picks[j] = k;
+                        break;
+                    }
+            }
+        }
+
+        enum : int { regular = 0, tangent = 1, misses = 2 };
+        struct Chord
+        {
+            ComputeType p, q;   // angles of the chord's ends seen from the disc centre, p < q, in (-pi, pi]
+            int kind;
+        };
+        struct Item
+        {
+            ComputeType key, val;
+            size_t index;
+        };
+
+        //! The chord that `line` cuts from the disc of radius delta about m; `eta` grows to the angular error bound.
+        Chord chordOf(const Approximation &line, const VectorND<2, ComputeType> &m, ComputeType &eta) const
+        {
+            typedef VectorND<2, ComputeType> CV;
+            const ComputeType eps = std::numeric_limits<ComputeType>::epsilon();
+            const ComputeType eps_dir = std::max(eps, static_cast<ComputeType>(std::numeric_limits<ElementType>::epsilon()));
+            const CV f = line.projectCompute(m), r = f - m;
+            const CV c = line.point().template cast<ComputeType>();
+            CV d = line.direction().template cast<ComputeType>();
+            const ComputeType dl = std::sqrt(d.lengthSquared());
+            const ComputeType rl = std::sqrt(r.lengthSquared());
+            // Rounding of the foot f (and so of |r|): the centroid, m and the lever arm between them.
+            const ComputeType err_r = 16 * eps * (std::sqrt(m.lengthSquared()) + 2 * std::sqrt(c.lengthSquared()) + std::sqrt(f.lengthSquared()));
+            const ComputeType tau = ComputeType(1e-3);
+            if (!(dl > 0) || !std::isfinite(rl) || !std::isfinite(err_r) || !(err_r < tau * delta_ / 4))
+                return Chord{0, 0, tangent};
+            if (rl > delta_ * (1 + tau))
+                return Chord{0, 0, misses};
+            if (rl > delta_ * (1 - tau))
+                return Chord{0, 0, tangent};
+            d = d * (ComputeType(1) / dl);
+            const ComputeType t = std::sqrt(delta2 - rl * rl);
+            const CV e1 = r + d * t, e2 = r - d * t;
+            const ComputeType a1 = std::atan2(e1.y(), e1.x()), a2 = std::atan2(e2.y(), e2.x());
+            eta = std::max(eta, 2 * err_r / (delta_ * std::sqrt(tau)) + 4 * eps_dir + 8 * eps);
+            return Chord{std::min(a1, a2), std::max(a1, a2), regular};
+        }
+
+        //! One case of the chord test: queries in increasing key; every item with key < query key + eta is in a
+        //! min-tree of ranks ordered by val; the cheapest one with val in (u - eta, v + eta) that meets exactly wins.
+        void sweep(const std::vector<VectorType> &pts, size_t x, ComputeType eta)
+        {
+            if (items.empty() || queries.empty())
+                return;
+            std::sort(items.begin(), items.end(), [](const Item &p, const Item &q) { return p.val < q.val; });
+            vals.clear();
+            const size_t ni = items.size();
+            size_t size = 1;
+            while (size < ni) size *= 2;
+            leaf_of.assign(in_lines.size(), 0);
+            for (size_t i = 0; i < ni; ++i)
+            {
+                vals.push_back(items[i].val);
+                leaf_of[items[i].index] = i;
+            }
+            tree.assign(2 * size, none_rank);
+            order.clear();
+            for (size_t i = 0; i < ni; ++i) order.push_back(i);
+            std::sort(order.begin(), order.end(), [&](size_t p, size_t q) { return items[p].key < items[q].key; });
+            std::sort(queries.begin(), queries.end(), [](const Item &p, const Item &q) { return p.key < q.key; });
+            size_t next = 0;
+            for (const Item &qu : queries)
+            {
+                while (next < ni && items[order[next]].key < qu.key + eta)
+                {
+                    set(size, order[next], items[order[next]].index);
+                    ++next;
+                }
+                const Chord &o = out_chords[qu.index];
+                const size_t lo = static_cast<size_t>(std::upper_bound(vals.begin(), vals.end(), o.p - eta) - vals.begin());
+                const size_t hi = static_cast<size_t>(std::lower_bound(vals.begin(), vals.end(), o.q + eta) - vals.begin());
+                removed.clear();
+                while (lo < hi)
+                {
+                    ++work_.corners;
+                    const size_t k = query(size, lo, hi);
+                    if (k == none_rank || k >= picks[qu.index])
+                        break;
+                    if (meets(pts, k, qu.index, x))
+                    {
+                        picks[qu.index] = k;
+                        break;
+                    }
+                    removed.push_back(k);
+                    set(size, leaf_of[k], none_rank);
+                }
+                for (size_t k : removed)
+                    set(size, leaf_of[k], k);
+            }
+        }
+
+        void set(size_t size, size_t leaf, size_t value)
+        {
+            size_t i = leaf + size;
+            tree[i] = value;
+            for (i /= 2; i > 0; i /= 2)
+                tree[i] = std::min(tree[2 * i], tree[2 * i + 1]);
+        }
+        size_t query(size_t size, size_t lo, size_t hi) const
+        {
+            size_t r = none_rank;
+            for (size_t l = lo + size, h = hi + size; l < h; l /= 2, h /= 2)
+            {
+                if (l & 1) r = std::min(r, tree[l++]);
+                if (h & 1) r = std::min(r, tree[--h]);
+            }
+            return r;
         }
 
         //! The furthest corner reached, and the closest any line pair came to meeting there.
