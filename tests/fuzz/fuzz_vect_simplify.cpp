@@ -57,10 +57,12 @@ namespace
         return r;
     }
 
-    //! DP in long double. `tied` is set when a split point is not decided beyond rounding: another point's
-    //! distance is within `margin` of the farthest one's (the library, measuring in Element, may pick either).
+    //! DP in long double. `tied` is set where the documented rule leaves the decision to rounding: another point's
+    //! distance within `margin` of the farthest one's (the library, measuring in Element, may pick either), or, for
+    //! line distance, a chord shorter than 1e-140 of the chain's extent (documented: such lengths count as 0, so
+    //! the library may measure from the first end point instead of the line; found by the 300 s fuzz run).
     template<int d, typename T>
-    void dpModel(const std::vector<rtl::VectorND<d, T>> &p, size_t a, size_t b, LD eps, bool seg, LD margin, std::vector<char> &keep, bool &tied)
+    void dpModel(const std::vector<rtl::VectorND<d, T>> &p, size_t a, size_t b, LD eps, bool seg, LD margin, LD extent, std::vector<char> &keep, bool &tied)
     {
         std::vector<std::pair<size_t, size_t>> st{{a, b}};
         while (!st.empty())
@@ -69,6 +71,9 @@ namespace
             st.pop_back();
             LD best = eps * eps, runner_up = -1;
             size_t far = 0;
+            LD uu = 0;
+            for (int k = 0; k < d; ++k) uu += ((LD)p[y][k] - (LD)p[x][k]) * ((LD)p[y][k] - (LD)p[x][k]);
+            if (!seg && uu > 0 && std::sqrt(uu) < 1e-140L * extent) tied = true;
             for (size_t i = x + 1; i < y; ++i)
             {
                 const LD q = dist2(p[i], p[x], p[y], seg);
@@ -80,11 +85,11 @@ namespace
         }
     }
     template<int d, typename T>
-    std::vector<size_t> dpRef(const std::vector<rtl::VectorND<d, T>> &p, LD eps, bool seg, LD margin, bool &tied)
+    std::vector<size_t> dpRef(const std::vector<rtl::VectorND<d, T>> &p, LD eps, bool seg, LD margin, LD extent, bool &tied)
     {
         std::vector<char> keep(p.size(), 0);
         keep.front() = keep.back() = 1;
-        dpModel(p, 0, p.size() - 1, eps, seg, margin, keep, tied);
+        dpModel(p, 0, p.size() - 1, eps, seg, margin, extent, keep, tied);
         std::vector<size_t> out;
         for (size_t i = 0; i < p.size(); ++i) if (keep[i]) out.push_back(i);
         return out;
@@ -267,8 +272,8 @@ namespace
                     dp(pts, segs);
                     if (all_finite)
                     {
-                        model_lo = dpRef(pts, e > margin ? e - margin : 0, algo == 1, margin, tied);
-                        model_hi = dpRef(pts, e + margin, algo == 1, margin, tied);
+                        model_lo = dpRef(pts, e > margin ? e - margin : 0, algo == 1, margin, extent, tied);
+                        model_hi = dpRef(pts, e + margin, algo == 1, margin, extent, tied);
                     }
                 }
                 else

@@ -161,3 +161,15 @@ TEST(DouglasPeuckerExact, FarthestPointTiedInElementRounding)
     EXPECT_LE(std::sqrt(pe_test::lineDistance2(pf, 2, 1, 3)), 2.0L);
     EXPECT_LE(std::sqrt(pe_test::lineDistance2(pf, 1, 0, 2)), 2.0L);
 }
+
+// Found by fuzz_vect_simplify (3D double, raw coordinates): a chord far shorter than 1e-150 of the chain's extent
+// counts as length 0 (documented), so the distance is measured from the first end point, not from the line.
+TEST(DouglasPeuckerExact, ChordBelowTheResolvedRangeMeasuresFromItsStart)
+{
+    using V = rtl::Vector3d;
+    rtl::VectorizerDouglasPeucker3d dp(1e250);
+    // The line through the ends is the z axis; the middle point is 1e200 from it but 1e260 from the first end.
+    EXPECT_EQ(keptBy(dp, std::vector<V>{V(0, 0, 0), V(1e200, 0, 1e260), V(0, 0, 1e-170)}), (std::vector<size_t>{0, 1, 2}));
+    // A chord of 1e200 (1e-60 of the extent) is resolved: the line distance, 1e200, is within epsilon.
+    EXPECT_EQ(keptBy(dp, std::vector<V>{V(0, 0, 0), V(1e200, 0, 1e260), V(0, 0, 1e200)}), (std::vector<size_t>{0, 2}));
+}
