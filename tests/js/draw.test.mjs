@@ -136,6 +136,25 @@ test('toTikz: a real scan in the map frame (millimetres, around x 1000-2000) com
   pdflatex(rtl.toTikz({ ...d, points: mm(d.points), segments: mm(d.segments) }));
 });
 
+test('toTikz: 15,000 points are thinned for pdflatex with a note, byte for byte as the native library', () => {
+  // A scan in the map frame, clusters of 60 points, one segment per cluster (as tests/io/t_tikz2d_budget.cpp).
+  const n = 15000, points = new Float64Array(2 * n), labels = new Int32Array(n), segments = [];
+  for (let i = 0; i < n; i++) {
+    const a = (2 * Math.PI * i) / n, r = 20 + 5 * Math.sin(7 * a);
+    points[2 * i] = 1500 + r * Math.cos(a);
+    points[2 * i + 1] = 800 + r * Math.sin(a);
+    labels[i] = Math.floor(i / 60) % 7 === 6 ? -1 : Math.floor(i / 60);
+    if (i % 60 === 59) segments.push(points[2 * (i - 59)], points[2 * (i - 59) + 1], points[2 * i], points[2 * i + 1]);
+  }
+  const d = { points, labels, segments, title: 'big' };
+  const tex = rtl.toTikz({ ...d, standalone: false });
+  assert.ok(tex.includes("{Thinned for pdflatex's memory: 1 in 2 marks and line points drawn (7500 of 15000 marks).};\n\\end{tikzpicture}"));
+  assert.equal(tex.match(/^\\Mark[A-Z]+\{/gm).length, 7500);
+  assert.equal(tex, native(['tikz-bare', f64(points), f64(labels), f64(segments), text('big'), 12, 12, 0.03]));
+  // The SVG has no such limit: every point is drawn.
+  assert.equal(rtl.toSvg(d).match(/<use /g).length, n);
+});
+
 // A unit cube's floor (plane), one wall outline, points on a line, a segment.
 const scene = {
   dim: 3,
