@@ -1,7 +1,8 @@
 // The exact partition search's bounded corner work (issue 15 item 7): on chains of long straight runs joined by
 // steps that no line pair meets (where each boundary had to test every incoming line against every outgoing one),
 // PartitionSearch2D finds the same optimum as a dynamic programme that tests every pair, with corner work within
-// a log factor of its states; AFTLS runs the exact search once when both of its branches need it.
+// a log factor of its fits, by default and with the chord query at every boundary; AFTLS runs the exact search
+// once when both of its branches need it.
 #include <cmath>
 #include <limits>
 #include <random>
@@ -148,33 +149,39 @@ TEST(PartitionSearch2D, SameOptimumAsEveryPairWithBoundedCornerWork)
             Arr a;
             a.resize(pts.size());
             a.precompute(pts);
-            Search s;
-            s.setSigma(sigma);
-            s.setDelta(delta);
-            s.setAllowBreaks(breaks);
-            std::vector<Line> lines;
-            std::vector<Range> idx;
-            const bool ok = s(pts, a, lines, idx);
             const Optimum ref = everyPair(pts, a, sigma, delta, breaks);
-            ASSERT_EQ(ok, ref.found);
-            if (ok)
+            for (bool chords : {false, true})
             {
-                ++found;
-                EXPECT_EQ(s.breaks().size(), ref.breaks);
-                EXPECT_EQ(idx.size(), ref.ranges);
-                EXPECT_NEAR(totalError(lines), ref.error, 1e-9 * (1 + ref.error));
-                ASSERT_EQ(idx.front().first, 0u);
-                ASSERT_EQ(idx.back().second, pts.size());
-                for (size_t r = 1; r < idx.size(); ++r)
-                    ASSERT_EQ(idx[r].first, idx[r - 1].second);
+                SCOPED_TRACE(testing::Message() << "chord query everywhere " << chords);
+                Search s;
+                s.setSigma(sigma);
+                s.setDelta(delta);
+                s.setAllowBreaks(breaks);
+                if (chords)
+                    s.setCornerScan(1, 0);
+                std::vector<Line> lines;
+                std::vector<Range> idx;
+                const bool ok = s(pts, a, lines, idx);
+                ASSERT_EQ(ok, ref.found);
+                if (ok)
+                {
+                    ++found;
+                    EXPECT_EQ(s.breaks().size(), ref.breaks);
+                    EXPECT_EQ(idx.size(), ref.ranges);
+                    EXPECT_NEAR(totalError(lines), ref.error, 1e-9 * (1 + ref.error));
+                    ASSERT_EQ(idx.front().first, 0u);
+                    ASSERT_EQ(idx.back().second, pts.size());
+                    for (size_t r = 1; r < idx.size(); ++r)
+                        ASSERT_EQ(idx[r].first, idx[r - 1].second);
+                }
+                const auto &w = s.work();
+                // Corner work within a log factor of the fits (testing every pair took up to fits x incoming).
+                EXPECT_LE(w.corners, 64 * (w.fits + pts.size()) * static_cast<size_t>(std::log2(pts.size())));
+                saved += chords && ref.tests > 10 * w.corners;
             }
-            const auto &w = s.work();
-            // Corner work within a log factor of the states (testing every pair took up to states x incoming).
-            EXPECT_LE(w.corners, 4 * (w.states + pts.size()) * static_cast<size_t>(std::log2(pts.size())));
-            saved += ref.tests > 10 * w.corners;
         }
-    EXPECT_GE(found, 8u);
-    EXPECT_GE(saved, 4u);   // the chains where every pair is tested do many times the work
+    EXPECT_GE(found, 16u);
+    EXPECT_GE(saved, 4u);   // the chord query does a fraction of testing every pair
 }
 
 TEST(VectorizerAFTLS, BothBranchesInTheExactSearchSearchOnce)

@@ -206,6 +206,11 @@ namespace rtl
             return true;
         }
 
+        //! How corners are searched: the `first` cheapest incoming lines are tried one by one, then all of them
+        //! while that costs at most `share` tests per line at the boundary, else the chord query (defaults 16, 32;
+        //! the result is the same, first = 1 and share = 0 make every boundary use the chord query).
+        void setCornerScan(size_t first, size_t share) { scan_first = std::max<size_t>(first, 1); scan_share = share; }
+
         //! Work done since construction: range fits evaluated, and corner tests plus chord-tree queries (a bound
         //! on either per call is what the fuzz harness checks, so that a slow case cannot pass unseen).
         struct Work
@@ -243,6 +248,7 @@ namespace rtl
         static constexpr size_t none_rank = std::numeric_limits<size_t>::max();
         std::vector<ComputeType> vals;
         Work work_;
+        size_t scan_first{16}, scan_share{32};
         struct Chord;
         struct Item;
         std::vector<Chord> in_chords, out_chords;
@@ -374,7 +380,7 @@ namespace rtl
             const size_t ni = in_lines.size(), no = out_lines.size();
             picks.assign(no, ni);
             // The cheapest few first (they usually meet); the rest one by one only while that stays cheap.
-            const size_t first = std::min<size_t>(ni, 4);
+            const size_t first = std::min(ni, scan_first);
             open_.clear();
             for (size_t j = 0; j < no; ++j)
             {
@@ -388,7 +394,7 @@ namespace rtl
             }
             if (open_.empty())
                 return;
-            if (ni <= 16 || open_.size() * (ni - first) <= 1024)
+            if (open_.size() * (ni - first) <= scan_share * (ni + open_.size()))   // a bounded share of this boundary's lines
             {
                 for (size_t j : open_)
                     for (size_t k = first; k < ni; ++k)
