@@ -8,7 +8,10 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <iterator>
+#include <type_traits>
 
 #include "rtl/core/LineSegmentND.h"
 #include "rtl/core/VectorND.h"
@@ -130,6 +133,46 @@ namespace rtl
             if (!std::isfinite(a + b + c))
                 return false;
             return a < 0 || b < 0 || a * b < c * c;
+        }
+
+        //! errorBelowRaw for `block` consecutive states of one range, all at once: s[k * block + j] is sum k (PrecSums2D
+        //! order) after point j, of n0 + j points. True iff errorBelowRaw holds for every j; the arithmetic per state
+        //! is errorBelowRaw's, evaluated without branches, for double on GCC/clang vector lanes (SSE2: 2 per
+        //! instruction), so the decisions are the same.
+        template<size_t block>
+        static bool errorBelowRawAll(const ComputeType *s, ComputeType n0, ComputeType sigma2)
+        {
+#if defined(__GNUC__)
+            if constexpr (std::is_same_v<ComputeType, double> && block % 2 == 0)
+            {
+                typedef double V __attribute__((vector_size(16)));
+                typedef long long M __attribute__((vector_size(16)));
+                M all = {-1, -1};
+                const V zero = {0, 0};
+                for (size_t j = 0; j < block; j += 2)
+                {
+                    V s0, s1, s2, s3, s4;
+                    std::memcpy(&s0, s + j, sizeof(V));
+                    std::memcpy(&s1, s + block + j, sizeof(V));
+                    std::memcpy(&s2, s + 2 * block + j, sizeof(V));
+                    std::memcpy(&s3, s + 3 * block + j, sizeof(V));
+                    std::memcpy(&s4, s + 4 * block + j, sizeof(V));
+                    const V n = V{n0 + static_cast<double>(j), n0 + static_cast<double>(j + 1)};
+                    const V t = n * n * sigma2;
+                    const V a = n * s2 - s0 * s0 - t, b = n * s3 - s1 * s1 - t, c = n * s4 - s0 * s1;
+                    const V f = a + b + c;
+                    all &= (f - f == zero) & ((a < zero) | (b < zero) | (a * b < c * c));
+                }
+                return (all[0] & all[1]) != 0;
+            }
+#endif
+            bool all = true;
+            for (size_t j = 0; j < block; ++j)
+            {
+                const ComputeType q[5] = {s[j], s[block + j], s[2 * block + j], s[3 * block + j], s[4 * block + j]};
+                all &= errorBelowRaw(q, n0 + static_cast<ComputeType>(j), sigma2);
+            }
+            return all;
         }
 
     private:

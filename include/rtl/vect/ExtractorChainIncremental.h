@@ -60,8 +60,36 @@ namespace rtl
             size_t beg = 0;
             ComputeVectorType origin = pts[0].template cast<ComputeType>();
             ComputeType s[PrecSumsType::sumNr()] = {};
+            [[maybe_unused]] size_t scalar_until = 0;   // after a block with a closing point: point by point
             for (size_t i = 0; i < n; ++i)
             {
+                if constexpr (hasBlockTest<Approximation>(0))
+                    if (i >= scalar_until && i - beg >= 2 && n - i >= block && !(Observer::enabled && observer_))
+                    {
+                        // The next `block` points added and tested as the loop below would (same sums, same
+                        // test per point), the tests side by side; a block in which some point closes the range
+                        // is redone point by point, so the decisions and sums are those of the plain loop.
+                        ComputeType c[PrecSumsType::sumNr()], states[PrecSumsType::sumNr() * block];
+                        for (size_t k = 0; k < PrecSumsType::sumNr(); ++k)
+                            c[k] = s[k];
+                        for (size_t j = 0; j < block; ++j)
+                        {
+                            ComputeType d[dim];
+                            for (int k = 0; k < dim; ++k)
+                                d[k] = static_cast<ComputeType>(pts[i + j][k]) - origin[k];
+                            add(c, d, ComputeType(1));
+                            for (size_t k = 0; k < PrecSumsType::sumNr(); ++k)
+                                states[k * block + j] = c[k];
+                        }
+                        if (Approximation::template errorBelowRawAll<block>(states, static_cast<ComputeType>(i + 1 - beg), sigma2))
+                        {
+                            for (size_t k = 0; k < PrecSumsType::sumNr(); ++k)
+                                s[k] = c[k];
+                            i += block - 1;
+                            continue;
+                        }
+                        scalar_until = i + block;
+                    }
                 ComputeType d[dim];
                 for (int k = 0; k < dim; ++k)
                     d[k] = static_cast<ComputeType>(pts[i][k]) - origin[k];
@@ -110,6 +138,13 @@ namespace rtl
         }
 
     private:
+        static constexpr size_t block = 16;
+        //! Whether Approximation tests several states of a range at once (errorBelowRawAll).
+        template<class A>
+        static constexpr auto hasBlockTest(int) -> decltype(A::template errorBelowRawAll<block>(nullptr, ComputeType(0), ComputeType(0)), bool()) { return true; }
+        template<class A>
+        static constexpr bool hasBlockTest(...) { return false; }
+
         //! How attachLastPoint placed the last point: the first `kept` ranges are unchanged; ItlsTailMethod.
         //! Recorded only for an enabled Observer (so that the untraced code is the code without tracing).
         struct TailPlacement { size_t kept; int method; };

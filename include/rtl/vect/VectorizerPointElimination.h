@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <algorithm>
 #include <limits>
 #include <type_traits>
@@ -139,7 +140,32 @@ namespace rtl
             const Element lim = std::sqrt(std::sqrt(std::numeric_limits<Element>::max() / 256));
             Element max_abs = 0;
             int ok = 1;
-            if constexpr (dimensions == 2 || dimensions == 3)
+            // 2D: the first range's scan (chord 0 -> n - 1) is done in the pass that copies and checks the
+            // coordinates (same operations as farthestSoa, so the same pick); used only if the chain is tame.
+            [[maybe_unused]] size_t first_far = 0;
+            [[maybe_unused]] Element first_l2 = 0;
+            if constexpr (dimensions == 2)
+            {
+                soa.resize(2 * n);
+                Element *x = soa.data(), *y = x + n;
+                const Element ax = input[0][0], ay = input[0][1];
+                const Element ux = input[n - 1][0] - ax, uy = input[n - 1][1] - ay;
+                first_l2 = (input[n - 1] - input[0]).lengthSquared();
+                Element best_c = eps2 * first_l2;
+                for (size_t i = 0; i < n; ++i)
+                {
+                    const Element vx = input[i][0], vy = input[i][1];
+                    x[i] = vx;
+                    y[i] = vy;
+                    const Element mx = std::abs(vx), my = std::abs(vy);
+                    ok &= static_cast<int>(mx <= lim) & static_cast<int>(my <= lim);
+                    max_abs = mx > max_abs ? mx : max_abs;
+                    max_abs = my > max_abs ? my : max_abs;
+                    const Element c = (vx - ax) * uy - (vy - ay) * ux, c2 = c * c;
+                    if (c2 > best_c && i + 1 < n && i > 0) { best_c = c2; first_far = i; }
+                }
+            }
+            else if constexpr (dimensions == 3)
             {
                 // Coordinates as separate arrays: the distance scans below then run on plain SIMD lanes.
                 soa.resize(dimensions * n);
@@ -179,7 +205,14 @@ namespace rtl
                 stack.pop_back();
                 if (b - a < 2)
                     continue;
-                const size_t far = pick(input, a, b);
+                size_t far;
+                if constexpr (dimensions == 2)
+                    far = a == 0 && b == n - 1 && tame && distance_ == DpDistance::Line && first_l2 > Element(0) &&
+                                  eps2 * first_l2 >= std::numeric_limits<Element>::min()
+                              ? first_far
+                              : pick(input, a, b);
+                else
+                    far = pick(input, a, b);
                 if constexpr (Observer::enabled)
                     if (observer_)
                         reportRange(input, a, b, far);
@@ -427,6 +460,37 @@ namespace rtl
             };
             constexpr size_t block = 16;
             size_t i = a + 1;
+#if defined(__GNUC__)
+            // 2D float/double: the same per-point operations on GCC/clang vector lanes (SSE2: 4 floats or 2 doubles
+            // per instruction), so the same values; a block with a point beyond the best is rescanned in order.
+            if constexpr (dimensions == 2 && (std::is_same_v<Element, float> || std::is_same_v<Element, double>))
+            {
+                typedef Element V __attribute__((vector_size(16)));
+                constexpr size_t lanes = 16 / sizeof(Element);
+                for (; i + block <= b; i += block)
+                {
+                    const V bc = V{} + best_c;
+                    V any = V{};
+                    for (size_t q = 0; q < block; q += lanes)
+                    {
+                        V vx, vy;
+                        std::memcpy(&vx, x + i + q, sizeof(V));
+                        std::memcpy(&vy, y + i + q, sizeof(V));
+                        const V c = (vx - ax) * uy - (vy - ay) * ux;
+                        any = (c * c > bc) ? V{} + Element(1) : any;
+                    }
+                    bool beats = false;
+                    for (size_t l = 0; l < lanes; ++l)
+                        beats |= any[l] != Element(0);
+                    if (beats)
+                        for (size_t k = 0; k < block; ++k)
+                        {
+                            const Element c2 = cross2(i + k);
+                            if (c2 > best_c) { best_c = c2; best = i + k; }
+                        }
+                }
+            }
+#endif
             for (; i + block <= b; i += block)
             {
                 Element c2[block];
