@@ -13,8 +13,10 @@
 // cluster; they still occupy their index. Each cluster lists its points in increasing scan order, with at most
 // step - 2 indices skipped between consecutive points; a cluster that wraps the seam (its indices in increasing
 // order skip more than step - 2 once) starts with its end-of-scan part, after that skip. A cluster that covers
-// every index without such a skip is listed in increasing order, even if it was joined across the seam. grabCluster() hands clusters out in the order of their smallest index. Step 1 gives one cluster per valid
-// point.
+// every index without such a skip is listed in increasing order, even if it was joined across the seam.
+// grabCluster() hands clusters out in the order of their smallest index. Step 1 gives one cluster per valid point.
+// loadData keeps a copy of the scan (reused by the next call); grabCluster copies each cluster out of it, so that a
+// caller that drops each cluster before grabbing the next reuses one block of memory.
 //
 // Tracing (core/Trace.h): CAR_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
 // of loadData as the events of seg/SegTrace.h (use rtl::CarTraceLog to record them). A traced loadData runs the

@@ -237,7 +237,8 @@ namespace rtl
             wpts_[slot] = pt;
             wrec_[slot] = rec;
             widx_[slot] = stream_++;
-            uniform_ = rec != none && count_ == step_ && std::all_of(wrec_.begin(), wrec_.end(), [rec](size_t r) { return r == rec; });
+            // every slot holds rec exactly when rec counts step_ window points (in_window counts them)
+            uniform_ = rec != none && lists_.recs[rec].in_window == step_;
         }
 
         struct Record
@@ -468,9 +469,13 @@ namespace rtl
         // Step 1 streams the points of one cluster into a small staging array first, and appends them to the alive
         // list in blocks: a push_back per point would chain four dependent loads (record, map node, vector end).
         // Everything that reads or changes alive lists flushes it first.
-        RTL_SEG_NOINLINE void flushStage() const
+        void flushStage() const
         {
-            if (staged_ == 0) return;
+            if (staged_ != 0) appendStage();
+        }
+
+        RTL_SEG_NOINLINE void appendStage() const
+        {
             std::vector<VectorType> &v = lists_.recs[stage_rec_].alive->second;
             v.insert(v.end(), stage_.begin(), stage_.begin() + static_cast<std::ptrdiff_t>(staged_));
             staged_ = 0;
