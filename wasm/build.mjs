@@ -2,6 +2,8 @@
 // Builds the rtl-wasm package into dist/: configures and builds wasm/ with emcmake (build dir build/wasm), checks
 // that the ES6 and CommonJS links produced the same rtl.wasm, and assembles the JS entries and the .d.ts.
 //   node wasm/build.mjs            (npm run build)     RTL_JOBS=n  parallel compile jobs (default: all cores)
+//   RTL_WASM_BUILD_DIR=dir, RTL_DIST_DIR=dir (relative to the repository; defaults build/wasm, dist): build a variant
+//   (a folder configured beforehand with other options keeps them) into its own package folder, leaving dist/ alone.
 import { execFileSync } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
@@ -9,8 +11,8 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
-const BUILD = join(ROOT, 'build', 'wasm');
-const DIST = join(ROOT, 'dist');
+const BUILD = resolve(ROOT, process.env.RTL_WASM_BUILD_DIR || join('build', 'wasm'));
+const DIST = resolve(ROOT, process.env.RTL_DIST_DIR || 'dist');
 const JS = join(ROOT, 'wasm', 'js');
 
 function fail(msg) {
@@ -35,6 +37,10 @@ function hasCommand(cmd) {
     return false;
   }
 }
+
+// dist/ is deleted and rewritten below: never let a variant's folder be the repository or one of its parents.
+if (ROOT === DIST || ROOT.startsWith(DIST + '/') || !DIST.startsWith(ROOT + '/'))
+  fail(`RTL_DIST_DIR must be a folder inside the repository, not ${DIST}`);
 
 if (!hasCommand('emcmake')) fail('emcmake not found: install Emscripten (apt-get install emscripten)');
 
