@@ -20,6 +20,7 @@
 #include "rtl/Transformation.h"
 #include "rtl/io/LaTeXTikzCommon.h"
 #include "rtl/io/LaTeXUtility.h"
+#include "rtl/io/TikzBudget.h"
 
 namespace rtl
 {
@@ -43,6 +44,11 @@ namespace rtl
     //! - Styles, colours and mark templates follow LaTeXTikz2D (StyleA, ColorA, \MarkA). 3D marks take four arguments
     //!   (x, y, rotation in degrees, scale); the scale is mark_radius times the perspective factor relative to the
     //!   centre of the rendered region, so a mark there is \MarkRadius = 0.1 cm * mark_radius.
+    //! - pdflatex's memory (TikzBudget.h), an addition to RTL: a scene beyond texMarkLimit() mark equivalents
+    //!   (default Drawing2D::pdflatex_mark_limit, 8,000; a mark counts 1, a line, axis, face fill or face outline
+    //!   1/2; axis labels and BSP splits are not counted) is written with every k-th added mark only and a note below
+    //!   the picture; scenes within it are written as before, byte for byte. If the lines, axes and faces alone
+    //!   exceed it, writeTEX/writeTikz throw std::length_error before writing anything. setTexMarkLimit(0): no limit.
     class LaTeXTikz3D
     {
     public:
@@ -104,6 +110,9 @@ namespace rtl
             view_tr = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
         }
         void setBorder(float border) { border_cm = std::max(0.0f, border); }
+        //! Budget in mark equivalents (see the class comment); 0: no limit (lualatex, whose memory grows).
+        void setTexMarkLimit(size_t limit) { tex_mark_limit = limit; }
+        size_t texMarkLimit() const { return tex_mark_limit; }
         //! Non-empty: a frame around the picture drawn with this TikZ option text, e.g. "draw=black, thick".
         void setFrameStyle(const std::string &style) { frame_style = style; }
         void setGridAxisOverrun(unsigned int type, float magnitude)
@@ -135,6 +144,7 @@ namespace rtl
             overrun_magnitude = 5.0f;
             clip_set = false;
             min_region = max_region = false;
+            tex_mark_limit = Drawing2D::pdflatex_mark_limit;
         }
         //! Removes objects, styles, colours and marks; keeps size, border, view and regions.
         void clearData()
@@ -153,23 +163,27 @@ namespace rtl
             return min_region || !mark_items.empty() || !line_items.empty() || !face_items.empty();
         }
 
-        //! Writes the standalone document if hasContent(); throws std::runtime_error if the file cannot be written.
+        //! Writes the standalone document if hasContent(); throws std::runtime_error if the file cannot be written
+        //! and std::length_error (file not touched) if the scene cannot be thinned into texMarkLimit().
         void writeTEX(const std::string &file_name)
         {
             if (!hasContent())
                 return;
+            thinning();
             latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
         void writeTEX(std::ostream &os)
         {
             if (!hasContent())
                 return;
+            thinning();   // throws before the preamble is written
             latex_detail::writeTikzDocument(os, border_cm, [this](std::ostream &o) { writeTikz(o); });
         }
         //! Writes only the tikzpicture (everything it defines is local to it). A scene without objects and without
-        //! a min region gives an empty picture of the export size.
+        //! a min region gives an empty picture of the export size. Thinned or std::length_error as in the class comment.
         void writeTikz(std::ostream &os)
         {
+            const latex_detail::TikzThinning thin = thinning();
             std::string out = "\\begin{tikzpicture}[";
             out += names.styleOptions();
             out += "]\n";
@@ -184,9 +198,12 @@ namespace rtl
             out += "\\clip (" + pt(c_lo.x(), c_lo.y()) + ") rectangle (" + pt(c_hi.x(), c_hi.y()) + ");\n";
             os << out;
             out.clear();
-            render(out, c_lo, c_hi);
+            render(out, c_lo, c_hi, thin);
             os << out;
             out = "\\end{scope}\n";
+            if (thin.thinned())
+                out += "\\node[anchor=north west, yshift=-0.1cm] at (" + pt(-hw, -hh) + ") {" +
+                       latex_detail::tikzMarkThinningNote(thin) + "};\n";
             if (!frame_style.empty())
                 out += "\\draw[" + frame_style + "] (" + pt(-hw, -hh) + ") rectangle (" + pt(hw, hh) + ");\n";
             out += "\\end{tikzpicture}\n";
@@ -685,7 +702,16 @@ namespace rtl
             side(cam_front);
         }
 
-        void render(std::string &out, const Eigen::Vector2d &c_lo, const Eigen::Vector2d &c_hi)
+        latex_detail::TikzThinning thinning() const
+        {
+            size_t fixed = line_items.size() + axis_items.size();
+            for (const auto &f : face_items)
+                fixed += static_cast<size_t>(!f.front.empty() || !f.back.empty()) + static_cast<size_t>(!f.line.empty());
+            return latex_detail::tikzMarkThinning(mark_items.size(), fixed, tex_mark_limit, "LaTeXTikz3D::writeTikz");
+        }
+
+        void render(std::string &out, const Eigen::Vector2d &c_lo, const Eigen::Vector2d &c_hi,
+                    const latex_detail::TikzThinning &thin)
         {
             V3 lo, hi;
             if (!region(lo, hi))
@@ -733,7 +759,7 @@ namespace rtl
             std::map<std::string, size_t> style_index;
             for (const auto &l : line_items)
                 addLineItem(items, R * l.a + t, R * l.b + t, l.style, style_index, planes);
-            for (size_t i = 0; i < mark_items.size(); ++i)
+            for (size_t i = 0; i < mark_items.size(); i += thin.stride)
             {
                 V3 p = R * mark_items[i].p + t;
                 bool inside = true;
@@ -835,6 +861,7 @@ namespace rtl
         bool clip_set = false;
         Eigen::Vector2d clip_min = Eigen::Vector2d::Zero(), clip_max = Eigen::Vector2d::Zero();
         std::string frame_style;
+        size_t tex_mark_limit = Drawing2D::pdflatex_mark_limit;
         unsigned int overrun_type = overrun_relative;
         float overrun_magnitude = 5;
         bool min_region = false, max_region = false;

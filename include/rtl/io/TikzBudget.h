@@ -7,6 +7,7 @@
 // a polyline point about 1/8, an edge (one \draw) about 1/2.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -71,6 +72,35 @@ namespace rtl
         inline std::string tikzThinningNote(const TikzThinning &t)
         {
             return "Thinned for pdflatex's memory: 1 in " + std::to_string(t.stride) + " marks and line points drawn (" +
+                   std::to_string(t.kept) + " of " + std::to_string(t.marks) + " marks).";
+        }
+
+        //! The 3D writer's budget (LaTeXTikz3D.h): `marks` marks count 1 each, `fixed` other pieces (lines, axes, face
+        //! fills and outlines) 1/2 each; only marks are thinned. 3D dot marks broke pdflatex between 10,000 and 11,000
+        //! (same TeX as above), so the 2D default keeps a margin there too. Throws std::length_error if `fixed` alone
+        //! exceeds `limit` (0: no limit).
+        inline TikzThinning tikzMarkThinning(size_t marks, size_t fixed, size_t limit, const std::string &who)
+        {
+            TikzThinning t;
+            t.marks = t.kept = marks;
+            const double lim = static_cast<double>(limit), rest = 0.5 * static_cast<double>(fixed);
+            if (limit == 0 || static_cast<double>(marks) + rest <= lim)
+                return t;
+            if (rest > lim)
+                throw std::length_error(who + ": " + std::to_string(fixed) + " lines, axes and face paths exceed "
+                                        "pdflatex's memory (texMarkLimit " + std::to_string(limit) +
+                                        " marks, one of these counts 1/2)");
+            const double room = lim - rest >= 1.0 ? lim - rest : 1.0;
+            t.stride = std::max<size_t>(2, static_cast<size_t>(std::ceil(static_cast<double>(marks) / room)));
+            t.kept = (marks + t.stride - 1) / t.stride;
+            return t;
+        }
+
+        //! The note of a picture thinned by tikzMarkThinning, e.g. "Thinned for pdflatex's memory: 1 in 2 marks drawn
+        //! (6000 of 12000 marks)."
+        inline std::string tikzMarkThinningNote(const TikzThinning &t)
+        {
+            return "Thinned for pdflatex's memory: 1 in " + std::to_string(t.stride) + " marks drawn (" +
                    std::to_string(t.kept) + " of " + std::to_string(t.marks) + " marks).";
         }
     }
