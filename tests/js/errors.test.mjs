@@ -49,3 +49,34 @@ test('100,000 failing calls over all functions: no leak, no stack drift, module 
   tree.dispose();
   stream.dispose();
 });
+
+// The input check runs block-wise (256 numbers at a time) before it looks for the culprit: a bad number in any
+// block, first or last position included, is found and named; good inputs of every length pass.
+test('the input check finds a bad number in any block and names its point and index', async () => {
+  const rtl = await init();
+  const line = (n) => Float64Array.from({ length: 2 * n }, (_, i) => (i % 2 ? 0.001 * (i % 7) : 0.01 * (i >> 1)));
+  for (const n of [2, 128, 129, 1000]) {
+    assert.equal(rtl.vectorize(line(n), { method: 'dp' }).ok, true);
+    assert.equal(rtl.segment(line(n)).labels.length, n);
+    for (const at of [0, 255, 256, 257, 2 * n - 1]) {
+      if (at >= 2 * n) continue;
+      const where = `point ${at >> 1} has`;
+      for (const [bad, text] of [[NaN, 'a non-finite coordinate \\(NaN\\)'], [Infinity, 'a non-finite coordinate \\(Infinity\\)'],
+        [-Infinity, 'a non-finite coordinate \\(-Infinity\\)'], [2e18, 'the coordinate 2e\\+18']]) {
+        const xy = line(n);
+        xy[at] = bad;
+        assert.throws(() => rtl.vectorize(xy, { method: 'ftls' }), (e) => e instanceof RangeError &&
+          new RegExp(`^vectorize: ${where} ${text} at index ${at}`).test(e.message), `vectorize n=${n} at=${at} ${bad}`);
+        if (Number.isNaN(bad)) {
+          assert.equal(rtl.segment(xy).labels[at >> 1], -1, `segment: a NaN point is a gap (n=${n} at=${at})`);
+        } else if (!Number.isFinite(bad)) {
+          assert.throws(() => rtl.segment(xy), (e) => e instanceof RangeError &&
+            new RegExp(`^segment: ${where} ${text} at index ${at}$`).test(e.message), `segment n=${n} at=${at} ${bad}`);
+        }
+        if (!Number.isFinite(bad))
+          assert.throws(() => rtl.simplify(xy, 0.1, true), (e) => e instanceof RangeError &&
+            new RegExp(`^simplify: ${where} ${text} at index ${at}$`).test(e.message), `simplify n=${n} at=${at} ${bad}`);
+      }
+    }
+  }
+});

@@ -132,6 +132,29 @@ test('simplify-js defaults: tolerance 1, fast mode; 2 or fewer points come back 
   assert.ok(out.every((p) => p === tagged[p.id]), 'the caller\'s own objects, extra properties included');
 });
 
+// The radial pre-pass compares the last point with the last kept one by object identity (simplify-js's
+// `prevPoint !== point`), not by index: an array holding one object several times must come out as simplify-js's.
+test('simplify fast mode: repeated objects and a non-finite point the pre-pass would drop', () => {
+  const a = { x: 0, y: 0 }, b = { x: 5, y: 0 }, c = { x: 5, y: 3 };
+  const cases = [[a, a, a], [a, a, a, a, a], [a, b, b], [a, b, a], [a, b, c, b, b], [a, c, a, b, a, a], [b, a, c, a, a, b, b]];
+  for (const pts of cases) {
+    for (const tol of [0, 1, 10]) {
+      sameObjects(rtl.simplify(pts, tol), simplifyJs(pts, tol), `${JSON.stringify(pts)} tol=${tol}`);
+      sameObjects(rtl.simplify(pts, tol, true), simplifyJs(pts, tol, true), `${JSON.stringify(pts)} tol=${tol} hq`);
+    }
+  }
+  assert.deepEqual(rtl.simplify([a, a, a], 1), [a, a], 'one object throughout: simplify-js returns it twice');
+  // 0.001 from its predecessor: the pre-pass would drop it, the check still sees it (all modes, 2D and 3D)
+  const near = [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1.001, y: NaN }, { x: 2, y: 0 }];
+  for (const hq of [false, true]) {
+    throwsWith(() => rtl.simplify(near, 0.5, hq), RangeError, /^simplify: point 2 has a non-finite coordinate \(NaN\) at index 5$/);
+    throwsWith(() => rtl.simplify(near.map((p, i) => ({ ...p, z: i === 1 ? Infinity : 0 })), 0.5, hq), RangeError,
+      /^simplify: point 1 has a non-finite coordinate \(Infinity\) at index 5$/);
+  }
+  // a wrong type after a non-finite number: the TypeError wins, as the check of the types comes first
+  throwsWith(() => rtl.simplify([...near, { x: 'a', y: 0 }], 0.5), TypeError, /^simplify: points\[4\]\.x and \.y must be numbers/);
+});
+
 test('simplify {x, y, z}: the same objects as simplify-js\'s 3D variant (and dim 2 ignores z, as simplify-js)', () => {
   for (const n of [10, 1000, 100_000]) {
     for (const [name, pts, tol] of [['semicircle', semicircle(n, 3, 3), 0.02], ['walk', walk(n, 4, 3), 1]]) {

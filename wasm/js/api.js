@@ -477,6 +477,7 @@ function wrap(m) {
     };
   }
 
+  const simplifier = makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; });
   const api = {
     version: VERSION,
     fitLine,
@@ -489,11 +490,11 @@ function wrap(m) {
     readCarmenLog,
     readCarmen: readCarmenLog,
     readOrganizedLidar,
-    simplify: makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; }),
+    simplify: simplifier.simplify,
     // Frees the input buffer, vectorizers and segmenters kept between calls (they grow back on the next call).
-    releaseBuffers: () => m.releaseBuffers(),
+    releaseBuffers: () => { simplifier.release(); m.releaseBuffers(); },
     // Malloc heap in use once the kept buffers are released: equal figures before and after calls mean no leak.
-    heapInUse: () => { m.releaseBuffers(); return m.heapInUse(); },
+    heapInUse: () => { simplifier.release(); m.releaseBuffers(); return m.heapInUse(); },
     memoryBytes: () => m.memoryBytes(),
     stackPointer: () => m.stackPointer(),
   };

@@ -157,6 +157,23 @@ inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::
   const std::size_t n = len / dim;
   if (n < minPoints)
     throw std::invalid_argument(std::string(fn) + ": needs at least " + str(minPoints) + " points, got " + str(n));
+  // Fast pass, branch-free per block: |v| <= limit is false for NaN and, with a finite limit, for +-Infinity;
+  // v - v == 0 is false for NaN and +-Infinity. Only an input that fails it is scanned again for the message.
+  const double limit = maxMagnitude;
+  const bool finiteLimit = std::isfinite(limit);
+  bool ok = true;
+  for (std::size_t i = 0; i < len && ok;) {
+    const std::size_t end = std::min(len, i + 256);
+    bool blockOk = true;
+    if (allowGaps)  // NaN passes, +-Infinity and |v| > limit do not
+      for (; i < end; ++i) blockOk &= !(std::fabs(xy[i]) > limit) & (std::fabs(xy[i]) != HUGE_VAL);
+    else if (finiteLimit)
+      for (; i < end; ++i) blockOk &= std::fabs(xy[i]) <= limit;
+    else
+      for (; i < end; ++i) blockOk &= xy[i] - xy[i] == 0;
+    ok = blockOk;
+  }
+  if (ok) return;
   for (std::size_t i = 0; i < len; ++i) {
     const double v = xy[i];
     if (std::isfinite(v)) {
