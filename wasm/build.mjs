@@ -47,10 +47,13 @@ if (!hasCommand('emcmake')) fail('emcmake not found: install Emscripten (apt-get
 const pkg = JSON.parse(readFileSync(join(ROOT, 'package.json'), 'utf8'));
 const jobs = String(Number(process.env.RTL_JOBS) || availableParallelism());
 
+// The package's configuration, given explicitly so that a build folder cached with older defaults follows it; a
+// variant folder (RTL_WASM_BUILD_DIR) keeps the options it was configured with.
+const packageOptions = process.env.RTL_WASM_BUILD_DIR ? [] : ['-DRTL_WASM_SIMD128=ON', '-DRTL_WASM_NATIVE_EH=ON'];
 // Configure (cheap when nothing changed). Eigen3_DIR: find_package fails under emcmake without it; the emulator
 // override: emcmake's default passes a flag Node 20 rejects.
 run('emcmake', ['cmake', '-S', '.', '-B', BUILD, '-DCMAKE_BUILD_TYPE=Release', '-DEigen3_DIR=/usr/share/eigen3/cmake',
-  '-DCMAKE_CROSSCOMPILING_EMULATOR=/usr/bin/node', '-DRTL_BUILD_WASM=ON', '-DRTL_INSTALL=OFF']);
+  '-DCMAKE_CROSSCOMPILING_EMULATOR=/usr/bin/node', '-DRTL_BUILD_WASM=ON', '-DRTL_INSTALL=OFF', ...packageOptions]);
 run('cmake', ['--build', BUILD, '-j', jobs, '--target', 'rtl_wasm_es', 'rtl_wasm_node']);
 
 const es = join(BUILD, 'wasm', 'es');
