@@ -87,10 +87,22 @@ export = init;
 `;
 }
 
+// The shipped JS is minified (whitespace, syntax, local names; the exported names and so the ESM/CommonJS shapes
+// stay; index.d.ts keeps the readable names). api keeps Function.prototype.name (its classes are public):
+// 55.6 -> 31.6 KB (15.3 -> 10.3 KB gzipped). The Emscripten glue comes whitespace-minified only (its closure pass
+// needs a compiler not present) and names nothing the user sees: 48.1 -> 26.6 KB (13.1 -> 10.0 KB gzipped).
+// esbuild comes with Vite (a devDependency).
+const { transformSync } = await import('esbuild').catch(() => fail('esbuild not found: run npm ci (it comes with vite)'));
+function writeMinified(file, code, format, keepNames) {
+  const out = transformSync(code, { minify: true, keepNames, format, charset: 'utf8' });
+  for (const w of out.warnings) console.warn(`wasm/build.mjs: esbuild on ${file}: ${w.text}`);
+  writeFileSync(join(DIST, file), out.code);
+}
+
 rmSync(DIST, { recursive: true, force: true });
 mkdirSync(DIST, { recursive: true });
-copyFileSync(join(es, 'rtl.mjs'), join(DIST, 'rtl.mjs'));
-copyFileSync(join(node, 'rtl.cjs'), join(DIST, 'rtl.cjs'));
+writeMinified('rtl.mjs', readFileSync(join(es, 'rtl.mjs'), 'utf8'), 'esm', false);
+writeMinified('rtl.cjs', readFileSync(join(node, 'rtl.cjs'), 'utf8'), 'cjs', false);
 copyFileSync(join(es, 'rtl.wasm'), join(DIST, 'rtl.wasm'));
 
 // api.js is written once, as an ES module whose last statement is `export { ... };`; derive the CommonJS twin.
@@ -100,8 +112,8 @@ const api = [...API_FRAGMENTS, 'api.js'].map((f) => readFileSync(join(JS, f), 'u
   .replaceAll('__RTL_VERSION__', pkg.version);
 const exportLine = /^export \{([^}]*)\};\s*$/m;
 if (!exportLine.test(api)) fail('wasm/js/api.js must end with a single `export { ... };` line');
-writeFileSync(join(DIST, 'api.mjs'), api);
-writeFileSync(join(DIST, 'api.cjs'), `'use strict';\n${api.replace(exportLine, 'module.exports = {$1};')}`);
+writeMinified('api.mjs', api, 'esm', true);
+writeMinified('api.cjs', `'use strict';\n${api.replace(exportLine, 'module.exports = {$1};')}`, 'cjs', true);
 
 copyFileSync(join(JS, 'index.mjs'), join(DIST, 'index.mjs'));
 copyFileSync(join(JS, 'index.mjs'), join(DIST, 'index.js'));  // the demo page's import map points here
