@@ -16,6 +16,7 @@
 #include "rtl/io/LaTeXDoc.h"
 #include "rtl/io/LaTeXTikz2D.h"
 #include "rtl/io/ScanDrawing.h"
+#include "pdflatex_run.h"
 
 namespace fs = std::filesystem;
 using rtl::Drawing2D;
@@ -199,28 +200,13 @@ TEST(Tikz2DBudget, ThinnedScansCompileWithPdflatex)
     fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / "budget2d";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    {
-        std::ofstream doc(dir / "budget.tex");
-        doc << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
-               "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n\\begin{document}\n";
-        for (const auto &p : pictures)
-            doc << p;
-        doc << "\\end{document}\n";
-    }
-    std::string cmd = "cd " + rtl::latex_detail::shellQuote(dir.string()) +
-                      " && pdflatex -interaction=nonstopmode -halt-on-error budget.tex > pdflatex.out 2>&1";
-    int rc = std::system(cmd.c_str());
-    std::ifstream log_file(dir / "budget.log");
-    std::string log((std::istreambuf_iterator<char>(log_file)), std::istreambuf_iterator<char>());
-    size_t err = log.find("\n!");
-    ASSERT_EQ(rc, 0) << (err == std::string::npos ? log.substr(log.size() > 2000 ? log.size() - 2000 : 0)
-                                                  : log.substr(err, 600));
-    EXPECT_NE(log.find("Output written on budget.pdf (3 pages"), std::string::npos);
+    pdflatex_test::writePreviewDocument(dir, "budget", pictures);
+    const auto run = pdflatex_test::compile(dir, "budget");
+    ASSERT_EQ(run.rc, 0) << run.failure();
+    EXPECT_NE(run.log.find("Output written on budget.pdf (3 pages"), std::string::npos);
     // The note is text on pages 2 and 3, not on page 1.
-    std::string txt = cmd.substr(0, cmd.find(" && ")) + " && pdftotext budget.pdf budget.txt";
-    ASSERT_EQ(std::system(txt.c_str()), 0) << "pdftotext (poppler-utils) is needed to read the PDF";
-    std::ifstream text_file(dir / "budget.txt");
-    std::string text((std::istreambuf_iterator<char>(text_file)), std::istreambuf_iterator<char>());
+    ASSERT_EQ(pdflatex_test::extractText(dir, "budget"), 0) << "pdftotext (poppler-utils) is needed to read the PDF";
+    const std::string text = pdflatex_test::readFile(dir / "budget.txt");
     EXPECT_EQ(count(text, "Thinned for pdflatex"), 2u) << text;
     EXPECT_NE(text.find("(7500 of 15000 marks)"), std::string::npos) << text;
     EXPECT_NE(text.find("(6750 of 27000 marks)"), std::string::npos) << text;

@@ -17,6 +17,7 @@
 #include "rtl/io/LaTeXDoc.h"
 #include "rtl/io/LaTeXTikz2D.h"
 #include "rtl/io/Svg2D.h"
+#include "pdflatex_run.h"
 #include "xml_check.h"
 
 namespace fs = std::filesystem;
@@ -231,23 +232,10 @@ TEST(Tikz2DRobust, ExtremeDocumentsCompileWithPdflatex)
     fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / "robust2d";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    {
-        std::ofstream doc(dir / "robust.tex");
-        doc << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
-               "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n\\begin{document}\n";
-        for (const auto &p : pictures)
-            doc << p;
-        doc << "\\end{document}\n";
-    }
-    std::string cmd = "cd " + rtl::latex_detail::shellQuote(dir.string()) +
-                      " && pdflatex -interaction=nonstopmode -halt-on-error robust.tex > pdflatex.out 2>&1";
-    int rc = std::system(cmd.c_str());
-    std::ifstream log_file(dir / "robust.log");
-    std::string log((std::istreambuf_iterator<char>(log_file)), std::istreambuf_iterator<char>());
-    size_t err = log.find("\n!");
-    EXPECT_EQ(rc, 0) << (err == std::string::npos ? log.substr(log.size() > 2000 ? log.size() - 2000 : 0)
-                                                  : log.substr(err, 600));
-    EXPECT_NE(log.find("Output written on robust.pdf (" + std::to_string(pictures.size()) + " pages"),
+    pdflatex_test::writePreviewDocument(dir, "robust", pictures);
+    const auto run = pdflatex_test::compile(dir, "robust");
+    EXPECT_EQ(run.rc, 0) << run.failure();
+    EXPECT_NE(run.log.find("Output written on robust.pdf (" + std::to_string(pictures.size()) + " pages"),
               std::string::npos);
 }
 

@@ -14,6 +14,7 @@
 
 #include "rtl/io/LaTeXDoc.h"
 #include "rtl/io/LaTeXTikz3D.h"
+#include "pdflatex_run.h"
 
 namespace fs = std::filesystem;
 using rtl::LaTeXTikz3D;
@@ -140,18 +141,11 @@ TEST(Tikz3DBudget, ThinnedSceneCompilesWithPdflatex)
     fs::remove_all(dir);
     fs::create_directories(dir);
     t.writeTEX((dir / "budget.tex").string());
-    std::string cd = "cd " + rtl::latex_detail::shellQuote(dir.string());
-    int rc = std::system((cd + " && pdflatex -interaction=nonstopmode -halt-on-error budget.tex > pdflatex.out 2>&1").c_str());
-    std::ifstream log_file(dir / "budget.log");
-    std::string log((std::istreambuf_iterator<char>(log_file)), std::istreambuf_iterator<char>());
-    size_t err = log.find("\n!");
-    ASSERT_EQ(rc, 0) << (err == std::string::npos ? log.substr(log.size() > 2000 ? log.size() - 2000 : 0)
-                                                  : log.substr(err, 600));
-    EXPECT_NE(log.find("Output written on budget.pdf (1 page"), std::string::npos);
-    ASSERT_EQ(std::system((cd + " && pdftotext budget.pdf budget.txt").c_str()), 0)
-            << "pdftotext (poppler-utils) is needed to read the PDF";
-    std::ifstream text_file(dir / "budget.txt");
-    std::string text((std::istreambuf_iterator<char>(text_file)), std::istreambuf_iterator<char>());
+    const auto run = pdflatex_test::compile(dir, "budget");
+    ASSERT_EQ(run.rc, 0) << run.failure();
+    EXPECT_NE(run.log.find("Output written on budget.pdf (1 page"), std::string::npos);
+    ASSERT_EQ(pdflatex_test::extractText(dir, "budget"), 0) << "pdftotext (poppler-utils) is needed to read the PDF";
+    const std::string text = pdflatex_test::readFile(dir / "budget.txt");
     EXPECT_NE(text.find("Thinned for pdflatex"), std::string::npos) << text;
     EXPECT_NE(text.find("(6000 of 12000 marks)"), std::string::npos) << text;
 }
