@@ -48,5 +48,17 @@ export function missingOutput(stdout, promised) {
   return null;
 }
 
+// A ```bash block made only of `npx rtl ...` lines (text after ` #` is a comment) is the command-line example: the
+// README test runs each line with the installed package's `rtl` command. [{ args, output (the `> file`, or null) }],
+// or null for any other block (install and build commands stay unrun).
+export function cliCommands(code) {
+  const lines = code.split('\n').map((l) => l.replace(/\s+#.*$/, '').trim()).filter(Boolean);
+  if (!lines.length || !lines.every((l) => /^npx rtl\s/.test(l))) return null;
+  return lines.map((l) => {
+    const [command, output = null] = l.split(/\s*>\s*/);
+    return { args: command.split(/\s+/).slice(2), output };
+  });
+}
+
 export const isCommonJs = (code) => /^\s*\/\/ CommonJS\b/.test(code);
 export const label = (b) => `README line ${b.line} (${b.section}): \`\`\`${b.lang}`;

@@ -7,17 +7,20 @@
 //                README's ```cmake find_package snippet, run in the data folder; it must exit 0
 //   ```cmake     the find_package snippet is used by the C++ programs; the sub-project block is not run (it names a
 //                path or URL of the user's)
-//   ```bash, ```html  not run: install/build commands would modify the machine; the import map needs a page and a server
+//   ```bash      a block of `npx rtl ...` lines only: each line runs with the installed package's command in that project
+//                (tests/data/ holds the logs, points.csv a noisy line y = x/2 + 1): exit 0, the JSON parses, the SVG is
+//                one <svg> document, the --fit line is y = x/2 + 1; other bash blocks (install/build) are not run
+//   ```html      not run: the import map needs a page and a server
 // A block that prints results says what with `// prints: <text>` comments; the output must contain each text, in order.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
-import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { packAndInstall } from '../js/helpers.mjs';
-import { fencedBlocks, isCommonJs, KINDS, label, missingOutput, promisedOutput } from './blocks.mjs';
+import { cliCommands, fencedBlocks, isCommonJs, KINDS, label, missingOutput, promisedOutput } from './blocks.mjs';
 import { buildProgram, installedPrefix } from './native.mjs';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
@@ -40,7 +43,8 @@ test('every README code block has a language this test knows what to do with', (
   for (const b of blocks) assert.ok(b.lang in KINDS, `${label(b)}: untagged or unknown language; tag it (and teach this test)`);
   for (const kind of ['run', 'native', 'cmake']) assert.ok(ofKind(kind).length >= 1, `no ${kind} block`);
   assert.ok(ofKind('native').every((b) => promisedOutput(b.code).length >= 1), 'each C++ example says what it prints');
-  const notRun = [...ofKind('not run'), ...ofKind('cmake').filter((b) => !/find_package\(RTL\b/.test(b.code))];
+  assert.ok(ofKind('not run').some((b) => cliCommands(b.code)), 'the command-line block (npx rtl lines) is found');
+  const notRun = [...ofKind('not run').filter((b) => !cliCommands(b.code)), ...ofKind('cmake').filter((b) => !/find_package\(RTL\b/.test(b.code))];
   t.diagnostic(`not run (install/build commands, a browser page, a sub-project path): ${notRun.map(label).join('; ')}`);
 });
 
@@ -58,6 +62,39 @@ describe('README examples in a project with the packed tarball installed', { tim
       const file = join(app, `readme-${b.line}.${isCommonJs(b.code) ? 'cjs' : 'mjs'}`);
       writeFileSync(file, b.code);
       checkRun(b, spawnSync(process.execPath, [file], { cwd: app, encoding: 'utf8', timeout: 120_000 }));
+    });
+  }
+
+  for (const b of ofKind('not run').filter((x) => cliCommands(x.code))) {
+    test(`${label(b)}: every \`npx rtl\` line runs with the installed command`, () => {
+      mkdirSync(join(app, 'tests', 'data'), { recursive: true });
+      for (const f of DATA_FILES) copyFileSync(join(app, f), join(app, 'tests', 'data', f));
+      // A noisy line y = x/2 + 1 (deterministic noise of +-0.01).
+      const csv = Array.from({ length: 50 }, (_, i) => `${(i * 0.1).toFixed(3)},${(0.05 * i + 1 + 0.01 * Math.sin(7 * i)).toFixed(5)}`);
+      writeFileSync(join(app, 'points.csv'), `${csv.join('\n')}\n`);
+      const rtlBin = join(app, 'node_modules', '.bin', 'rtl');
+      for (const { args, output } of cliCommands(b.code)) {
+        const line = `npx rtl ${args.join(' ')}${output ? ` > ${output}` : ''}`;
+        const r = spawnSync(rtlBin, args, { cwd: app, encoding: 'utf8', timeout: 120_000 });
+        assert.equal(r.status, 0, `${label(b)}: \`${line}\` exited with ${r.status ?? r.signal}:\n${r.stderr}`);
+        if (args.includes('svg')) {
+          assert.match(r.stdout, /^<\?xml [^>]*>\n<svg [^>]*>[^]*<\/svg>\n$/, `${line}: one SVG document`);
+          assert.ok((r.stdout.match(/<use /g) ?? []).length >= 100, `${line}: the scan's points are drawn`);
+          continue;
+        }
+        const json = JSON.parse(r.stdout);
+        if (args.includes('--strict')) {
+          const { failed } = json.vectorization;
+          assert.ok(Array.isArray(failed) && failed.length >= 1, `${line}: lists the clusters strict AFTLS rejects`);
+          assert.ok(failed.every((f) => typeof f.cluster === 'number' && f.crossingDistance > f.delta), `${line}: each failure names its cluster`);
+        }
+        if (args.includes('--fit')) {
+          const [fit] = json.fits;
+          assert.equal(fit.count, 50, line);
+          assert.ok(Math.abs(fit.direction[1] / fit.direction[0] - 0.5) < 2e-3, `${line}: slope ${fit.direction[1] / fit.direction[0]}`);
+          assert.ok(fit.rms < 0.01, `${line}: rms ${fit.rms}`);
+        }
+      }
     });
   }
 
