@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -150,6 +151,25 @@ TEST(Svg2D, LogAxesAndLabelsWithExponents)
     ASSERT_TRUE(r.ok) << r.error;
     // "%.0e" labels become 10 with a raised exponent.
     EXPECT_NE(s.find("10<tspan baseline-shift=\"super\" font-size=\"0.25\">3</tspan>"), std::string::npos);
+
+    // A label hung below its x tick starts 0.1 cm below the tick's end, so its raised exponent clears the tick
+    // (in the paper's speed figure "10" + "3" read as "+3" where the exponent touched the tick).
+    std::regex label("<text x=\"([-0-9.e]+)\" y=\"([-0-9.e]+)\" text-anchor=\"middle\" dominant-baseline=\"hanging\""
+                     "[^>]*>10<tspan");
+    size_t labels = 0;
+    for (std::sregex_iterator m(s.begin(), s.end(), label), end; m != end; ++m, ++labels)
+    {
+        std::string x = (*m)[1];
+        // The tick: the 0.1 cm line at the label's x (the grid line there spans the picture).
+        std::regex line("<line x1=\"" + x + "\" y1=\"([-0-9.e]+)\" x2=\"" + x + "\" y2=\"([-0-9.e]+)\"");
+        double tick_end = std::nan("");
+        for (std::sregex_iterator t(s.begin(), s.end(), line); t != end; ++t)
+            if (std::abs(std::stod((*t)[2]) - std::stod((*t)[1]) - 0.1) < 1e-6)
+                tick_end = std::stod((*t)[2]);
+        ASSERT_FALSE(std::isnan(tick_end)) << "no tick at x = " << x;
+        EXPECT_NEAR(std::stod((*m)[2]) - tick_end, 0.1, 1e-4) << "label at x = " << x;
+    }
+    EXPECT_GE(labels, 5u);
 }
 
 TEST(Svg2D, HostileTextStaysWellFormed)

@@ -371,6 +371,10 @@ namespace rtl
                             ly -= ax.is_x ? 0.05 : 0.0;
                         else if (ax.position & Drawing2D::position_below)
                             ly += ax.is_x ? 0.05 : 0.0;
+                        // A label hung below its tick (SVG's "hanging" baseline) has its exponent raised above the
+                        // mantissa's top, onto the tick: TikZ puts the top of the whole node there, so move it down.
+                        if ((ax.position & Drawing2D::position_below) && label.find("10^{") != std::string::npos)
+                            ly += exponent_rise_cm;
                         if (ax.position & Drawing2D::position_right)
                             lx += ax.is_x ? 0.0 : 0.05;
                         else if (ax.position & Drawing2D::position_left)
@@ -401,6 +405,8 @@ namespace rtl
             std::map<std::string, std::string> arrows;
             std::string defs;
             static constexpr double font_cm = 0.3514;   // the document's font-size (10 pt)
+            // How far an exponent (font-size 0.25 cm, baseline-shift super) reaches above a 10 pt mantissa's top.
+            static constexpr double exponent_rise_cm = 0.1;
             double x0, x1, y0, y1, left, top, margin, width, height, pad_left, pad_right, pad_top, pad_bottom;
         };
     }
