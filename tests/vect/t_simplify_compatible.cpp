@@ -48,23 +48,35 @@ namespace
         if (three) s = s + mul(dz, dz);
         return s;
     }
-    void dpStep(const std::vector<P> &pts, size_t first, size_t last, double sqTol, std::vector<size_t> &out, bool three)
+    //! How the reference breaks ties: simplify-js's `>` (the first maximum wins), or `>=` (the last one wins: a
+    //! wrong kernel, to show that a test tells the two apart).
+    enum class Ties { First, Last };
+    //! Scans whose maximum above the tolerance occurs more than once (counted by the reference).
+    size_t tied_scans = 0;
+    void dpStep(const std::vector<P> &pts, size_t first, size_t last, double sqTol, std::vector<size_t> &out, bool three,
+                Ties ties)
     {
         double maxSq = sqTol;
-        size_t index = 0;
+        size_t index = 0, equal = 0;
         for (size_t i = first + 1; i < last; ++i)
         {
             const double d = sqSegDist(pts[i], pts[first], pts[last], three);
-            if (d > maxSq) { index = i; maxSq = d; }
+            if (d > maxSq) { index = i; maxSq = d; equal = 1; }
+            else if (d == maxSq && index != 0)
+            {
+                ++equal;
+                if (ties == Ties::Last) index = i;
+            }
         }
+        if (equal > 1) ++tied_scans;
         if (maxSq > sqTol)
         {
-            if (index - first > 1) dpStep(pts, first, index, sqTol, out, three);
+            if (index - first > 1) dpStep(pts, first, index, sqTol, out, three, ties);
             out.push_back(index);
-            if (last - index > 1) dpStep(pts, index, last, sqTol, out, three);
+            if (last - index > 1) dpStep(pts, index, last, sqTol, out, three, ties);
         }
     }
-    std::vector<size_t> reference(const std::vector<P> &input, double tolerance, bool hq, bool three)
+    std::vector<size_t> reference(const std::vector<P> &input, double tolerance, bool hq, bool three, Ties ties = Ties::First)
     {
         std::vector<size_t> all;
         for (size_t i = 0; i < input.size(); ++i) all.push_back(i);
@@ -82,7 +94,7 @@ namespace
         std::vector<P> pts;
         for (size_t i : radial) pts.push_back(input[i]);
         std::vector<size_t> local = {0};
-        dpStep(pts, 0, pts.size() - 1, sqTol, local, three);
+        dpStep(pts, 0, pts.size() - 1, sqTol, local, three, ties);
         local.push_back(pts.size() - 1);
         std::vector<size_t> out;
         for (size_t i : local) out.push_back(radial[i]);
@@ -282,4 +294,110 @@ TEST(SimplifyCompatible, PreconditionsThrowInvalidArgument)
     const double nan[6] = {0, 0, 1, std::nan(""), 2, 0};
     EXPECT_THROW(rtl::simplifyCompatibleIndices(nan, 3, 2, 1.0, true), std::invalid_argument);
     EXPECT_NO_THROW(rtl::simplifyCompatibleIndices<double>(nullptr, 0, 2, 1.0, false));
+}
+
+// Equal maxima: the first one wins, as in simplify-js's `if (sqDist > maxSqDist)`. Point i and point j (> i) are
+// both at distance exactly 1 from the first chord (0,0)-(1000,0); which one is kept changes the result (the
+// other is then near the new chord, while the points between them at height 0.9 are not near a chord through
+// j). Positions cover the kernel's layout: the scan starts at index 1 and takes blocks of 16 points, two per
+// vector, then a partial block and, for an odd count, one point alone: both in one block, in one vector, in
+// neighbouring vectors, across blocks (same and different lanes), in the partial block and the lone point.
+namespace
+{
+    std::vector<P> twoPeaks(size_t n, size_t i, size_t j, double height_j)
+    {
+        std::vector<P> pts;
+        for (size_t k = 0; k < n - 1; ++k)
+        {
+            const double x = static_cast<double>(k);
+            if (k < i) pts.push_back({0, 0, 0});
+            else if (k == i) pts.push_back({x, 1, 0});
+            else if (k < j) pts.push_back({x, 0.9, 0});
+            else if (k == j) pts.push_back({x, height_j, 0});
+            else pts.push_back({1000, 0, 0});
+        }
+        pts.push_back({1000, 0, 0});
+        return pts;
+    }
+}
+
+TEST(SimplifyCompatible, EqualMaximaTheFirstWins)
+{
+    struct Pair { size_t n, i, j; };
+    const std::vector<Pair> pairs{{60, 3, 10},  {60, 3, 4},   {60, 2, 3},   {60, 20, 21}, {60, 3, 40},  {60, 3, 19},
+                                  {60, 4, 19},  {60, 16, 17}, {60, 5, 52},  {60, 50, 57}, {61, 10, 59}, {61, 49, 59},
+                                  {200, 7, 180}, {19, 1, 17}};
+    for (const Pair &c : pairs)
+    {
+        const auto pts = twoPeaks(c.n, c.i, c.j, 1.0);
+        const P &a = pts.front(), &b = pts.back();
+        ASSERT_EQ(sqSegDist(pts[c.i], a, b, false), 1.0);
+        ASSERT_EQ(sqSegDist(pts[c.j], a, b, false), 1.0);
+        const auto first = reference(pts, 0.3, true, false), last = reference(pts, 0.3, true, false, Ties::Last);
+        // The case discriminates: the first peak is kept only when the first maximum wins.
+        ASSERT_NE(first, last) << c.i << " " << c.j;
+        ASSERT_TRUE(std::find(first.begin(), first.end(), c.i) != first.end());
+        ASSERT_TRUE(std::find(last.begin(), last.end(), c.i) == last.end() ||
+                    std::find(last.begin(), last.end(), c.j) != last.end());
+        EXPECT_EQ(run<double>(pts, false, 0.3, true), first) << "n " << c.n << ", peaks " << c.i << " and " << c.j;
+        EXPECT_EQ(run<double>(pts, false, 0.3, false), reference(pts, 0.3, false, false)) << c.i << " " << c.j;
+    }
+}
+
+// Near-ties: the later peak one ulp higher wins (it is larger), one ulp lower loses; the kernel must compare the
+// exact values, not approximations of them.
+TEST(SimplifyCompatible, NearTiesFollowTheExactDistances)
+{
+    for (size_t n : {60, 61})
+        for (const auto &ij : std::vector<std::pair<size_t, size_t>>{{3, 10}, {3, 4}, {2, 3}, {3, 40}, {50, 57}, {10, 59}})
+        {
+            if (ij.second >= n - 1) continue;
+            for (double h : {std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0)})
+            {
+                const auto pts = twoPeaks(n, ij.first, ij.second, h);
+                const P &a = pts.front(), &b = pts.back();
+                const double di = sqSegDist(pts[ij.first], a, b, false), dj = sqSegDist(pts[ij.second], a, b, false);
+                ASSERT_NE(di, dj);
+                const auto expected = reference(pts, 0.3, true, false);
+                // The larger one is kept whichever comes first.
+                const size_t winner = dj > di ? ij.second : ij.first;
+                ASSERT_TRUE(std::find(expected.begin(), expected.end(), winner) != expected.end());
+                EXPECT_EQ(run<double>(pts, false, 0.3, true), expected) << n << " " << ij.first << " " << ij.second << " " << h;
+            }
+        }
+}
+
+// Walks on the integer grid (steps -1, 0, 1, up to 3D): many scans have their maximum more than once, at every
+// position in the kernel's blocks; the result must be the reference's (first maximum), which differs from the
+// last-maximum one on some of them.
+TEST(SimplifyCompatible, GridWalksWithManyTies)
+{
+    tied_scans = 0;
+    size_t differ = 0, cases = 0;
+    for (unsigned seed = 1; seed <= 12; ++seed)
+        for (bool three : {false, true})
+            for (size_t n : {17, 18, 40, 333, 3000})
+            {
+                std::mt19937 rng(seed);
+                std::uniform_int_distribution<int> step(-1, 1);
+                std::vector<P> w;
+                P p{0, 0, 0};
+                for (size_t i = 0; i < n; ++i)
+                {
+                    w.push_back(p);
+                    p.x += step(rng); p.y += step(rng);
+                    if (three) p.z += step(rng);
+                }
+                for (double tol : {0.5, 1.0, 1.5, 3.0})
+                    for (bool hq : {false, true})
+                    {
+                        const auto expected = reference(w, tol, hq, three);
+                        ASSERT_EQ(run<double>(w, three, tol, hq), expected) << seed << " " << n << " " << tol << " " << hq;
+                        differ += reference(w, tol, hq, three, Ties::Last) != expected;
+                        ++cases;
+                    }
+            }
+    EXPECT_EQ(cases, 12u * 2 * 5 * 4 * 2);
+    EXPECT_GT(tied_scans, 1000u);
+    EXPECT_GT(differ, 50u);
 }
