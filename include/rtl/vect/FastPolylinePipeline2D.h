@@ -197,6 +197,7 @@ namespace rtl::vect_detail
             w.fits += v.fits;
             w.corners += v.corners;
             w.states += v.states;
+            w.bounded += v.bounded;
             return w;
         }
 

@@ -20,6 +20,18 @@
 // O(F) fits and O(F log F) corner work for the F fitting ranges (issue 15 item 7: it was O(F * incoming) when
 // corners fail). F itself is up to N * L for ranges of up to L points that fit sigma: on long straight runs
 // with corners that no line pair meets the search stays quadratic in L (work() counts it).
+// Bounded rounds (strict mode, issue 15 item 7a): the optimum has the fewest ranges R, so a state [x, y) with r
+// ranges can only be on an optimal path if r + remaining[y] <= R, where remaining[y] is a lower bound on the
+// ranges of any partition of [y, N) into fitting ranges (corners ignored; from bounds on how far a fitting range
+// can reach, see lowerBounds). A round with budget U drops every other state and, because remaining[] does not
+// increase along the chain, skips the fits of ends too close to x. If R <= U the round finds the same optimum:
+// every state on a path of at most U ranges keeps its cheapest predecessor (that one has one range less and
+// remaining[x] <= 1 + remaining[y]), and incoming states are ordered by (cost, range start), a total order, so the
+// pick at each corner is the one the unbounded search makes. A search first runs unbounded up to N + 1024 states
+// (most are that small); beyond, rounds with budgets remaining[0] and remaining[0] + 1, then the unbounded one,
+// which alone proves that no partition exists. This removes most states where the optimum needs about as many
+// ranges as the fits alone (a long chain of few long ranges: 13x fewer states); where corners force extra short
+// "bridge" ranges the bound is loose and the search stays N x L (a corner-aware bound would be needed).
 // Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
 // crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
 //
@@ -123,13 +135,25 @@ namespace rtl
             const size_t n = a.size() > 0 ? a.size() - 1 : 0;
             if (n < 2 || n > pts.size() || n >= none)
                 return false;
-            states.clear();
-            incoming.resize(n + 1);
-            for (auto &v : incoming)
-                v.clear();
-            for (size_t x = 0; x + 2 <= n; ++x)
-                if (x == 0 || !incoming[x].empty())
-                    extend(pts, a, x, n);
+            // Strict mode: rounds bounded by a range budget (see the file comment), then unbounded, which alone
+            // proves that no partition exists (and finds the failure corner).
+            // Most searches are small: first an unbounded round that gives up beyond a state cap; then, strict
+            // mode only, rounds bounded by a range budget (see the file comment), then the unbounded one, which
+            // alone proves that no partition exists (and finds the failure corner).
+            const bool bounded = !allow_breaks && prune_;
+            if (!searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded))
+            {
+                ++work_.bounded;
+                lowerBounds(a, n);
+                size_t budget = remaining[0];
+                for (size_t round = 0;; ++round)
+                {
+                    searchRound(pts, a, n, budget, unbounded);
+                    if (!incoming[n].empty() || budget == unbounded)
+                        break;
+                    budget = round + 1 < budget_steps ? budget + (size_t(1) << round) : unbounded;
+                }
+            }
             if (incoming[n].empty())
             {
                 diagnose(pts, a, n);
@@ -211,11 +235,15 @@ namespace rtl
         //! the result is the same, first = 1 and share = 0 make every boundary use the chord query).
         void setCornerScan(size_t first, size_t share) { scan_first = std::max<size_t>(first, 1); scan_share = share; }
 
+        //! Strict mode's bounded rounds (default on; the result is the same, off searches every state at once).
+        void setBoundedRounds(bool on) { prune_ = on; }
+
         //! Work done since construction: range fits evaluated, and corner tests plus chord-tree queries (a bound
         //! on either per call is what the fuzz harness checks, so that a slow case cannot pass unseen).
         struct Work
         {
             size_t fits{0}, corners{0}, states{0};
+            size_t bounded{0};   // searches that went on to bounded rounds (beyond the first round's state cap)
         };
         const Work &work() const { return work_; }
 
@@ -236,15 +264,22 @@ namespace rtl
         ComputeType sigma2{ComputeType(0.03) * ComputeType(0.03)}, delta_{3}, delta2{9};
         bool allow_breaks{false};
         std::vector<State> states;
+        struct Key
+        {
+            uint32_t breaks, ranges, x;
+            ComputeType error;
+            uint32_t state;
+        };
+        std::vector<Key> keys;   // the incoming states of a boundary, sorted
         std::vector<std::vector<uint32_t>> incoming;   // states ending at each boundary
-        std::vector<Approximation> in_lines, out_lines;
+        std::vector<Approximation> in_lines, out_lines, state_lines;   // state_lines[s]: the line of state s's range
         struct Out
         {
             size_t y;
             ComputeType total;
         };
         std::vector<Out> outs;
-        std::vector<size_t> picks, open_, tree, leaf_of, order, removed;
+        std::vector<size_t> picks, limits, open_, tree, leaf_of, order, removed;
         static constexpr size_t none_rank = std::numeric_limits<size_t>::max();
         std::vector<ComputeType> vals;
         Work work_;
@@ -255,6 +290,12 @@ namespace rtl
         std::vector<Item> items, queries;
         std::vector<size_t> starts;
         std::vector<CornerReport> break_reports;
+        static constexpr size_t unbounded = std::numeric_limits<size_t>::max();
+        static constexpr size_t block = 8;   // range starts per end bound (lowerBounds)
+        static constexpr size_t state_cap = 1;   // states per point (+ 1024) of the first, unbounded round
+        static constexpr size_t budget_steps = 2;   // bounded rounds (budgets remaining[0], remaining[0] + 1) before the unbounded one
+        bool prune_{true};
+        std::vector<size_t> far, remaining, first_within;
         CornerReport failure_;
 
         struct Cost
@@ -307,20 +348,73 @@ namespace rtl
             return total > ComputeType(1.01) * sigma2 * static_cast<ComputeType>(n - x) + ComputeType(1e-300);
         }
 
-        //! Extends every state ending at x (or the chain start, x = 0) by every fitting range [x, y).
-        void extend(const std::vector<VectorType> &pts, const SumArray &a, size_t x, size_t n)
+        //! One pass of the dynamic programme over the chain, keeping only states whose range count plus the
+        //! lower bound for the rest of the chain is within `budget` (unbounded: every state).
+        //! False if it stopped early because there were more than `cap` states.
+        bool searchRound(const std::vector<VectorType> &pts, const SumArray &a, size_t n, size_t budget, size_t cap)
+        {
+            states.clear();
+            state_lines.clear();
+            incoming.resize(n + 1);
+            for (auto &v : incoming)
+                v.clear();
+            for (size_t x = 0; x + 2 <= n; ++x)
+            {
+                if (x == 0 || !incoming[x].empty())
+                    extend(pts, a, x, n, budget);
+                if (states.size() > cap)
+                    return false;
+            }
+            return true;
+        }
+
+        //! Extends every state ending at x (or the chain start, x = 0) by every fitting range [x, y), keeping the
+        //! new states within `budget` (ranges so far + remaining[y] <= budget).
+        void extend(const std::vector<VectorType> &pts, const SumArray &a, size_t x, size_t n, size_t budget)
         {
             auto &in = incoming[x];
-            std::sort(in.begin(), in.end(), [&](uint32_t p, uint32_t q) { return less(states[p], states[q]); });
+            // Cost order, ties by the range start (a total order, so that the pick does not depend on which
+            // other states a bounded round dropped).
+            keys.clear();
+            for (uint32_t i : in)
+                keys.push_back(Key{states[i].breaks, states[i].ranges, states[i].x, states[i].error, i});
+            std::sort(keys.begin(), keys.end(), [](const Key &p, const Key &q) {
+                if (p.breaks != q.breaks) return p.breaks < q.breaks;
+                if (p.ranges != q.ranges) return p.ranges < q.ranges;
+                if (p.error != q.error) return p.error < q.error;
+                return p.x < q.x;
+            });
+            for (size_t k = 0; k < keys.size(); ++k)
+                in[k] = keys[k].state;
             outs.clear();
-            for (size_t y = x + 2; y <= n; ++y)
+            size_t y0 = x + 2;
+            if (budget != unbounded)
             {
-                ComputeType total;
-                const bool ok = fits(a, x, y, total);
+                // remaining[] does not increase along the chain: ends before first_within[k] need more than k
+                // further ranges, where k is what the cheapest incoming state leaves.
+                const size_t used = x == 0 ? 0 : states[in.front()].ranges;
+                if (used + 1 > budget)
+                    return;
+                if (budget - used - 1 < first_within.size())
+                    y0 = std::max(y0, first_within[budget - used - 1]);
+            }
+            out_lines.clear();
+            for (size_t y = y0; y <= n; ++y)
+            {
+                // fits(), with the line of a fitting range built once (its error is the same expression).
+                ++work_.fits;
+                const auto sums = a.sums(x, y);
+                const bool ok = y - x == 2 || Approximation::errorBelow(sums, sigma2);
+                ComputeType total = 0;
+                if (!ok)
+                    total = Approximation::errorSquaredCompute(sums) * static_cast<ComputeType>(y - x);
                 if (!ok && beyondReach(total, x, n))
                     break;
                 if (ok && y + 1 != n)   // a range ending one point before the end leaves a 1-point tail
-                    outs.push_back(Out{y, total});
+                {
+                    out_lines.emplace_back(sums);
+                    outs.push_back(Out{y, y - x == 2 ? ComputeType(0) : out_lines.back().errSquaredCompute() * static_cast<ComputeType>(y - x)});
+                }
                 // The total never decreases with y: no end z with (z - x) sigma^2 * 1.01 <= total can fit.
                 if (!ok && total > ComputeType(0))
                 {
@@ -331,17 +425,28 @@ namespace rtl
             }
             if (x == 0)
             {
-                for (const Out &o : outs)
-                    push(o.y, State{0, none, 0, 1, o.total});
+                for (size_t j = 0; j < outs.size(); ++j)
+                    if (within(1, outs[j].y, budget))
+                        push(outs[j].y, State{0, none, 0, 1, outs[j].total}, out_lines[j]);
                 return;
             }
             in_lines.clear();
             for (uint32_t s : in)
-                in_lines.emplace_back(a.sums(states[s].x, x));
-            out_lines.clear();
-            for (const Out &o : outs)
-                out_lines.emplace_back(a.sums(x, o.y));
+                in_lines.push_back(state_lines[s]);
+            // With a budget, only the incoming states with few enough ranges for end y can be its predecessor: a
+            // prefix of the cost order (ranges first), so the search for the first meeting line stops there.
+            limits.assign(outs.size(), in.size());
+            if (budget != unbounded)
+                for (size_t j = 0; j < outs.size(); ++j)
+                {
+                    const size_t rest = remaining[outs[j].y] + 1;
+                    const size_t most = budget >= rest ? budget - rest : 0;   // the largest usable range count
+                    limits[j] = budget >= rest ? static_cast<size_t>(std::upper_bound(keys.begin(), keys.end(), most, [](size_t r, const Key &k) { return r < k.ranges; }) - keys.begin()) : 0;
+                }
             choosePredecessors(pts, x);
+            for (size_t j = 0; j < outs.size(); ++j)
+                if (picks[j] >= limits[j])
+                    picks[j] = in.size();
             const State &cheapest = states[in.front()];
             const State broken{0, 0, cheapest.breaks + 1, cheapest.ranges, cheapest.error};
             for (size_t j = 0; j < outs.size(); ++j)
@@ -354,16 +459,67 @@ namespace rtl
                     continue;
                 const uint32_t back = in[pick == in.size() ? 0 : pick];
                 const State &prev = states[back];
+                if (!within(prev.ranges + 1, outs[j].y, budget))
+                    continue;
                 push(outs[j].y, State{static_cast<uint32_t>(x), back, prev.breaks + (pick == in.size() ? 1u : 0u), prev.ranges + 1,
-                                      prev.error + outs[j].total});
+                                      prev.error + outs[j].total}, out_lines[j]);
             }
         }
 
-        void push(size_t y, const State &st)
+        bool within(size_t ranges, size_t y, size_t budget) const { return budget == unbounded || ranges + remaining[y] <= budget; }
+
+        //! remaining[y]: a lower bound on the number of fitting ranges that partition [y, N) (corners ignored),
+        //! non-increasing in y; first_within[k]: the first y with remaining[y] <= k. From far[b], a bound on the
+        //! end of any fitting range that starts in block b (of `block` points), made non-decreasing: a partition
+        //! of [y, N) into k ranges has its i-th boundary at most far^i(y), so remaining[y] = 1 + remaining[far(y)].
+        // far[b]: the total squared residual T of a range grows when it grows at either end, so for a start s in
+        // [s0, s1] and an end z, T(s1, z) <= T(s, z), and [s, z) fits only if T(s, z) <= 1.01 sigma^2 (z - s) (as in
+        // beyondReach). An end bound c therefore drops to z - 1 for the first z with T(s1, z) > 1.01 sigma^2 (c - s0)
+        // (every end in [z, c] fails); repeated from c = N (each step a bisection, T being monotone in z).
+        void lowerBounds(const SumArray &a, size_t n)
+        {
+            const size_t nb = (n + block - 1) / block;
+            far.assign(nb, n);
+            for (size_t b = 0; b < nb; ++b)
+            {
+                const size_t s0 = b * block, s1 = std::min(s0 + block, n) - 1;
+                size_t c = n;
+                for (int step = 0; step < 6 && s1 + 3 <= c; ++step)
+                {
+                    const ComputeType limit = ComputeType(1.01) * sigma2 * static_cast<ComputeType>(c - s0) + ComputeType(1e-300);
+                    size_t lo = s1 + 3, hi = c + 1;   // the first z in [lo, c] with T(s1, z) > limit, or c + 1
+                    while (lo < hi)
+                    {
+                        const size_t mid = lo + (hi - lo) / 2;
+                        ComputeType total;
+                        fits(a, s1, mid, total);
+                        if (total > limit) hi = mid;
+                        else lo = mid + 1;
+                    }
+                    if (lo > c)
+                        break;
+                    c = lo - 1;
+                }
+                far[b] = std::max(c, std::min(s1 + 2, n));
+                if (b > 0)
+                    far[b] = std::max(far[b], far[b - 1]);
+            }
+            remaining.assign(n + 1, 0);
+            for (size_t y = n; y-- > 0;)
+                remaining[y] = 1 + remaining[std::min(far[y / block], n)];
+            first_within.assign(remaining[0] + 1, n);
+            for (size_t y = n + 1; y-- > 0;)
+                first_within[remaining[y]] = y;
+            for (size_t k = 1; k < first_within.size(); ++k)
+                first_within[k] = std::min(first_within[k], first_within[k - 1]);
+        }
+
+        void push(size_t y, const State &st, const Approximation &line)
         {
             ++work_.states;
             incoming[y].push_back(static_cast<uint32_t>(states.size()));
             states.push_back(st);
+            state_lines.push_back(line);
         }
 
         bool meets(const std::vector<VectorType> &pts, size_t k, size_t j, size_t x)
@@ -372,24 +528,25 @@ namespace rtl
             return vect_detail::crossingDistanceSquared(pts, in_lines[k], out_lines[j], x) <= delta2;
         }
 
-        //! picks[j] = the first incoming line (in cost order) that meets outgoing line j within delta at boundary
-        //! x, or in_lines.size() if none does. Few pairs: tried in order. Many: by chords (see the file comment),
+        //! picks[j] = the first incoming line (in cost order) before limits[j] that meets outgoing line j within
+        //! delta at boundary x, or limits[j] if none does. Few pairs: tried in order. Many: by chords (see the file comment),
         //! O((I + O) log I) plus the lines near tangent to the disc, which are tried one by one.
         void choosePredecessors(const std::vector<VectorType> &pts, size_t x)
         {
             const size_t ni = in_lines.size(), no = out_lines.size();
-            picks.assign(no, ni);
+            picks = limits;   // no line at or beyond limits[j] is wanted for outgoing line j
             // The cheapest few first (they usually meet); the rest one by one only while that stays cheap.
             const size_t first = std::min(ni, scan_first);
             open_.clear();
             for (size_t j = 0; j < no; ++j)
             {
+                const size_t f = std::min(first, limits[j]);
                 size_t k = 0;
-                while (k < first && !meets(pts, k, j, x))
+                while (k < f && !meets(pts, k, j, x))
                     ++k;
-                if (k < first)
+                if (k < f)
                     picks[j] = k;
-                else if (first < ni)
+                else if (f < limits[j])
                     open_.push_back(j);
             }
             if (open_.empty())
@@ -397,7 +554,7 @@ namespace rtl
             if (open_.size() * (ni - first) <= scan_share * (ni + open_.size()))   // a bounded share of this boundary's lines
             {
                 for (size_t j : open_)
-                    for (size_t k = first; k < ni; ++k)
+                    for (size_t k = first; k < limits[j]; ++k)
                         if (meets(pts, k, j, x)) { picks[j] = k; break; }
                 return;
             }
