@@ -135,8 +135,6 @@ namespace rtl
             const size_t n = a.size() > 0 ? a.size() - 1 : 0;
             if (n < 2 || n > pts.size() || n >= none)
                 return false;
-            // Strict mode: rounds bounded by a range budget (see the file comment), then unbounded, which alone
-            // proves that no partition exists (and finds the failure corner).
             // Most searches are small: first an unbounded round that gives up beyond a state cap; then, strict
             // mode only, rounds bounded by a range budget (see the file comment), then the unbounded one, which
             // alone proves that no partition exists (and finds the failure corner).
