@@ -32,6 +32,7 @@ if [[ -f $build/CMakeCache.txt ]] && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=
 fi
 # -O1 -gline-tables-only: the harnesses instantiate Eigen-heavy templates; at -O1 they compile about 3x faster than
 # at -O2 and still give symbolised stack traces. The build is part of every test run, the fuzzing time is not.
+mkdir -p "$(dirname "$build")"   # the configure log sits next to the build folder
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" \
   -DCMAKE_CXX_COMPILER="$cxx" -DRTL_BUILD_FUZZERS=ON -DRTL_BUILD_TESTS=OFF -DRTL_BUILD_EXAMPLES=OFF \
   -DRTL_BUILD_BENCHMARKS=OFF -DRTL_BUILD_WASM=OFF -DRTL_INSTALL=OFF \
