@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -563,4 +564,124 @@ TEST(OrganizedLidar, HugeBeamCountsAllocateNothingAndThrowRuntimeError)
     EXPECT_TRUE(std::isinf(c.at(0, 0).x()));
     EXPECT_TRUE(std::isnan(c.intensity[0]));
     EXPECT_TRUE(std::isnan(c.at(1, 0).x()));
+}
+
+namespace
+{
+    std::string fileText(const std::string &path)
+    {
+        std::ifstream f(path, std::ios::binary);
+        return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+    }
+
+    // The whole result of readCarmenLogDetailed, or its error message, as one comparable string.
+    template<typename E, typename Read>
+    std::string carmenResult(Read &&read)
+    {
+        std::string out;
+        try
+        {
+            const rtl::CarmenLog<E> log = read();
+            out = "max " + std::to_string(log.max_range) + " source " + std::to_string(int(log.max_range_source)) + " " +
+                  log.max_range_parameter + " line " + std::to_string(log.max_range_line) + " no-return " +
+                  std::to_string(log.no_return_beams) + "\n";
+            for (const auto &s : log.scans)
+            {
+                out += std::to_string(s.line) + " " + std::to_string(s.x) + " " + std::to_string(s.y) + " " +
+                       std::to_string(s.theta) + " " + std::to_string(s.timestamp) + ":";
+                char buf[64];
+                for (size_t i = 0; i < s.ranges.size(); ++i)
+                {
+                    std::snprintf(buf, sizeof buf, " %a %a,%a", double(s.ranges[i]), double(s.points[i].x()),
+                                  double(s.points[i].y()));
+                    out += buf;
+                }
+                out += "\n";
+            }
+        }
+        catch (const std::exception &e)
+        {
+            out = std::string("error: ") + e.what();
+        }
+        return out;
+    }
+}
+
+// The package reads logs and clouds from memory, without streams (readCarmenLogTextDetailed,
+// readOrganizedLidarBytes): the same scans, detection and errors as the stream readers on the same bytes.
+TEST(InMemoryReaders, CarmenTextEqualsTheStreamReader)
+{
+    const std::string flaser = "FLASER 3 1.0 2.0 3.0 0.5 0.25 0.1 0 0 0 12.5 host 12.6";
+    std::vector<std::string> texts = {fileText(data_dir + "/intel.log"), fileText(data_dir + "/csail.log"), "", "\n",
+                                      flaser, flaser + "\n", flaser + "\r\n\n\n" + flaser, "\n\n" + flaser + "\n\n",
+                                      "# comment\n" + flaser + "\nBOGUS 1\n", flaser + "\nFLASER 2 1 2 3\n",
+                                      "PARAM robot_front_laser_max 2.5\n" + flaser + "\n" + flaser,
+                                      flaser + std::string("\0", 1) + "\n", flaser + "\nFLASER 3 1 2 nan 0 0 0 0 0 0 1 h 1"};
+    ASSERT_GT(texts[0].size(), 1000u);
+    ASSERT_GT(texts[1].size(), 1000u);
+    for (const double max_range : {std::nan(""), 2.0, -1.0})
+        for (const auto &t : texts)
+        {
+            rtl::CarmenOptions o;
+            o.max_range = max_range;
+            const std::string from_stream = carmenResult<double>([&] {
+                std::istringstream in(t);
+                return rtl::readCarmenLogDetailed<double>(in, o);
+            });
+            EXPECT_EQ(carmenResult<double>([&] { return rtl::readCarmenLogTextDetailed<double>(t, o); }), from_stream)
+                    << t.substr(0, 200);
+            EXPECT_EQ(carmenResult<float>([&] { return rtl::readCarmenLogTextDetailed<float>(t, o); }),
+                      carmenResult<float>([&] {
+                          std::istringstream in(t);
+                          return rtl::readCarmenLogDetailed<float>(in, o);
+                      }));
+        }
+    // (the comparison can fail: the error names the line, and the intel excerpt has scans)
+    EXPECT_NE(carmenResult<double>([&] { return rtl::readCarmenLogTextDetailed<double>(texts[9]); }).find("line 2"),
+              std::string::npos);
+    EXPECT_GT(rtl::readCarmenLogTextDetailed<double>(texts[0]).scans.size(), 10u);
+}
+
+TEST(InMemoryReaders, OrganizedBytesEqualTheStreamReader)
+{
+    std::vector<std::string> inputs = {fileText(data_dir + "/rellis3d-os1-4x2048.bin"), ""};
+    std::string small;
+    for (int k = 0; k < 8; ++k) appendRecord(small, k == 3 ? 0.f : float(k), float(-k), 0.5f * float(k), float(k * k));
+    inputs.push_back(small);
+    inputs.push_back(small.substr(0, 17));   // truncated record
+    inputs.push_back(small.substr(0, 48));   // incomplete column of 4 / ring of 2... of 3 records
+    for (const auto &bytes : inputs)
+        for (const size_t beams : {size_t(0), size_t(1), size_t(2), size_t(4), size_t(3)})
+            for (const auto layout : {rtl::OrganizedLayout::ColumnMajor, rtl::OrganizedLayout::RowMajor})
+            {
+                auto describe = [](auto &&read) {
+                    try
+                    {
+                        const auto c = read();
+                        std::string s = std::to_string(c.beams) + "x" + std::to_string(c.columns);
+                        char buf[96];
+                        for (size_t i = 0; i < c.points.size(); ++i)
+                        {
+                            std::snprintf(buf, sizeof buf, " %a,%a,%a,%a", double(c.points[i].x()), double(c.points[i].y()),
+                                          double(c.points[i].z()), double(c.intensity[i]));
+                            s += buf;
+                        }
+                        return s;
+                    }
+                    catch (const std::exception &e)
+                    {
+                        return std::string("error: ") + e.what();
+                    }
+                };
+                const std::string from_stream = describe([&] {
+                    std::istringstream in(bytes);
+                    return rtl::readOrganizedLidar<float>(in, beams, layout);
+                });
+                EXPECT_EQ(describe([&] {
+                              return rtl::readOrganizedLidarBytes<float>(
+                                      reinterpret_cast<const unsigned char *>(bytes.data()), bytes.size(), beams, layout);
+                          }),
+                          from_stream)
+                        << bytes.size() << " bytes, " << beams << " beams";
+            }
 }

@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
-#include <streambuf>
 #include <string>
 #include <utility>
 #include <memory>
@@ -104,14 +103,6 @@ inline std::uintptr_t inputBuffer(double count) {
   return reinterpret_cast<std::uintptr_t>(b.data.get());
 }
 inline const char* bytes(std::uintptr_t p) { return reinterpret_cast<const char*>(p); }
-
-// A read-only std::istream source over bytes already in the wasm heap (no copy).
-struct MemoryBuffer : std::streambuf {
-  MemoryBuffer(const char* p, std::size_t n) {
-    char* b = const_cast<char*>(p);  // streambuf wants char*; nothing writes through it
-    setg(b, b, b + n);
-  }
-};
 
 // Copies n numbers into a new JS typed array (the view is only used for the copy, inside this call).
 template <class T>

@@ -214,8 +214,72 @@ namespace rtl
             std::size_t line = 0;
         };
 
-        //! Parses every FLASER line (gaps only where the range is not finite or not positive) and remembers the
-        //! first usable max-range PARAM. Throws std::runtime_error naming the line.
+        //! Parses line number `line` (text without its '\n'): a FLASER line is appended to `scans` (gaps only where
+        //! the range is not finite or not positive), the first usable max-range PARAM is remembered. Throws
+        //! std::runtime_error naming the line.
+        template<typename E>
+        void parseLine(std::string_view text, std::size_t line, std::vector<CarmenScan<E>> &scans, MaxRangeParameter &param)
+        {
+            const auto tok = tokens(text);
+            if (tok.empty() || tok[0][0] == '#') return;
+            if (!isRecordName(tok[0])) fail(line, "unknown record '" + std::string(tok[0]) + "'");
+            if (tok[0] == "PARAM")
+            {
+                // PARAM name value [ipc_timestamp hostname logger_timestamp]; a value that is not a positive
+                // number leaves the parameter unused (the log's ranges then decide).
+                double v = 0;
+                if (param.line == 0 && tok.size() >= 3 && isMaxRangeParameter(tok[1]) && parseDouble(tok[2], v) &&
+                    std::isfinite(v) && v > 0)
+                    param = {v, std::string(tok[1]), line};
+                return;
+            }
+            if (tok[0] != "FLASER") return;
+
+            if (tok.size() < 2) fail(line, "FLASER without beam count");
+            std::size_t n = 0;
+            auto [end, ec] = std::from_chars(tok[1].data(), tok[1].data() + tok[1].size(), n);
+            if (ec != std::errc() || end != tok[1].data() + tok[1].size() || n == 0)
+                fail(line, "bad beam count '" + std::string(tok[1]) + "'");
+            // n ranges + x y theta odom_x odom_y odom_theta ipc_timestamp hostname logger_timestamp
+            // (compared without n + 11, which wraps around for a beam count near SIZE_MAX)
+            if (tok.size() - 2 < n || tok.size() - 2 - n != 9)
+                fail(line, "FLASER with " + std::to_string(n) + " beams needs " +
+                               (n <= std::numeric_limits<std::size_t>::max() - 11 ? std::to_string(n + 11)
+                                                                                   : std::to_string(n) + " + 11") +
+                               " fields, found " + std::to_string(tok.size()));
+
+            CarmenScan<E> s;
+            s.line = line;
+            s.ranges.resize(n);
+            s.points.resize(n);
+            const double res = (n % 2 == 1 && n > 1) ? pi / static_cast<double>(n - 1) : pi / static_cast<double>(n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const double r = number(tok[2 + i], line, ("range " + std::to_string(i + 1)).c_str());
+                s.ranges[i] = static_cast<E>(r);
+                // Judged on the stored value: a range that rounds to 0 or inf in E (e.g. 1e-320 or 1e300 as a
+                // float) is a gap, not a point at the origin or at infinity.
+                if (!(s.ranges[i] > E(0)) || !std::isfinite(s.ranges[i]))
+                    s.points[i] = VectorND<2, E>::nan();
+                else
+                {
+                    const double a = -pi / 2 + static_cast<double>(i) * res;
+                    s.points[i] = VectorND<2, E>(static_cast<E>(r * std::cos(a)), static_cast<E>(r * std::sin(a)));
+                }
+            }
+            s.x = static_cast<E>(finiteNumber(tok[2 + n], line, "x"));
+            s.y = static_cast<E>(finiteNumber(tok[3 + n], line, "y"));
+            s.theta = static_cast<E>(finiteNumber(tok[4 + n], line, "theta"));
+            const char *odometry[3] = {"odom_x", "odom_y", "odom_theta"};
+            for (std::size_t k = 0; k < 3; ++k) finiteNumber(tok[5 + k + n], line, odometry[k]);
+            s.timestamp = finiteNumber(tok[8 + n], line, "ipc_timestamp");
+            finiteNumber(tok[10 + n], line, "logger_timestamp");
+            if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.theta))
+                fail(line, "pose out of the element type's range");
+            scans.push_back(std::move(s));
+        }
+
+        //! Every line of the stream through parseLine (std::getline's lines).
         template<typename E>
         std::vector<CarmenScan<E>> parse(std::istream &in, MaxRangeParameter &param)
         {
@@ -223,68 +287,68 @@ namespace rtl
             std::string text;
             std::size_t line = 0;
             while (std::getline(in, text))
-            {
-                ++line;
-                const auto tok = tokens(text);
-                if (tok.empty() || tok[0][0] == '#') continue;
-                if (!isRecordName(tok[0])) fail(line, "unknown record '" + std::string(tok[0]) + "'");
-                if (tok[0] == "PARAM")
-                {
-                    // PARAM name value [ipc_timestamp hostname logger_timestamp]; a value that is not a positive
-                    // number leaves the parameter unused (the log's ranges then decide).
-                    double v = 0;
-                    if (param.line == 0 && tok.size() >= 3 && isMaxRangeParameter(tok[1]) && parseDouble(tok[2], v) &&
-                        std::isfinite(v) && v > 0)
-                        param = {v, std::string(tok[1]), line};
-                    continue;
-                }
-                if (tok[0] != "FLASER") continue;
-
-                if (tok.size() < 2) fail(line, "FLASER without beam count");
-                std::size_t n = 0;
-                auto [end, ec] = std::from_chars(tok[1].data(), tok[1].data() + tok[1].size(), n);
-                if (ec != std::errc() || end != tok[1].data() + tok[1].size() || n == 0)
-                    fail(line, "bad beam count '" + std::string(tok[1]) + "'");
-                // n ranges + x y theta odom_x odom_y odom_theta ipc_timestamp hostname logger_timestamp
-                // (compared without n + 11, which wraps around for a beam count near SIZE_MAX)
-                if (tok.size() - 2 < n || tok.size() - 2 - n != 9)
-                    fail(line, "FLASER with " + std::to_string(n) + " beams needs " +
-                                   (n <= std::numeric_limits<std::size_t>::max() - 11 ? std::to_string(n + 11)
-                                                                                       : std::to_string(n) + " + 11") +
-                                   " fields, found " + std::to_string(tok.size()));
-
-                CarmenScan<E> s;
-                s.line = line;
-                s.ranges.resize(n);
-                s.points.resize(n);
-                const double res = (n % 2 == 1 && n > 1) ? pi / static_cast<double>(n - 1) : pi / static_cast<double>(n);
-                for (std::size_t i = 0; i < n; ++i)
-                {
-                    const double r = number(tok[2 + i], line, ("range " + std::to_string(i + 1)).c_str());
-                    s.ranges[i] = static_cast<E>(r);
-                    // Judged on the stored value: a range that rounds to 0 or inf in E (e.g. 1e-320 or 1e300 as a
-                    // float) is a gap, not a point at the origin or at infinity.
-                    if (!(s.ranges[i] > E(0)) || !std::isfinite(s.ranges[i]))
-                        s.points[i] = VectorND<2, E>::nan();
-                    else
-                    {
-                        const double a = -pi / 2 + static_cast<double>(i) * res;
-                        s.points[i] = VectorND<2, E>(static_cast<E>(r * std::cos(a)), static_cast<E>(r * std::sin(a)));
-                    }
-                }
-                s.x = static_cast<E>(finiteNumber(tok[2 + n], line, "x"));
-                s.y = static_cast<E>(finiteNumber(tok[3 + n], line, "y"));
-                s.theta = static_cast<E>(finiteNumber(tok[4 + n], line, "theta"));
-                const char *odometry[3] = {"odom_x", "odom_y", "odom_theta"};
-                for (std::size_t k = 0; k < 3; ++k) finiteNumber(tok[5 + k + n], line, odometry[k]);
-                s.timestamp = finiteNumber(tok[8 + n], line, "ipc_timestamp");
-                finiteNumber(tok[10 + n], line, "logger_timestamp");
-                if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.theta))
-                    fail(line, "pose out of the element type's range");
-                scans.push_back(std::move(s));
-            }
+                parseLine<E>(text, ++line, scans, param);
             if (in.bad()) throw std::runtime_error("CARMEN log: read error after line " + std::to_string(line));
             return scans;
+        }
+
+        //! The same lines as std::getline would read from a stream holding `text`: split at '\n', a last line
+        //! without one counts unless it is empty. No stream is involved (the WebAssembly package reads logs this way).
+        template<typename E>
+        std::vector<CarmenScan<E>> parse(std::string_view text, MaxRangeParameter &param)
+        {
+            std::vector<CarmenScan<E>> scans;
+            std::size_t line = 0;
+            for (std::size_t pos = 0; pos < text.size();)
+            {
+                std::size_t nl = text.find('\n', pos);
+                if (nl == std::string_view::npos) nl = text.size();
+                parseLine<E>(text.substr(pos, nl - pos), ++line, scans, param);
+                pos = nl + 1;
+            }
+            return scans;
+        }
+
+        //! readCarmenLogDetailed on either input (a std::istream or the log's text).
+        template<typename E, class In>
+        CarmenLog<E> read(In &&in, const CarmenOptions &options)
+        {
+            if (!std::isnan(options.max_range) && !(static_cast<E>(options.max_range) > E(0)))   // (also in E)
+                throw std::invalid_argument("readCarmenLog: max_range must be positive (or NaN to detect it), got " +
+                                            std::to_string(options.max_range));
+            CarmenLog<E> log;
+            MaxRangeParameter param;
+            log.scans = parse<E>(in, param);
+            if (!std::isnan(options.max_range))
+            {
+                log.max_range = static_cast<E>(options.max_range);
+                log.max_range_source = CarmenMaxRangeSource::Explicit;
+            }
+            else
+            {
+                const E recurring = carmenRecurringMaxRange(log.scans).first;
+                const E from_param = static_cast<E>(param.value);
+                // (a parameter that rounds to 0 in E, e.g. 1e-320 as a float, is unusable)
+                if (param.line != 0 && from_param > E(0) && !(recurring < from_param))
+                {
+                    log.max_range = from_param;
+                    log.max_range_source = CarmenMaxRangeSource::Parameter;
+                    log.max_range_parameter = param.name;
+                    log.max_range_line = param.line;
+                }
+                else if (!std::isnan(recurring))
+                {
+                    log.max_range = recurring;
+                    log.max_range_source = CarmenMaxRangeSource::Recurring;
+                }
+                else
+                {
+                    log.max_range = E(80);
+                    log.max_range_source = CarmenMaxRangeSource::Default;
+                }
+            }
+            applyMaxRange(log);
+            return log;
         }
     }
 
@@ -302,42 +366,15 @@ namespace rtl
     template<typename E>
     CarmenLog<E> readCarmenLogDetailed(std::istream &in, const CarmenOptions &options = {})
     {
-        if (!std::isnan(options.max_range) && !(static_cast<E>(options.max_range) > E(0)))   // (also in E)
-            throw std::invalid_argument("readCarmenLog: max_range must be positive (or NaN to detect it), got " +
-                                        std::to_string(options.max_range));
-        CarmenLog<E> log;
-        carmen_detail::MaxRangeParameter param;
-        log.scans = carmen_detail::parse<E>(in, param);
-        if (!std::isnan(options.max_range))
-        {
-            log.max_range = static_cast<E>(options.max_range);
-            log.max_range_source = CarmenMaxRangeSource::Explicit;
-        }
-        else
-        {
-            const E recurring = carmenRecurringMaxRange(log.scans).first;
-            const E from_param = static_cast<E>(param.value);
-            // (a parameter that rounds to 0 in E, e.g. 1e-320 as a float, is unusable)
-            if (param.line != 0 && from_param > E(0) && !(recurring < from_param))
-            {
-                log.max_range = from_param;
-                log.max_range_source = CarmenMaxRangeSource::Parameter;
-                log.max_range_parameter = param.name;
-                log.max_range_line = param.line;
-            }
-            else if (!std::isnan(recurring))
-            {
-                log.max_range = recurring;
-                log.max_range_source = CarmenMaxRangeSource::Recurring;
-            }
-            else
-            {
-                log.max_range = E(80);
-                log.max_range_source = CarmenMaxRangeSource::Default;
-            }
-        }
-        carmen_detail::applyMaxRange(log);
-        return log;
+        return carmen_detail::read<E>(in, options);
+    }
+
+    //! readCarmenLogDetailed on the log's text in memory (the same scans, errors and detection as a stream holding
+    //! it), without any stream.
+    template<typename E>
+    CarmenLog<E> readCarmenLogTextDetailed(std::string_view text, const CarmenOptions &options = {})
+    {
+        return carmen_detail::read<E>(text, options);
     }
 
     //! The scans of readCarmenLogDetailed with the detected no-return value (each scan's max_range tells it).

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <fstream>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "rtl/io/LaTeXUtility.h"
+#include "rtl/io/TextSink.h"
 
 namespace rtl
 {
@@ -45,37 +45,49 @@ namespace rtl
 
         void addHLine() { rows.push_back({true, {}}); }
 
-        //! The text writeTable writes, as a string (e.g. for a binding that returns strings).
+        //! The text writeTable writes, as a string (e.g. for a binding that returns strings); no stream involved.
         [[nodiscard]] std::string tableString(const std::string &desc) const
         {
-            std::ostringstream os;
-            writeTable(os, desc);
-            return os.str();
+            std::string out;
+            writeTo(out, desc);
+            return out;
         }
 
         //! Writes table/center/tabular, the heading and rows (cells joined by " & ", each line starting with a tab and
         //! ending with "\\"), and `\caption{desc}` (desc as given) only if `desc` is non-empty, then a blank line.
-        void writeTable(std::ostream &ofs, const std::string &desc) const
+        void writeTable(std::ostream &ofs, const std::string &desc) const { writeTo(ofs, desc); }
+
+    private:
+        //! writeTable into a std::ostream or a std::string (TextSink.h).
+        template<class Out>
+        void writeTo(Out &ofs, const std::string &desc) const
         {
-            ofs << "\\begin{table}\n\\begin{center}\n\\begin{tabular}{" << effectiveColumnStyle() << "}\n";
+            using io_detail::textAppend;
+            textAppend(ofs, "\\begin{table}\n\\begin{center}\n\\begin{tabular}{");
+            textAppend(ofs, effectiveColumnStyle());
+            textAppend(ofs, "}\n");
             bool first = true;
             auto line = [&](const std::string &text) {
                 if (!first)
-                    ofs << "\n";
+                    textAppend(ofs, "\n");
                 first = false;
-                ofs << "\t" << text;
+                textAppend(ofs, "\t");
+                textAppend(ofs, text);
             };
             if (!heading.empty())
                 line(joinCells(heading));
             for (const auto &r : rows)
                 line(r.hline ? std::string("\\hline") : joinCells(r.cells));
-            ofs << "\n\\end{tabular}\n\\end{center}\n";
+            textAppend(ofs, "\n\\end{tabular}\n\\end{center}\n");
             if (!desc.empty())
-                ofs << "\\caption{" << desc << "}\n";
-            ofs << "\\end{table}\n\n";
+            {
+                textAppend(ofs, "\\caption{");
+                textAppend(ofs, desc);
+                textAppend(ofs, "}\n");
+            }
+            textAppend(ofs, "\\end{table}\n\n");
         }
 
-    private:
         struct Row
         {
             bool hline;

@@ -68,6 +68,10 @@ namespace rtl
         }
     }
 
+    template<typename E>
+    OrganizedCloud<E> readOrganizedLidarBytes(const unsigned char *bytes, std::size_t size, std::size_t beams,
+                                              OrganizedLayout layout = OrganizedLayout::ColumnMajor);
+
     //! Reads a whole stream of records. An empty stream gives an empty cloud (0 columns). Throws
     //! std::invalid_argument for beams == 0, std::runtime_error naming the byte offset for a truncated record or an
     //! incomplete last column (ColumnMajor) / ring (RowMajor).
@@ -82,11 +86,20 @@ namespace rtl
                 bytes.insert(bytes.end(), buf, buf + in.gcount());
             if (in.bad()) throw std::runtime_error("organised LiDAR: read error at byte offset " + std::to_string(bytes.size()));
         }
+        return readOrganizedLidarBytes<E>(bytes.data(), bytes.size(), beams, layout);
+    }
+
+    //! readOrganizedLidar on `size` bytes in memory (the same cloud and errors), without any stream.
+    template<typename E>
+    OrganizedCloud<E> readOrganizedLidarBytes(const unsigned char *bytes, std::size_t size, std::size_t beams,
+                                              OrganizedLayout layout)
+    {
+        if (beams == 0) throw std::invalid_argument("readOrganizedLidar: beams must be positive");
         constexpr std::size_t rec = 16;
-        if (bytes.size() % rec != 0)
-            throw std::runtime_error("organised LiDAR: truncated record at byte offset " + std::to_string(bytes.size() / rec * rec) +
-                                     " (" + std::to_string(bytes.size()) + " bytes is not a multiple of 16)");
-        const std::size_t n = bytes.size() / rec;
+        if (size % rec != 0)
+            throw std::runtime_error("organised LiDAR: truncated record at byte offset " + std::to_string(size / rec * rec) +
+                                     " (" + std::to_string(size) + " bytes is not a multiple of 16)");
+        const std::size_t n = size / rec;
         if (n % beams != 0)
         {
             const std::size_t complete = n / beams * beams;
@@ -102,7 +115,7 @@ namespace rtl
         cloud.intensity.resize(n);
         for (std::size_t k = 0; k < n; ++k)
         {
-            const unsigned char *r = bytes.data() + k * rec;
+            const unsigned char *r = bytes + k * rec;
             const float x = lidar_detail::leFloat(r), y = lidar_detail::leFloat(r + 4), z = lidar_detail::leFloat(r + 8);
             const std::size_t dst = layout == OrganizedLayout::ColumnMajor ? k : (k % cloud.columns) * beams + k / cloud.columns;
             cloud.points[dst] = (x == 0.f && y == 0.f && z == 0.f)

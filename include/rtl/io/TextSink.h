@@ -1,0 +1,36 @@
+// Where the writers put their text: a std::ostream (RTL's stream calls) or a std::string. The writers are templates
+// on the target and append through textAppend, so a program that writes only to strings (the WebAssembly package)
+// instantiates no stream: libc++'s stream and locale machinery is about 20 KB gzipped of the package's wasm.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+namespace rtl::io_detail
+{
+    inline void textAppend(std::string &out, const std::string &text) { out += text; }
+    inline void textAppend(std::string &out, const char *text) { out += text; }
+    // operator<< (not write): the stream's width and fill apply as they always did.
+    inline void textAppend(std::ostream &out, const std::string &text) { out << text; }
+    inline void textAppend(std::ostream &out, const char *text) { out << text; }
+}
+
+namespace rtl::io_detail
+{
+    //! `<<` of text onto either target, piece by piece as the writers always wrote to streams.
+    template<class Out>
+    struct TextOut
+    {
+        Out &out;
+        TextOut &operator<<(const std::string &text)
+        {
+            textAppend(out, text);
+            return *this;
+        }
+        TextOut &operator<<(const char *text)
+        {
+            textAppend(out, text);
+            return *this;
+        }
+    };
+}
