@@ -1,8 +1,9 @@
 // Shared helpers of the package tests (tests/js): tolerant comparisons and reference data.
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, writeFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export function near(actual, expected, tol, what = 'value') {
@@ -48,4 +49,24 @@ export function packAndInstall(dir) {
   const tarball = join(dir, pack.filename);
   npm(['install', '--no-audit', '--no-fund', '--offline', tarball], app);
   return { app, tarball, pack };
+}
+
+// A native helper program of tests/tools ($RTL_NATIVE_BUILD_DIR/tools, default build/native) as a function of its
+// arguments: arrays and typed arrays go in temporary .f64 files (empty ones as '-'), other values as text; returns
+// the program's stdout.
+export function nativeTool(name) {
+  const root = fileURLToPath(new URL('../..', import.meta.url));
+  const tool = join(resolve(root, process.env.RTL_NATIVE_BUILD_DIR || 'build/native'), 'tools', name);
+  assert.ok(existsSync(tool), `${tool} missing: build the native tree (cmake --build <dir> --target ${name})`);
+  const dir = mkdtempSync(join(tmpdir(), `rtl-${name}-`));
+  process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
+  let files = 0;
+  const arg = (a) => {
+    if (typeof a !== 'object' || a === null) return String(a);
+    if (a.length === 0) return '-';
+    const f = join(dir, `a${files++}.f64`);
+    writeFileSync(f, Float64Array.from(a));
+    return f;
+  };
+  return (...args) => execFileSync(tool, args.map(arg), { encoding: 'utf8', maxBuffer: 1 << 28 });
 }
