@@ -2,7 +2,7 @@
 // AFTLS 3D lines, float / double. Input: byte 0 picks the vectorizer (bits 0-2) and split mode (bit 3); byte 1
 // sigma and byte 2 delta (mantissa and exponent, relative to the coordinate scale); byte 3 the coordinate scale
 // (a power of two) or, with its top bit, raw coordinates (any bit pattern: NaN, inf, huge); then the points (at
-// most 1,500). Checked (what the API documents):
+// most max_points = 600). Checked (what the API documents):
 // - false for fewer than 2 points, a non-finite point, sigma or delta not positive and finite;
 // - strict mode true: indices() partition [0, N) in order, >= 2 points each, every range's mean squared residual
 //   (long double) below sigma^2 up to rounding, one polyline of segments + 1 finite vertices, and every vertex
@@ -11,9 +11,13 @@
 //   valid input at moderate coordinates, polylineOffsets consistent with breaks();
 // - 3D: a partition whose ranges fit sigma, finite segments;
 // - the work budget (deterministic, not a time): the exact search's corner work stays within a log factor of its
-//   fits (testing every incoming line against every candidate range, issue 15 item 7, broke this), and the
-//   search runs at most once per FTLS call and once per AFTLS call (both branches share it). The fits themselves
-//   (up to N x the longest range that fits sigma) are not bounded: see PartitionSearch2D.h.
+//   fits (testing every incoming line against every candidate range, issue 15 item 7, broke this), the search
+//   runs at most once per FTLS call and once per AFTLS call (both branches share it), and at moderate coordinates
+//   its states stay within what PartitionSearch2D guarantees: each round pushes every fitting range at most once
+//   (F of them, counted here in long double), the first round stops past 2 N + 1024 states, then at most three
+//   strict rounds and one split round, so at most 2 N + 1024 + 4 F. F itself is up to N x the longest range that
+//   fits sigma (the cliff that remains, see PartitionSearch2D.h); inputs are capped at 600 points, so that it
+//   stays within the time limit under the sanitizers.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -55,6 +59,32 @@ namespace
                 cov(x, y) += static_cast<double>(((LD)p[i][x] - c[x]) * ((LD)p[i][y] - c[y]) / m);
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, d, d>> es(cov);
         return d == 2 ? es.eigenvalues()(0) : es.eigenvalues()(0) + es.eigenvalues()(1);
+    }
+
+    constexpr size_t max_points = 600;
+
+    //! Ranges [b, e) of >= 2 points that fit sigma (2 points, or mean squared orthogonal residual, long double,
+    //! below sigma^2 with the same tolerance as the range check below): an upper bound on the states of one round.
+    template<typename T>
+    size_t fittingRanges(const std::vector<rtl::VectorND<2, T>> &p, double s2, double tol)
+    {
+        size_t f = 0;
+        for (size_t b = 0; b + 2 <= p.size(); ++b)
+        {
+            LD sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;   // about p[b], against cancellation
+            for (size_t e = b; e < p.size(); ++e)
+            {
+                const LD x = (LD)p[e][0] - p[b][0], y = (LD)p[e][1] - p[b][1];
+                sx += x; sy += y; sxx += x * x; sxy += x * y; syy += y * y;
+                const size_t m = e + 1 - b;
+                if (m < 2) continue;
+                if (m == 2) { ++f; continue; }
+                const LD a = sxx / m - (sx / m) * (sx / m), c = syy / m - (sy / m) * (sy / m), d = sxy / m - (sx / m) * (sy / m);
+                const LD minor = (a + c) / 2 - std::sqrt((a - c) * (a - c) / 4 + d * d);
+                f += minor <= (LD)s2 * (1 + 1e-3L) + (LD)tol;
+            }
+        }
+        return f;
     }
 
     //! Counts the exact-search repairs (method 5) of a call.
@@ -104,6 +134,13 @@ namespace
         const size_t fits = after.fits - before.fits, lg = 2 + static_cast<size_t>(std::log2(static_cast<double>(n + 1)));
         require(after.corners - before.corners <= 64 * (fits + n) * lg);
         require(exact.count <= 2);
+        const size_t states = after.states - before.states;
+        if (moderate && states > 2 * n + 1024)
+        {
+            const double s2 = static_cast<double>(sigma) * static_cast<double>(sigma);
+            // The search's sums are in double for float points too.
+            require(states <= 2 * n + 1024 + 4 * fittingRanges(pts, s2, 64e-14 * static_cast<double>(extent * extent)));
+        }
         const auto &idx = v.indices();
         const auto &off = v.polylineOffsets();
         if (!ok)
@@ -154,7 +191,7 @@ namespace
         const int max_exp = sizeof(T) == 4 ? 100 : 900;
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
         std::vector<rtl::VectorND<2, T>> pts;
-        while (in.n > 0 && pts.size() < 1500)
+        while (in.n > 0 && pts.size() < max_points)
         {
             rtl::VectorND<2, T> v;
             for (int k = 0; k < 2; ++k)
@@ -215,7 +252,7 @@ namespace
         const int max_exp = sizeof(T) == 4 ? 60 : 300;   // squared moments stay finite in double
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
         std::vector<rtl::VectorND<3, T>> pts;
-        while (in.n > 0 && pts.size() < 1500)
+        while (in.n > 0 && pts.size() < max_points)
         {
             rtl::VectorND<3, T> v;
             for (int k = 0; k < 3; ++k)

@@ -32,6 +32,14 @@
 // which alone proves that no partition exists. This removes most states where the optimum needs about as many
 // ranges as the fits alone (a long chain of few long ranges: 13x fewer states); where corners force extra short
 // "bridge" ranges the bound is loose and the search stays N x L (a corner-aware bound would be needed).
+// Measured on the corpus's slowest bridge inputs (tests/vect/t_fast_corpus.h seeds 115, 299, 40, 257, 297, 84): a
+// single round with the budget equal to the optimum's R (known beforehand) still keeps 69-93 % of the unbounded
+// search's states: the fits-only bound falls short of R by about the number of bridges (R - remaining[0] = 4-9), and
+// that slack lets nearly every fitting range in, so no schedule of budgets helps there; on the worst 600-point prefixes
+// an FTLS call's states are 0.97-1.03 x the number F of fitting ranges. Nor would a bound that only skips boundaries
+// where no pair of fitting lines meets (not measured): 2- and 3-point ranges point almost anywhere and meet at most
+// boundaries; bridges are forced because the long lines on either side of a corner miss each other, so a useful bound
+// has to tell long ranges from short ones at every corner.
 // Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
 // crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
 //
