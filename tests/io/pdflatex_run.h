@@ -21,12 +21,16 @@ namespace pdflatex_test
         return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     }
 
-    //! <dir>/<base>.tex: a minimal document with one preview page per picture.
-    inline void writePreviewDocument(const fs::path &dir, const std::string &base, const std::vector<std::string> &pictures)
+    //! The preview document's preamble, the one the TikZ writers' standalone documents start with.
+    inline const char *const preamble = "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
+                                        "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n";
+
+    //! <dir>/<base>.tex: a minimal document with one preview page per picture; `extra` goes at the end of the preamble.
+    inline void writePreviewDocument(const fs::path &dir, const std::string &base, const std::vector<std::string> &pictures,
+                                     const std::string &extra = "")
     {
         std::ofstream doc(dir / (base + ".tex"));
-        doc << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
-               "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n\\begin{document}\n";
+        doc << preamble << extra << "\\begin{document}\n";
         for (const auto &p : pictures)
             doc << p;
         doc << "\\end{document}\n";
@@ -49,10 +53,12 @@ namespace pdflatex_test
         return "cd " + rtl::latex_detail::shellQuote(dir.string()) + " && " + command;
     }
 
-    //! pdflatex, non-interactive, on <dir>/<base>.tex (its output in <dir>/pdflatex.out).
-    inline Run compile(const fs::path &dir, const std::string &base)
+    //! pdflatex, non-interactive, on <dir>/<base>.tex (its output in <dir>/pdflatex.out); with halt_on_error false
+    //! it goes on after an error, so that the log lists every failing picture.
+    inline Run compile(const fs::path &dir, const std::string &base, bool halt_on_error = true)
     {
-        int rc = std::system(inDir(dir, "pdflatex -interaction=nonstopmode -halt-on-error " + base + ".tex > pdflatex.out 2>&1").c_str());
+        const std::string halt = halt_on_error ? "-halt-on-error " : "";
+        int rc = std::system(inDir(dir, "pdflatex -interaction=nonstopmode " + halt + base + ".tex > pdflatex.out 2>&1").c_str());
         return {rc, readFile(dir / (base + ".log"))};
     }
 

@@ -265,7 +265,9 @@ TEST(Tikz2DRobust, LogAxisLabelsBeyondDoubleAreLeftOut)
     // fuzz_tikz2d finding: the overrun of a log axis reached 10^438, whose label was "$inf$" (and 10^-400 gave "$0$").
     rtl::Svg2D d(rtl::Svg2D::axis_type_linear, rtl::Svg2D::axis_type_log10);
     d.setGridAxisOverrun(rtl::Svg2D::overrun_absolute, 400.0f);
-    d.addPlot(std::vector<Vector2f>{Vector2f(0, 1), Vector2f(1, 1e38f)}, "draw=black");
+    // x up to 1e4: with x up to 1 the 400-unit overrun made the picture 8,010 cm wide, beyond TeX's dimensions
+    // (now refused); this way it is 10.8 cm wide and 220 cm high.
+    d.addPlot(std::vector<Vector2f>{Vector2f(0, 1), Vector2f(1e4f, 1e38f)}, "draw=black");
     d.addAxisY("draw=black", "%g", rtl::Svg2D::position_left, 100.0f);
     std::ostringstream t;
     rtl::writeTikz(d, t);

@@ -27,7 +27,8 @@ namespace rtl
     //!   (style, template, scale) become \MarkA, ... The registration order is the order of the calls.
     //! - On log10 axes every coordinate is replaced by its log10 before it is tracked (non-positive values are
     //!   dropped); grid and axis ticks are then decades. Non-finite points are skipped and break polylines.
-    //! - The data bounds cover every drawn point (circles and ellipses by their bounding boxes), axis crossings and
+    //! - The data bounds cover every drawn point (circles and ellipses by their bounding boxes, clamped to the float
+    //!   range where those overflow), axis crossings and
     //!   setMinPlotRegion points; frame() maps them (or the clip region) to the requested size.
     class Drawing2D
     {
@@ -295,8 +296,18 @@ namespace rtl
             float c = std::abs(std::cos(rotation)), s = std::abs(std::sin(rotation));
             float ex = std::sqrt(x_radius * x_radius * c * c + y_radius * y_radius * s * s);
             float ey = std::sqrt(x_radius * x_radius * s * s + y_radius * y_radius * c * c);
-            track(x - ex, y - ey);
-            track(x + ex, y + ey);
+            if (!std::isfinite(ex) || !std::isfinite(ey))
+            {
+                // The squares overflow float beyond about 1.8e19: the box in double, clamped to the float range, so
+                // the bounds (and the writers' extent checks) still see the ellipse.
+                auto half = [](double a, double b, double ca, double cb) {
+                    return toFloatRange(std::sqrt(a * a * ca * ca + b * b * cb * cb));
+                };
+                ex = half(x_radius, y_radius, c, s);
+                ey = half(x_radius, y_radius, s, c);
+            }
+            track(boundSum(x, -ex), boundSum(y, -ey));
+            track(boundSum(x, ex), boundSum(y, ey));
             Primitive p = primitive(Kind::ellipse, style);
             p.points = {{x, y}};
             p.r1 = x_radius;
@@ -406,6 +417,18 @@ namespace rtl
         float tx(float x) const { return axis_type_x == axis_type_log10 ? (x > 0 ? std::log10(x) : std::numeric_limits<float>::quiet_NaN()) : x; }
         float ty(float y) const { return axis_type_y == axis_type_log10 ? (y > 0 ? std::log10(y) : std::numeric_limits<float>::quiet_NaN()) : y; }
 
+        static float toFloatRange(double v)
+        {
+            const double m = std::numeric_limits<float>::max();
+            return static_cast<float>(std::clamp(v, -m, m));
+        }
+        //! a + b, or the float range's end where that overflows: a bound beyond float still widens the frame.
+        static float boundSum(float a, float b)
+        {
+            float s = a + b;
+            return std::isfinite(s) ? s : toFloatRange(static_cast<double>(a) + static_cast<double>(b));
+        }
+
         void track(float x, float y)
         {
             if (std::isfinite(x))
@@ -510,8 +533,8 @@ namespace rtl
             if (!finite(x, y) || !std::isfinite(radius) || !finite(a1, a2))
                 return;
             radius = std::abs(radius);
-            track(x - radius, y - radius);
-            track(x + radius, y + radius);
+            track(boundSum(x, -radius), boundSum(y, -radius));
+            track(boundSum(x, radius), boundSum(y, radius));
             Primitive p = primitive(kind, style);
             p.points = {{x, y}};
             p.r1 = radius;

@@ -49,6 +49,13 @@ namespace rtl
     //!   1/2; axis labels and BSP splits are not counted) is written with every k-th added mark only and a note below
     //!   the picture; scenes within it are written as before, byte for byte. If the lines, axes and faces alone
     //!   exceed it, writeTEX/writeTikz throw std::length_error before writing anything. setTexMarkLimit(0): no limit.
+    //! - TeX's dimensions (about 575 cm), an addition to RTL: writeTikz throws std::length_error before writing anything
+    //!   if the export size, a clip corner, the picture's extent (1.1 times the clip rectangle, which objects may
+    //!   reach, on either side) or a mark's radius at the reference depth (0.1 cm * mark_radius) is beyond
+    //!   latex_detail::tex_paper_limit_cm (500 cm); writeTEX also if the border or the page (extent plus two
+    //!   borders) is. Near the camera a mark's scale is clamped (max_mark_scale; and within 250 cm of the centre
+    //!   unless at most 100), mark rotations beyond +-3600 degrees are written modulo 360, and axis labels projected
+    //!   beyond 250 cm (far outside the clip) are left out. Scenes within these limits are written as before.
     class LaTeXTikz3D
     {
     public:
@@ -64,6 +71,10 @@ namespace rtl
         static inline const char *latex_mark_dot = latex_detail::tikz_mark_dot;
         static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
         static inline const char *latex_var_style = latex_detail::tikz_var_style;
+
+        //! The largest perspective scale of a mark (\MarkRadius 0.1 cm * 1000: a dot of 200 cm across): nearer to the
+        //! camera it stops growing.
+        static constexpr double max_mark_scale = 1000.0;
 
         LaTeXTikz3D() { clearAll(); }
         LaTeXTikz3D(LaTeXTikz3D &&le) noexcept = default;
@@ -169,6 +180,7 @@ namespace rtl
         {
             if (!hasContent())
                 return;
+            texLimits(true);
             thinning();
             latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
@@ -176,13 +188,15 @@ namespace rtl
         {
             if (!hasContent())
                 return;
-            thinning();   // throws before the preamble is written
+            texLimits(true);   // these throw before the preamble is written
+            thinning();
             latex_detail::writeTikzDocument(os, border_cm, [this](std::ostream &o) { writeTikz(o); });
         }
         //! Writes only the tikzpicture (everything it defines is local to it). A scene without objects and without
         //! a min region gives an empty picture of the export size. Thinned or std::length_error as in the class comment.
         void writeTikz(std::ostream &os)
         {
+            texLimits(false);
             const latex_detail::TikzThinning thin = thinning();
             std::string out = "\\begin{tikzpicture}[";
             out += names.styleOptions();
@@ -631,6 +645,15 @@ namespace rtl
             std::string operator()(const V3 &p) const { return pt(f * p.x() / -p.z() * k, f * p.y() / -p.z() * k); }
         };
 
+        //! A mark's perspective scale, clamped near the camera: at most max_mark_scale, and its reach (0.2 cm times
+        //! the scale: a robot's nose) not beyond 250 cm from the centre unless the scale is at most 100 (20 cm).
+        static double markScale(double scale, double x, double y)
+        {
+            const double room = (0.5 * latex_detail::tex_paper_limit_cm - std::max(std::abs(x), std::abs(y))) / 0.2;
+            const double max = std::min(max_mark_scale, std::max(100.0, room));
+            return std::abs(scale) > max ? std::copysign(max, scale) : scale;
+        }
+
         void emitItems(std::string &out, std::vector<Item> &items, const Projector &P, double ref_depth) const
         {
             std::sort(items.begin(), items.end(), [](const Item &a, const Item &b) { return a.depth() > b.depth(); });
@@ -639,10 +662,10 @@ namespace rtl
                 if (it.is_mark)
                 {
                     const MarkItem &m = mark_items[it.ref];
-                    double scale = m.radius * ref_depth / -it.a.z();
-                    out += m.mark + "{" + latex_detail::number(P.f * it.a.x() / -it.a.z() * P.k) + "}{" +
-                           latex_detail::number(P.f * it.a.y() / -it.a.z() * P.k) + "}{" +
-                           latex_detail::number(m.rotation) + "}{" + latex_detail::number(scale) + "}\n";
+                    const double x = P.f * it.a.x() / -it.a.z() * P.k, y = P.f * it.a.y() / -it.a.z() * P.k;
+                    out += m.mark + "{" + latex_detail::number(x) + "}{" + latex_detail::number(y) + "}{" +
+                           latex_detail::number(latex_detail::tikzAngle(m.rotation)) + "}{" +
+                           latex_detail::number(markScale(m.radius * ref_depth / -it.a.z(), x, y)) + "}\n";
                 }
                 else
                     out += "\\draw[" + line_styles[it.ref] + "] (" + P(it.a) + ") -- (" + P(it.b) + ");\n";
@@ -701,6 +724,34 @@ namespace rtl
             emitItems(out, node->on, P, ref_depth);
             side(cam_front);
         }
+
+        //! std::length_error (refuseBeyondTex) if the picture is beyond TeX's dimensions; see the class comment.
+        void texLimits(bool document) const
+        {
+            const std::string who = "LaTeXTikz3D::writeTikz";
+            using latex_detail::refuseBeyondTex;
+            refuseBeyondTex(export_w, "the export width", who);
+            refuseBeyondTex(export_h, "the export height", who);
+            if (clip_set)
+                for (double v : {clip_min.x(), clip_min.y(), clip_max.x(), clip_max.y()})
+                    refuseBeyondTex(v, "a clip corner", who);
+            // Lines, faces and marks reach 1.1 times the clip rectangle (render's frustum) on either side.
+            const double w = 2.0 * std::max(export_w / 2.0, 1.1 * std::max(std::abs(clipLo().x()), std::abs(clipHi().x())));
+            const double h = 2.0 * std::max(export_h / 2.0, 1.1 * std::max(std::abs(clipLo().y()), std::abs(clipHi().y())));
+            refuseBeyondTex(w, "the picture width", who);
+            refuseBeyondTex(h, "the picture height", who);
+            for (const auto &m : mark_items)
+                if (!std::isnan(m.radius))   // NaN is written as 0
+                    refuseBeyondTex(0.1 * m.radius, "a mark radius", who);
+            if (document)
+            {
+                refuseBeyondTex(border_cm, "the border", who);
+                refuseBeyondTex(w + 2.0 * border_cm, "the page width", who);
+                refuseBeyondTex(h + 2.0 * border_cm, "the page height", who);
+            }
+        }
+        Eigen::Vector2d clipLo() const { return clip_set ? clip_min : Eigen::Vector2d(-export_w / 2.0, -export_h / 2.0); }
+        Eigen::Vector2d clipHi() const { return clip_set ? clip_max : Eigen::Vector2d(export_w / 2.0, export_h / 2.0); }
 
         latex_detail::TikzThinning thinning() const
         {
@@ -799,6 +850,9 @@ namespace rtl
                     V3 p = R * (a.beg + dir * (value - origin)) + t;
                     if (p.z() >= -near || !p.allFinite())
                         continue;
+                    const double lx = P.f * p.x() / -p.z() * P.k, ly = P.f * p.y() / -p.z() * P.k;
+                    if (std::max(std::abs(lx), std::abs(ly)) > 0.5 * latex_detail::tex_paper_limit_cm)
+                        continue;   // far outside the clip, and TeX could not hold the picture's extent
                     std::string label = latex_detail::numberToLatexString(value, a.format);
                     if (!label.empty())
                         labels += "\\node[anchor=" + latex_detail::tikzAnchor(a.position) + ", inner sep=1pt] at (" +

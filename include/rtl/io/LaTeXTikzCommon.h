@@ -2,6 +2,8 @@
 // of generated style/colour/mark names, mark templates, coordinate text and label anchors.
 #pragma once
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <ostream>
@@ -30,6 +32,42 @@ namespace rtl::latex_detail
     inline constexpr unsigned int tikz_position_above = 0x01, tikz_position_below = 0x02,
                                   tikz_position_right = 0x04, tikz_position_left = 0x08;
 
+    //! What a TikZ writer may put on paper, in cm: TeX's largest dimension is 16383.99998 pt (about 575 cm), and
+    //! a picture extent, mark size, border or clip corner beyond it fails with "! Dimension too large". The margin
+    //! leaves room for tick labels, descriptions and mark strokes around the checked extent.
+    inline constexpr double tex_paper_limit_cm = 500.0;
+
+    //! Throws std::length_error "<who>: <what> of <cm> cm is beyond TeX's dimensions (limit 500 cm)" unless
+    //! |cm| <= tex_paper_limit_cm (NaN and infinities are refused too). The writers call it before writing anything.
+    inline void refuseBeyondTex(double cm, const char *what, const std::string &who)
+    {
+        if (std::abs(cm) <= tex_paper_limit_cm)
+            return;
+        char value[32];
+        std::snprintf(value, sizeof(value), "%g", cm);
+        throw std::length_error(who + ": " + what + " of " + value + " cm is beyond TeX's dimensions (limit " +
+                                number(tex_paper_limit_cm) + " cm)");
+    }
+
+    //! An angle in degrees as TikZ may read it: pgfmath numbers stay below 16384, so beyond +-3600 degrees (ten
+    //! turns) it is reduced modulo 360, keeping its sign; smaller (and non-finite) angles are returned unchanged.
+    inline double tikzAngle(double deg) { return std::abs(deg) > 3600.0 ? std::fmod(deg, 360.0) : deg; }
+
+    //! An arc from begin to end degrees (counter-clockwise if end > begin): unchanged unless one of the angles or the
+    //! sweep is beyond +-3600; then the start is reduced by tikzAngle and the sweep modulo 360 in its direction (a
+    //! whole number of turns draws one full turn).
+    inline void tikzArc(double &begin, double &end)
+    {
+        const double sweep = end - begin;
+        if (!(std::abs(begin) > 3600.0 || std::abs(end) > 3600.0 || std::abs(sweep) > 3600.0) || !std::isfinite(sweep))
+            return;
+        double s = std::abs(sweep) > 3600.0 ? std::fmod(sweep, 360.0) : sweep;
+        if (s == 0.0 && sweep != 0.0)
+            s = std::copysign(360.0, sweep);
+        begin = tikzAngle(begin);
+        end = begin + s;
+    }
+
     //! "x,y" with appendNumber formatting.
     inline std::string tikzPoint(double x, double y)
     {
@@ -57,13 +95,14 @@ namespace rtl::latex_detail
         return v.empty() ? h : h.empty() ? v : v + " " + h;
     }
 
-    //! The `minimal` document cropped to the picture by preview; write_tikz(os) writes the tikzpicture.
+    //! The `minimal` document cropped to the picture by preview; write_tikz(os) writes the tikzpicture. A border below
+    //! 1e-4 cm is written as 0 (a TeX length cannot have an exponent, and it is below 0.1 pt anyway).
     template<class WriteTikz>
     void writeTikzDocument(std::ostream &os, float border_cm, WriteTikz &&write_tikz)
     {
         os << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
               "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
-              "\\setlength\\PreviewBorder{" << number(border_cm) << "cm}\n\n\\begin{document}\n";
+              "\\setlength\\PreviewBorder{" << number(border_cm < 1e-4f ? 0.0f : border_cm) << "cm}\n\n\\begin{document}\n";
         write_tikz(os);
         os << "\\end{document}\n";
     }

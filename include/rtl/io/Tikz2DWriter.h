@@ -60,6 +60,62 @@ namespace rtl
             return m;
         }
 
+        //! Refuses (std::length_error, before anything is written) a drawing TeX cannot hold: the mark radius or the
+        //! scale of a drawn mark beyond tex_paper_limit_cm, or a picture coordinate, width or height on paper beyond
+        //! it (the frame with its overruns, the clip rectangle and axis crossings, widened on every side by the reach
+        //! of the largest drawn mark, 2 radius scale: a robot's nose); with `document` also the border and the page
+        //! (picture plus two borders).
+        inline void tikzTexLimits(const Drawing2D &d, const Drawing2D::Frame &f, const TikzMap &map, bool document)
+        {
+            const std::string who = "writeTikz";
+            const double radius = d.markRadius();
+            refuseBeyondTex(radius, "the mark radius", who);
+            double reach = 0;
+            for (const auto &p : d.primitives())
+                if (p.kind == Drawing2D::Kind::marks && !p.marks.empty())
+                {
+                    const double scale = d.markDefs().at(p.mark).scale;
+                    if (std::isnan(scale))
+                        continue;   // written as 0
+                    refuseBeyondTex(scale, "a mark scale", who);
+                    reach = std::max(reach, 2.0 * radius * std::abs(scale));
+                }
+            // cm on paper: coordinates are written in cm, or in data units with x = sx cm, y = sy cm.
+            auto px = [&](double x) { return map.paper ? map.X(x) : x * f.sx; };
+            auto py = [&](double y) { return map.paper ? map.Y(y) : y * f.sy; };
+            double lo_x = px(f.min_x - f.ox), hi_x = px(f.max_x + f.ox), lo_y = py(f.min_y - f.oy), hi_y = py(f.max_y + f.oy);
+            if (d.clipped())
+            {
+                std::vector<float> c = d.clipRegion();
+                lo_x = std::min(lo_x, px(c[0]));
+                hi_x = std::max(hi_x, px(c[2]));
+                lo_y = std::min(lo_y, py(c[1]));
+                hi_y = std::max(hi_y, py(c[3]));
+            }
+            // Axis lines at their crossing, which a frame without data in the other direction leaves out.
+            for (const auto &a : d.axes())
+            {
+                double &lo = a.is_x ? lo_y : lo_x, &hi = a.is_x ? hi_y : hi_x;
+                const double c = a.is_x ? py(a.crossing) : px(a.crossing);
+                lo = std::min(lo, c);
+                hi = std::max(hi, c);
+            }
+            lo_x -= reach;
+            hi_x += reach;
+            lo_y -= reach;
+            hi_y += reach;
+            for (double v : {lo_x, hi_x, lo_y, hi_y})
+                refuseBeyondTex(v, "a picture coordinate", who);
+            refuseBeyondTex(hi_x - lo_x, "the picture width", who);
+            refuseBeyondTex(hi_y - lo_y, "the picture height", who);
+            if (document)
+            {
+                refuseBeyondTex(d.border(), "the border", who);
+                refuseBeyondTex(hi_x - lo_x + 2.0 * d.border(), "the page width", who);
+                refuseBeyondTex(hi_y - lo_y + 2.0 * d.border(), "the page height", who);
+            }
+        }
+
         //! Grid lines, axes with ticks and labels, and the axis descriptions of a drawing.
         inline void writeTikzGridsAndAxes(const Drawing2D &d, const Drawing2D::Frame &f, const TikzMap &map,
                                           std::string &out)
@@ -209,12 +265,14 @@ namespace rtl
                 case K::rectangle: out += "\\draw[" + p.style + "] (" + pt(0) + ") rectangle (" + pt(1) + ");\n"; break;
                 case K::circle: out += "\\draw[" + p.style + "] (" + pt(0) + ") " + (map.paper ? "ellipse (" : "circle (") + map.radius(p.r1) + ");\n"; break;
                 case K::ellipse:
-                    out += "\\draw[" + p.style + ", rotate around={" + number(p.a1 * 180.0 / pi) + ":(" + pt(0) +
+                    out += "\\draw[" + p.style + ", rotate around={" + number(tikzAngle(p.a1 * 180.0 / pi)) + ":(" + pt(0) +
                            ")}] (" + pt(0) + ") ellipse (" + number(map.dx(p.r1)) + " and " + number(map.dy(p.r2)) + ");\n";
                     break;
                 case K::pie:
                 {
-                    std::string b = number(p.a1 * 180.0 / pi), e = number(p.a2 * 180.0 / pi), r = map.radius(p.r1);
+                    double begin = p.a1 * 180.0 / pi, end = p.a2 * 180.0 / pi;
+                    tikzArc(begin, end);
+                    std::string b = number(begin), e = number(end), r = map.radius(p.r1);
                     out += "\\draw[" + p.style + "] (" + pt(0) + ") -- ++(" + b + ":" + r + ") arc (" + b + ":" + e +
                            ":" + r + ") -- cycle;\n";
                     break;
@@ -229,12 +287,15 @@ namespace rtl
 
     //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to \input it.
     //! A drawing beyond d.texMarkLimit() is thinned with a note; std::length_error (nothing written) if what cannot be
-    //! thinned exceeds it (TikzBudget.h).
+    //! thinned exceeds it (TikzBudget.h), and if the picture is beyond TeX's dimensions (tikzTexLimits: an extent on
+    //! paper, the mark radius or a mark scale beyond latex_detail::tex_paper_limit_cm, 500 cm). Rotations and arcs
+    //! beyond +-3600 degrees are written modulo 360 (latex_detail::tikzAngle, tikzArc).
     inline void writeTikzPicture(const Drawing2D &d, std::ostream &os)
     {
         using latex_detail::number;
         Drawing2D::Frame f = d.frame();
         latex_detail::TikzMap map = latex_detail::tikzMap(d, f);
+        latex_detail::tikzTexLimits(d, f, map, false);
         latex_detail::TikzThinning thin = latex_detail::tikzThinning(d, f);
         std::string out;
         out += "\\begin{tikzpicture}[x=" + number(map.paper ? 1.0 : f.sx) + "cm, y=" + number(map.paper ? 1.0 : f.sy) + "cm";
@@ -284,10 +345,13 @@ namespace rtl
         os << out << "\\end{tikzpicture}\n";
     }
 
-    //! Writes `d` as a standalone LaTeX document (the `minimal` class cropped to the picture by preview).
+    //! Writes `d` as a standalone LaTeX document (the `minimal` class cropped to the picture by preview). Refused as
+    //! writeTikzPicture, and also if the border or the page (picture plus two borders) is beyond 500 cm.
     inline void writeTikz(const Drawing2D &d, std::ostream &os)
     {
-        latex_detail::tikzThinning(d, d.frame());   // throws before the preamble is written
+        const Drawing2D::Frame f = d.frame();
+        latex_detail::tikzTexLimits(d, f, latex_detail::tikzMap(d, f), true);   // these throw before the preamble
+        latex_detail::tikzThinning(d, f);
         latex_detail::writeTikzDocument(os, d.border(), [&d](std::ostream &o) { writeTikzPicture(d, o); });
     }
 }
