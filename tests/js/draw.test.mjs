@@ -225,6 +225,18 @@ for (const [name, call, type, re] of ERRORS) {
     throwsWith(() => call(rtl.toTikz), type, new RegExp('^toTikz: ' + re.source));
   });
 }
+// width/height up to 400 cm (markRadius up to 10): with its margins the picture stays within the writers' 500 cm
+// limit below TeX's largest dimension (575 cm), so every size toTikz accepts compiles; above, the option is refused.
+test('toTikz: the largest sizes compile with pdflatex, beyond them a RangeError', { timeout: 120_000 }, () => {
+  const opts = { width: 400, height: 400, markRadius: 10 };
+  pdflatex(rtl.toTikz(drawing, opts));
+  pdflatex(rtl.toTikz(scene, { ...opts, camera: { fov: 50, direction: [-1, -2, -1] } }));
+  for (const key of ['width', 'height']) {
+    throwsWith(() => rtl.toTikz(drawing, { ...opts, [key]: 401 }), RangeError, new RegExp(`^toTikz: option ${key} must be <= 400, got 401`));
+    throwsWith(() => rtl.toTikz(scene, { [key]: 401 }), RangeError, new RegExp(`^toTikz: option ${key} must be <= 400, got 401`));
+  }
+});
+
 const MORE_ERRORS = [
   ['standalone not a boolean', () => rtl.toTikz({}, { standalone: 1 }), TypeError, /^toTikz: option standalone must be a boolean/],
   ['drawing.standalone not a boolean', () => rtl.toTikz({ standalone: 'no' }), TypeError, /^toTikz: drawing\.standalone must be a boolean/],

@@ -104,9 +104,11 @@ function drawingApi(m, withHeap) {
     return [fov, ...dir];
   }
 
+  // At most 400 cm: with its margins (2D: 5 % overrun per side, marks, border; 3D: 1.1 x the picture) the picture
+  // stays within the writers' 500 cm limit below TeX's largest dimension (575 cm), which they refuse beyond.
   function sizeOptions(o, fn, width, height, radius) {
-    return [num(o, 'width', fn, width, { min: 0, exclusiveMin: true, max: 500 }),
-      num(o, 'height', fn, height, { min: 0, exclusiveMin: true, max: 500 }),
+    return [num(o, 'width', fn, width, { min: 0, exclusiveMin: true, max: 400 }),
+      num(o, 'height', fn, height, { min: 0, exclusiveMin: true, max: 400 }),
       num(o, radius, fn, 0.03, { min: 0, max: 10 })];
   }
 

@@ -366,7 +366,8 @@ export interface Drawing3D {
 export interface TikzOptions {
   /** complete LaTeX document (default true) or only the tikzpicture */
   standalone?: boolean;
-  /** picture size in cm (default 12 x 12; 2D: the data range is fitted inside, aspect kept; 3D: the picture) */
+  /** picture size in cm (default 12 x 12, at most 400 so that the picture with its margins stays within TeX's
+   *  dimensions; 2D: the data range is fitted inside, aspect kept; 3D: the picture) */
   width?: number;
   height?: number;
   /** point mark radius in cm (default 0.03; 3D: at the scene's centre, perspective-scaled elsewhere) */
