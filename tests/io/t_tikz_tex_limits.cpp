@@ -1,7 +1,8 @@
 // Issue 15: pictures beyond TeX's dimensions (16383.99998 pt, about 575 cm; "! Dimension too large"). The TikZ
 // writers refuse a picture extent, mark size, border, export size or clip corner beyond 500 cm with
 // std::length_error before writing anything, reduce angles beyond +-3600 degrees modulo 360, clamp the scale of 3D
-// marks near the camera, and Drawing2D tracks circle/ellipse boxes that overflow float. Pictures at the limits compile.
+// marks near the camera, and Drawing2D tracks circle/ellipse boxes that overflow float; an axis crossing outside the
+// frame is seen and a tiny border has no exponent. Pictures at the limits compile.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -202,4 +203,36 @@ TEST(TikzTexLimits, PicturesAtTheLimitsCompile)
     pdflatex_test::writePreviewDocument(dir, "limits", pictures);
     const auto run = pdflatex_test::compile(dir, "limits");
     EXPECT_EQ(run.rc, 0) << run.failure();
+}
+
+TEST(TikzTexLimits, AnAxisCrossingOutsideTheFrameIsSeen)
+{
+    // t_tikz_fuzz_sample finding (seed found-axis-crossing-outside-empty-frame): a y axis tracks only its x crossing,
+    // so a drawing without y data keeps the unit frame and the axis line was drawn 13,700,000 cm to its left.
+    LaTeXTikz2D d;
+    d.addAxisY("draw=black", "", LaTeXTikz2D::position_left, 1.0f, -1.37e6f);
+    EXPECT_TRUE(refused2D(d));
+    LaTeXTikz2D near;   // the same axis 1 unit left of the frame: 10 cm on paper
+    near.addAxisY("draw=black", "", LaTeXTikz2D::position_left, 1.0f, -1.0f);
+    EXPECT_FALSE(refused2D(near));
+}
+
+TEST(TikzTexLimits, ATinyBorderIsWrittenWithoutAnExponent)
+{
+    // t_tikz_fuzz_sample finding (seed found-border-1e-30-exponent): "\setlength\PreviewBorder{1e-30cm}" is
+    // "Illegal unit of measure" (a TeX length has no exponent); below 1e-4 cm the border is written as 0.
+    LaTeXTikz2D d = drawing();
+    d.setBorder(1e-30f);
+    std::ostringstream os;
+    rtl::writeTikz(d, os);
+    EXPECT_NE(os.str().find("\\setlength\\PreviewBorder{0cm}"), std::string::npos);
+    LaTeXTikz3D s = scene();
+    s.setBorder(5e-5f);
+    std::ostringstream os3;
+    s.writeTEX(os3);
+    EXPECT_NE(os3.str().find("\\setlength\\PreviewBorder{0cm}"), std::string::npos);
+    d.setBorder(2e-4f);   // as before
+    std::ostringstream os2;
+    rtl::writeTikz(d, os2);
+    EXPECT_NE(os2.str().find("\\setlength\\PreviewBorder{0.0002cm}"), std::string::npos);
 }
