@@ -95,8 +95,10 @@ namespace rtl
             next_ = 0;
             if (points.empty()) return;
             // the clusters are copied out of this copy when grabbed: a caller that frees each cluster before grabbing
-            // the next reuses one block of memory, where clusters allocated up front would be fresh pages each scan
-            store_.assign(points.begin(), points.end());
+            // the next reuses one block of memory, where clusters allocated up front would be fresh pages each scan.
+            // 2D scans at step >= 2 fill it in the pass that reads the points anyway (neighbourFlags).
+            if (D != 2 || step_ == 1 || traced) store_.assign(points.begin(), points.end());
+            else store_.resize(points.size());
             const ElementType scaling = seg_detail::circularScaling<ElementType>(step_, points.size());
             if constexpr (traced)
                 if (observer_)
@@ -168,8 +170,11 @@ namespace rtl
             if constexpr (D == 2)
             {
                 const VectorType *v = pts.data();
+                VectorType *st = store_.data();
+                if (!traced) st[0] = v[0];
                 for (size_t i = 1; i < n; ++i)
                 {
+                    if (!traced) st[i] = v[i];
                     ElementType rsq = 0, dsq = 0;
                     bool valid = true, valid_prev = true;
                     for (int k = 0; k < D; ++k)

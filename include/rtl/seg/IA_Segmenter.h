@@ -18,7 +18,7 @@
 //
 // Tracing (core/Trace.h): IA_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
 // (addPoint, the window moves of setStepSize and flush) as the events of seg/SegTrace.h (use rtl::IaTraceLog to
-// record them); a traced segmenter skips its step-1 fast path (same clusters). With the default rtl::NoTrace
+// record them); a traced segmenter skips its fast path (same clusters). With the default rtl::NoTrace
 // nothing is reported and the code is the untraced code.
 //
 // Bad input: step 0 is treated as 1; addPoint throws std::invalid_argument unless 0 <= lower_bound <= upper_bound
@@ -88,7 +88,7 @@ namespace rtl
         [[nodiscard]] size_t aliveClustersAvailable() const { return lists_.alive.size(); }
         [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const
         {
-            flushStage();
+            untail();
             return lists_.alive;
         }
 
@@ -110,30 +110,17 @@ namespace rtl
                     addPointSlow(pt, valid, origin_finite, rsq);
                     return;
                 }
-            // hot path, kept small enough to inline: step 1, the point continues the staged cluster
-            const size_t prev = wrec_[0];
-            if (step_ == 1 && checked_ && origin_finite && valid && prev == stage_rec_ && prev != none &&
-                seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
+            // hot path, kept small enough to inline: the window is all in one cluster and sits at the end of its alive
+            // list (tail mode, see enterTail); a point within reach of the newest joins it, and no other comparison
+            // can change anything
+            if (lists_.tail != nullptr && checked_ && origin_finite && valid)
             {
-                stage_[staged_++] = wpts_[0];
-                if (staged_ == stage_capacity) flushStage();
-                wpts_[0] = pt;
-                ++stream_;
-                return;
-            }
-            // step > 1, the window is full and all in the staged cluster: a point within reach of the newest one
-            // joins it, and no other comparison can change anything (every window point is in that cluster)
-            if (step_ > 1 && uniform_ && checked_ && origin_finite && valid && wrec_[head_] == stage_rec_ &&
-                widx_[head_] == stage_next_ &&
-                seg_detail::squaredDistance<D>(pt.data().data(), wpts_[head_ == 0 ? step_ - 1 : head_ - 1].data().data()) <= thr_(rsq))
-            {
-                stage_[staged_++] = wpts_[head_];
-                ++stage_next_;
-                if (staged_ == stage_capacity) flushStage();
-                wpts_[head_] = pt;
-                widx_[head_] = stream_++;
-                head_ = head_ + 1 == step_ ? 0 : head_ + 1;
-                return;
+                std::vector<VectorType> &v = *lists_.tail;
+                if (seg_detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq))
+                {
+                    v.push_back(pt);
+                    return;
+                }
             }
             addPointSlow(pt, valid, origin_finite, rsq);
         }
@@ -160,10 +147,10 @@ namespace rtl
         //! End of stream: every window point leaves the window (oldest first), so every cluster closes.
         void flush()
         {
+            untail();
             for (size_t k = 0; k < count_; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
             head_ = 0;
             count_ = 0;
-            uniform_ = false;
         }
 
     private:
@@ -174,6 +161,7 @@ namespace rtl
 
         RTL_SEG_NOINLINE void addPointSlow(const VectorType &pt, bool valid, bool origin_finite, ElementType rsq)
         {
+            untail();
             if (!checked_) checkParameters();
             if (!origin_finite) throw std::invalid_argument("IA_Segmenter::addPoint: the origin must be finite");
             if constexpr (traced)
@@ -190,6 +178,7 @@ namespace rtl
             if (step_ == 1)
             {
                 addToPairWindow(pt, valid, rsq);
+                if (wrec_[0] != none) enterTail(wrec_[0]);
                 return;
             }
 
@@ -238,7 +227,53 @@ namespace rtl
             wrec_[slot] = rec;
             widx_[slot] = stream_++;
             // every slot holds rec exactly when rec counts step_ window points (in_window counts them)
-            uniform_ = rec != none && lists_.recs[rec].in_window == step_;
+            if (rec != none && lists_.recs[rec].in_window == step_) enterTail(rec);
+        }
+
+        // Tail mode: while the window is full and all in one cluster that has an alive list, the window points are
+        // kept as the last step_ points of that list (lists_.tail), so that a point joining the cluster is one
+        // push_back: no ring slot, no eviction. The list's points from tail_start_ on have the consecutive stream
+        // indices tail_stream_, tail_stream_ + 1, ...; stream_ and the ring are stale meanwhile. untail() restores
+        // the ring before anything else reads the window or the alive lists.
+        void enterTail(size_t rec)
+        {
+            if constexpr (traced)
+                if (observer_) return;
+            Record &R = lists_.recs[rec];
+            if (!R.has_alive || R.in_window != step_ || count_ != step_) return;
+            std::vector<VectorType> &v = R.alive->second;
+            const size_t first = step_ == 1 ? stream_ - 1 : widx_[head_];
+            if (R.contiguous && R.base + v.size() != first) listIndices(R);
+            tail_start_ = v.size();
+            tail_stream_ = first;
+            for (size_t k = 0; k < step_; ++k) v.push_back(wpts_[head_ + k < step_ ? head_ + k : head_ + k - step_]);
+            lists_.tail_rec = rec;
+            lists_.tail = &v;
+        }
+
+        // Leaves tail mode: the last step_ points of the tail's list go back to the ring (oldest in slot 0); the
+        // others have left the window and stay alive. Const, for aliveClusters(): the members it changes are mutable.
+        void untail() const
+        {
+            if (lists_.tail == nullptr) return;
+            const size_t rec = lists_.tail_rec;
+            Record &R = lists_.recs[rec];
+            std::vector<VectorType> &v = *lists_.tail;
+            const size_t total = v.size() - tail_start_, left = total - step_;
+            for (size_t k = 0; k < step_; ++k)
+            {
+                wpts_[k] = v[tail_start_ + left + k];
+                wrec_[k] = rec;
+                widx_[k] = tail_stream_ + left + k;
+            }
+            if (!R.contiguous)
+                for (size_t k = 0; k < left; ++k) R.index.push_back(tail_stream_ + k);
+            v.resize(tail_start_ + left);
+            head_ = 0;
+            count_ = step_;
+            stream_ = tail_stream_ + total;
+            lists_.tail = nullptr;
+            lists_.tail_rec = none;
         }
 
         struct Record
@@ -261,9 +296,11 @@ namespace rtl
         {
             std::vector<Record> recs;
             AliveMap alive;
+            size_t tail_rec = none;                           // tail mode: the record whose list holds the window
+            std::vector<VectorType> *tail = nullptr;          // its alive list (a map node: kept by moves)
 
             ClusterLists() = default;
-            ClusterLists(const ClusterLists &o) : recs(o.recs), alive(o.alive) { repoint(); }
+            ClusterLists(const ClusterLists &o) : recs(o.recs), alive(o.alive), tail_rec(o.tail_rec) { repoint(); }
             ClusterLists(ClusterLists &&) noexcept = default;
             ClusterLists &operator=(const ClusterLists &o)
             {
@@ -281,6 +318,7 @@ namespace rtl
             {
                 for (Record &R : recs)
                     if (R.has_alive) R.alive = alive.find(R.id);
+                tail = tail_rec == none ? nullptr : &recs[tail_rec].alive->second;
             }
         };
 
@@ -329,18 +367,7 @@ namespace rtl
                         (*observer_)(ia_trace::Slide{stream_ - 1, false});
                         (*observer_)(ia_trace::Alive{stream_ - 1, lists_.recs[prev].id});
                     }
-                if (prev == stage_rec_)
-                {
-                    stage_[staged_++] = wpts_[0];
-                    if (staged_ == stage_capacity) flushStage();
-                }
-                else
-                {
-                    flushStage();
-                    Record &R = lists_.recs[prev];
-                    pushAlive(R, wpts_[0], stream_ - 1);
-                    stage_rec_ = R.contiguous ? prev : none;
-                }
+                pushAlive(lists_.recs[prev], wpts_[0], stream_ - 1);
             }
             else
             {
@@ -416,7 +443,6 @@ namespace rtl
                     if (r != none) (*observer_)(ia_trace::Alive{i, lists_.recs[r].id});
                 }
             if (r == none) return;
-            if (r == stage_rec_) flushStage();
             wrec_[slot] = none;
             Record &R = lists_.recs[r];
             if (!R.has_alive && R.in_window == 1)
@@ -430,13 +456,6 @@ namespace rtl
             }
             const size_t idx = step_ == 1 ? stream_ - 1 : widx_[slot];
             pushAlive(R, wpts_[slot], idx);
-            if (step_ > 1 && R.in_window > 1)
-            {
-                // stage this cluster's next points (the step > 1 hot path) while they continue its alive list
-                if (stage_rec_ != r) flushStage();
-                stage_rec_ = R.contiguous ? r : none;
-                stage_next_ = idx + 1;
-            }
             std::vector<VectorType> &v = R.alive->second;
             if (--R.in_window == 0)
             {
@@ -448,7 +467,6 @@ namespace rtl
                 lists_.alive.erase(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
-                if (r == stage_rec_) stage_rec_ = none;
             }
         }
 
@@ -466,26 +484,9 @@ namespace rtl
             (*observer_)(ia_trace::Compare{i, j, distance, threshold, linked});
         }
 
-        // Step 1 streams the points of one cluster into a small staging array first, and appends them to the alive
-        // list in blocks: a push_back per point would chain four dependent loads (record, map node, vector end).
-        // Everything that reads or changes alive lists flushes it first.
-        void flushStage() const
-        {
-            if (staged_ != 0) appendStage();
-        }
-
-        RTL_SEG_NOINLINE void appendStage() const
-        {
-            std::vector<VectorType> &v = lists_.recs[stage_rec_].alive->second;
-            v.insert(v.end(), stage_.begin(), stage_.begin() + static_cast<std::ptrdiff_t>(staged_));
-            staged_ = 0;
-        }
-
         // Merges two clusters that both have window points; the older id survives. Returns the survivor's record.
         size_t merge(size_t a, size_t b)
         {
-            flushStage();
-            stage_rec_ = none;   // the merged alive list may no longer be contiguous
             const size_t keep = lists_.recs[a].id < lists_.recs[b].id ? a : b, gone = keep == a ? b : a;
             for (size_t w = 0; w < step_; ++w)
                 if (wrec_[w] == gone) wrec_[w] = keep;
@@ -557,12 +558,11 @@ namespace rtl
         void resizeWindow(size_t step)
         {
             if (step == step_ && !wrec_.empty()) return;
-            flushStage();
-            stage_rec_ = none;
+            untail();
             // the oldest points that do not fit leave first, in stream order
             size_t k = 0;
             for (; count_ - k > step; ++k) evict(head_ + k < step_ ? head_ + k : head_ + k - step_);
-            std::vector<VectorType> pts(step);
+            std::vector<VectorType> pts(step, VectorType::zeros());
             std::vector<size_t> rec(step, none), idx(step, 0);
             for (size_t m = 0; k < count_; ++k, ++m)
             {
@@ -571,9 +571,6 @@ namespace rtl
                 rec[m] = wrec_[w];
                 idx[m] = step_ == 1 ? stream_ - 1 : widx_[w];
             }
-            flushStage();
-            stage_rec_ = none;
-            uniform_ = false;
             count_ = std::min(count_, step);
             head_ = 0;
             step_ = step;
@@ -588,22 +585,20 @@ namespace rtl
         seg_detail::SquaredThreshold<ElementType> thr_{0, 0, 0};
 
         // window: a ring of step_ slots, count_ of them used, head_ the oldest; wrec_ is none for gaps and free slots
-        size_t step_ = 0, head_ = 0, count_ = 0;
-        std::vector<VectorType> wpts_;
-        std::vector<size_t> wrec_, widx_;                         // widx_ unused at step 1: its point is stream_ - 1
+        // (mutable: untail(), called by the const aliveClusters(), moves the window back into the ring)
+        size_t step_ = 0;
+        mutable size_t head_ = 0, count_ = 0;
+        mutable std::vector<VectorType> wpts_;
+        mutable std::vector<size_t> wrec_, widx_;                 // widx_ unused at step 1: its point is stream_ - 1
 
-        ClusterLists lists_;
+        mutable ClusterLists lists_;
+        mutable size_t tail_start_ = 0, tail_stream_ = 0;        // tail mode: see enterTail
         std::vector<size_t> free_;
         std::vector<std::vector<VectorType>> closed_;           // closing order; closed_head_ is the next to hand out
         size_t closed_head_ = 0;
         std::vector<std::vector<VectorType>> pool_;             // emptied alive lists, capacity kept
-        size_t stage_rec_ = none;                               // record of the staged points
-        size_t stage_next_ = 0;                                 // step > 1: the stream index the next staged point has
-        bool uniform_ = false;                                  // step > 1: the window is full, all in one cluster
-        static constexpr size_t stage_capacity = 256;
-        mutable std::vector<VectorType> stage_ = std::vector<VectorType>(stage_capacity);   // its newest alive points, not yet in the alive map; on the heap so that a move is cheap
-        mutable size_t staged_ = 0;
-        size_t next_id_ = 0, stream_ = 0;
+        size_t next_id_ = 0;
+        mutable size_t stream_ = 0;
         Observer *observer_ = nullptr;
     };
 }
