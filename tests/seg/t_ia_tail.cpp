@@ -231,34 +231,40 @@ TEST(IaTail, EventsInsideALongCluster)
 // interleaved cluster still orders them.
 TEST(IaTail, TailAfterAnOutOfOrderMerge)
 {
-    // even points on y = 0, odd points on y = 1 until 200 (two chains); from 200 on every point on y = 0.5 links
-    // both (an interleaved merge, then tail mode); odd points of [600, 800) start a chain on y = 1.2 (out of reach
-    // of 0.5), and from 800 on points on y = 0.85 join it to the first cluster again: a merge that needs the
-    // stream indices of the points kept in tail mode
-    std::vector<V2f> pts;
-    for (size_t i = 0; i < 1200; ++i)
+    // Scenario 0: even points on y = 0, odd points on y = 1 until 200 (two chains); from 200 on every point on
+    // y = 0.5 links both (an interleaved merge, then tail mode). Scenario 1: one chain on y = 0.5 with a gap at
+    // 300 (its alive list then skips an index when tail mode starts). In both, odd points of [600, 800) start a
+    // chain on y = 1.2 (out of reach of 0.5), and from 800 on points on y = 0.85 join it to the first cluster
+    // again: a merge that needs the true stream indices of the points kept in tail mode.
+    for (int scenario : {0, 1})
     {
-        const float x = 0.01f * static_cast<float>(i);
-        float y = i < 200 ? ((i % 2) ? 1.0f : 0.0f) : 0.5f;
-        if (i >= 600 && i < 800 && i % 2) y = 1.2f;
-        if (i >= 800) y = 0.85f;
-        pts.emplace_back(x, y);
-    }
-    for (size_t step : {2, 3, 6})
-    {
-        for (size_t grab : {1, 3}) segcheck::checkIa(pts, V2f::zeros(), step, 0.6f, 0.6f, grab, "out-of-order step " + std::to_string(step));
-        Model<V2f> model{{}, step, 0.6f, 0.6f, 0.0f};
-        rtl::IA_Segmenter<V2f> ia(step, 0.6f, 0.6f, 0.0f);
-        size_t mismatches = 0;
-        for (size_t i = 0; i < pts.size(); ++i)
+        std::vector<V2f> pts, valid;
+        for (size_t i = 0; i < 1200; ++i)
         {
-            ia.addPoint(pts[i]);
-            model.add(pts[i]);
-            if (i % 50 == 49) mismatches += aliveOf(ia) == model.alive() ? 0 : 1;
+            const float x = 0.01f * static_cast<float>(i);
+            float y = i < 200 && scenario == 0 ? ((i % 2) ? 1.0f : 0.0f) : 0.5f;
+            if (i >= 600 && i < 800 && i % 2) y = 1.2f;
+            if (i >= 800) y = 0.85f;
+            pts.push_back(scenario == 1 && i == 300 ? V2f::nan() : V2f(x, y));
+            if (!segcheck::isGap(pts.back())) valid.push_back(pts.back());
         }
-        EXPECT_EQ(mismatches, 0u) << "step " << step;
-        const auto clusters = drainAll(ia);
-        ASSERT_EQ(clusters.size(), 1u) << "step " << step;
-        EXPECT_EQ(clusters[0], pts) << "step " << step << ": not in stream order";
+        for (size_t step : {2, 3, 6})
+        {
+            const std::string what = "scenario " + std::to_string(scenario) + " step " + std::to_string(step);
+            for (size_t grab : {1, 3}) segcheck::checkIa(pts, V2f::zeros(), step, 0.6f, 0.6f, grab, what);
+            Model<V2f> model{{}, step, 0.6f, 0.6f, 0.0f};
+            rtl::IA_Segmenter<V2f> ia(step, 0.6f, 0.6f, 0.0f);
+            size_t mismatches = 0;
+            for (size_t i = 0; i < pts.size(); ++i)
+            {
+                ia.addPoint(pts[i]);
+                model.add(pts[i]);
+                if (i % 50 == 49) mismatches += aliveOf(ia) == model.alive() ? 0 : 1;
+            }
+            EXPECT_EQ(mismatches, 0u) << what;
+            const auto clusters = drainAll(ia);
+            ASSERT_EQ(clusters.size(), 1u) << what;
+            EXPECT_EQ(clusters[0], valid) << what << ": not in stream order";
+        }
     }
 }
