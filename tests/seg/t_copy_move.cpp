@@ -12,6 +12,7 @@
 
 #include "rtl/seg/CAR_Segmenter.h"
 #include "rtl/seg/IA_Segmenter.h"
+#include "interleaved_scan.h"
 #include "seg_check.h"
 
 namespace
@@ -29,22 +30,7 @@ namespace
     template<class V>
     std::vector<V> scan(size_t n, unsigned seed)
     {
-        using E = typename V::ElementType;
-        std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> u(0, 1);
-        std::vector<V> pts;
-        double r = 3;
-        for (size_t i = 0; i < n; ++i)
-        {
-            if (u(rng) < 0.03) r = 2 + 3 * u(rng);
-            const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-            const double rr = r + ((i % 2) && (i / 40) % 2 ? 1.0 : 0.0);
-            typename V::EigenType e = V::zeros().data();
-            e[0] = static_cast<E>(rr * std::cos(a));
-            e[1] = static_cast<E>(rr * std::sin(a));
-            pts.push_back(u(rng) < 0.04 ? V::nan() : V(e));
-        }
-        return pts;
+        return segcheck::interleavedScan<V>(n, seed, {0.03, 40, 2, 0.0, 0.04});
     }
 
     template<class V>

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "rtl/seg/IA_Segmenter.h"
+#include "interleaved_scan.h"
 #include "seg_check.h"
 
 namespace
@@ -22,22 +23,7 @@ namespace
     template<class V>
     std::vector<V> scan(size_t n, unsigned seed)
     {
-        using E = typename V::ElementType;
-        std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> u(0, 1);
-        std::vector<V> pts;
-        double r = 3;
-        for (size_t i = 0; i < n; ++i)
-        {
-            if (u(rng) < 0.02) r = 2 + 3 * u(rng);
-            const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-            const double rr = r + ((i % 2) && (i / 60) % 3 == 1 ? 1.0 : 0.0) + (u(rng) < 0.01 ? 7.0 : 0.0);
-            typename V::EigenType e = V::zeros().data();
-            e[0] = static_cast<E>(rr * std::cos(a));
-            e[1] = static_cast<E>(rr * std::sin(a));
-            pts.push_back(u(rng) < 0.02 ? V::nan() : V(e));
-        }
-        return pts;
+        return segcheck::interleavedScan<V>(n, seed, {0.02, 60, 3, 0.01, 0.02});
     }
 
     //! The stream model after m points (window `step`): components of the pairs seen so far; a component with a
