@@ -13,7 +13,7 @@
 #include <rtl/io/Svg2D.h>
 #include <rtl/io/Tikz2DWriter.h>
 
-#include <sstream>
+#include <string>
 
 namespace rtl_wasm {
 namespace {
@@ -40,14 +40,8 @@ val drawScan2D(std::uintptr_t xy, std::size_t n_xy, std::uintptr_t labels, std::
     o.mark_radius = static_cast<float>(markRadius);
     rtl::Drawing2D d;
     rtl::drawScan(d, doubles(xy), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 4, title, o);
-    std::ostringstream os;
-    if (format == 2)
-      rtl::writeSvg(d, os);
-    else if (format == 1)
-      rtl::writeTikzPicture(d, os);
-    else
-      rtl::writeTikz(d, os);
-    return val(os.str());
+    // The writers' string forms: no iostream in the package (rtl/io/TextSink.h, wasm/CMakeLists.txt).
+    return val(format == 2 ? rtl::svgString(d) : format == 1 ? rtl::tikzPictureString(d) : rtl::tikzString(d));
   }, "drawScan");
 }
 
@@ -98,12 +92,7 @@ val drawTikz3D(std::uintptr_t xyz, std::size_t n_xyz, std::uintptr_t labels, std
                 rtl::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz)));
     rtl::drawScene3D(d, doubles(xyz), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 6, doubles(planes),
                      pc.data(), pc.size(), doubles(polys), qc.data(), qc.size(), o);
-    std::ostringstream os;
-    if (standalone)
-      d.writeTEX(os);
-    else
-      d.writeTikz(os);
-    return val(os.str());
+    return val(standalone ? d.texString() : d.tikzString());
   }, "drawScene3D");
 }
 
@@ -140,9 +129,7 @@ val latexTable(val rows, val heading, std::string caption, std::string columns, 
       else
         t.addRow(cells);
     }
-    std::ostringstream os;
-    t.writeTable(os, escape ? rtl::LaTeX::escapeLaTeXCharacters(caption) : caption);
-    return val(os.str());
+    return val(t.tableString(escape ? rtl::LaTeX::escapeLaTeXCharacters(caption) : caption));
   });
 }
 

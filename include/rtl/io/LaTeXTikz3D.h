@@ -184,18 +184,39 @@ namespace rtl
             thinning();
             latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
-        void writeTEX(std::ostream &os)
+        void writeTEX(std::ostream &os) { writeTexTo(os); }
+        //! What writeTEX writes, as a string, without any stream (not an overload of writeTEX: that takes file names).
+        std::string texString()
+        {
+            std::string out;
+            writeTexTo(out);
+            return out;
+        }
+        //! writeTEX into a std::ostream or a std::string (TextSink.h).
+        template<class Out>
+        void writeTexTo(Out &os)
         {
             if (!hasContent())
                 return;
             texLimits(true);   // these throw before the preamble is written
             thinning();
-            latex_detail::writeTikzDocument(os, border_cm, [this](std::ostream &o) { writeTikz(o); });
+            latex_detail::writeTikzDocument(os, border_cm, [this](Out &o) { writeTikzTo(o); });
         }
         //! Writes only the tikzpicture (everything it defines is local to it). A scene without objects and without
         //! a min region gives an empty picture of the export size. Thinned or std::length_error as in the class comment.
-        void writeTikz(std::ostream &os)
+        void writeTikz(std::ostream &os) { writeTikzTo(os); }
+        //! What writeTikz writes, as a string, without any stream.
+        std::string tikzString()
         {
+            std::string out;
+            writeTikzTo(out);
+            return out;
+        }
+        //! writeTikz into a std::ostream or a std::string (TextSink.h).
+        template<class Out>
+        void writeTikzTo(Out &target)
+        {
+            io_detail::TextOut<Out> os{target};
             texLimits(false);
             const latex_detail::TikzThinning thin = thinning();
             std::string out = "\\begin{tikzpicture}[";

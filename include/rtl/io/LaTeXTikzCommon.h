@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rtl/io/LaTeXUtility.h"
+#include "rtl/io/TextSink.h"
 
 namespace rtl::latex_detail
 {
@@ -96,14 +97,16 @@ namespace rtl::latex_detail
     }
 
     //! The `minimal` document cropped to the picture by preview; write_tikz(os) writes the tikzpicture. A border below
-    //! 1e-4 cm is written as 0 (a TeX length cannot have an exponent, and it is below 0.1 pt anyway).
-    template<class WriteTikz>
-    void writeTikzDocument(std::ostream &os, float border_cm, WriteTikz &&write_tikz)
+    //! 1e-4 cm is written as 0 (a TeX length cannot have an exponent, and it is below 0.1 pt anyway). Into a
+    //! std::ostream or a std::string (TextSink.h).
+    template<class Out, class WriteTikz>
+    void writeTikzDocument(Out &target, float border_cm, WriteTikz &&write_tikz)
     {
+        io_detail::TextOut<Out> os{target};
         os << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
               "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
               "\\setlength\\PreviewBorder{" << number(border_cm < 1e-4f ? 0.0f : border_cm) << "cm}\n\n\\begin{document}\n";
-        write_tikz(os);
+        write_tikz(target);
         os << "\\end{document}\n";
     }
 

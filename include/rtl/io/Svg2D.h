@@ -14,6 +14,7 @@
 #include "rtl/io/Drawing2D.h"
 #include "rtl/io/LaTeXUtility.h"
 #include "rtl/io/SvgStyle.h"
+#include "rtl/io/TextSink.h"
 
 namespace rtl
 {
@@ -78,8 +79,11 @@ namespace rtl
                 height = data_h + pad_top + pad_bottom;
             }
 
-            void write(std::ostream &os)
+            //! Into a std::ostream or a std::string (TextSink.h).
+            template<class Out>
+            void write(Out &target)
             {
+                io_detail::TextOut<Out> os{target};
                 std::string body;
                 if (d.clipped())
                 {
@@ -419,6 +423,13 @@ namespace rtl
     inline void writeSvg(const Drawing2D &d, std::ostream &os)
     {
         svg_detail::SvgWriter(d).write(os);
+    }
+    //! What writeSvg writes, as a string, without any stream.
+    inline std::string svgString(const Drawing2D &d)
+    {
+        std::string out;
+        svg_detail::SvgWriter(d).write(out);
+        return out;
     }
 
     //! A Drawing2D with SVG output (the same drawing calls as LaTeXTikz2D).

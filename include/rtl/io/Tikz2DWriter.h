@@ -10,6 +10,7 @@
 #include "rtl/io/Drawing2D.h"
 #include "rtl/io/LaTeXTikzCommon.h"
 #include "rtl/io/LaTeXUtility.h"
+#include "rtl/io/TextSink.h"
 #include "rtl/io/TikzBudget.h"
 
 namespace rtl
@@ -285,13 +286,34 @@ namespace rtl
         }
     }
 
+    namespace latex_detail
+    {
+        // (defined below the public overloads)
+        template<class Out>
+        void writeTikzPictureTo(const Drawing2D &d, Out &target);
+        template<class Out>
+        void writeTikzTo(const Drawing2D &d, Out &target);
+    }
+
     //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to \input it.
     //! A drawing beyond d.texMarkLimit() is thinned with a note; std::length_error (nothing written) if what cannot be
     //! thinned exceeds it (TikzBudget.h), and if the picture is beyond TeX's dimensions (tikzTexLimits: an extent on
     //! paper, the mark radius or a mark scale beyond latex_detail::tex_paper_limit_cm, 500 cm). Rotations and arcs
     //! beyond +-3600 degrees are written modulo 360 (latex_detail::tikzAngle, tikzArc).
-    inline void writeTikzPicture(const Drawing2D &d, std::ostream &os)
+    inline void writeTikzPicture(const Drawing2D &d, std::ostream &os) { latex_detail::writeTikzPictureTo(d, os); }
+    //! What writeTikzPicture writes, as a string, without any stream.
+    inline std::string tikzPictureString(const Drawing2D &d)
     {
+        std::string out;
+        latex_detail::writeTikzPictureTo(d, out);
+        return out;
+    }
+
+    //! writeTikzPicture into a std::ostream or a std::string (TextSink.h).
+    template<class Out>
+    void latex_detail::writeTikzPictureTo(const Drawing2D &d, Out &target)
+    {
+        io_detail::TextOut<Out> os{target};
         using latex_detail::number;
         Drawing2D::Frame f = d.frame();
         latex_detail::TikzMap map = latex_detail::tikzMap(d, f);
@@ -347,11 +369,22 @@ namespace rtl
 
     //! Writes `d` as a standalone LaTeX document (the `minimal` class cropped to the picture by preview). Refused as
     //! writeTikzPicture, and also if the border or the page (picture plus two borders) is beyond 500 cm.
-    inline void writeTikz(const Drawing2D &d, std::ostream &os)
+    inline void writeTikz(const Drawing2D &d, std::ostream &os) { latex_detail::writeTikzTo(d, os); }
+    //! What writeTikz writes, as a string, without any stream.
+    inline std::string tikzString(const Drawing2D &d)
+    {
+        std::string out;
+        latex_detail::writeTikzTo(d, out);
+        return out;
+    }
+
+    //! writeTikz into a std::ostream or a std::string (TextSink.h).
+    template<class Out>
+    void latex_detail::writeTikzTo(const Drawing2D &d, Out &os)
     {
         const Drawing2D::Frame f = d.frame();
         latex_detail::tikzTexLimits(d, f, latex_detail::tikzMap(d, f), true);   // these throw before the preamble
         latex_detail::tikzThinning(d, f);
-        latex_detail::writeTikzDocument(os, d.border(), [&d](std::ostream &o) { writeTikzPicture(d, o); });
+        latex_detail::writeTikzDocument(os, d.border(), [&d](Out &o) { writeTikzPictureTo(d, o); });
     }
 }
