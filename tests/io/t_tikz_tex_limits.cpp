@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -235,4 +237,32 @@ TEST(TikzTexLimits, ATinyBorderIsWrittenWithoutAnExponent)
     std::ostringstream os2;
     rtl::writeTikz(d, os2);
     EXPECT_NE(os2.str().find("\\setlength\\PreviewBorder{0.0002cm}"), std::string::npos);
+}
+
+TEST(TikzTexLimits, ARefusedFileWriteLeavesNoFileAndKeepsAnEarlierOne)
+{
+    const fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "tikz_tex_limits_files";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    LaTeXTikz2D big = drawing();
+    big.setSize(460, 10);
+    LaTeXTikz3D far = scene();
+    far.setExportSize(600, 600);
+    for (const char *name : {"2d.tex", "3d.tex"})
+    {
+        const fs::path file = dir / name;
+        const auto write = [&] { name[0] == '2' ? big.writeTEX(file.string()) : far.writeTEX(file.string()); };
+        EXPECT_THROW(write(), std::length_error) << name;
+        EXPECT_FALSE(fs::exists(file)) << name;   // was created empty before the document was refused
+        {
+            std::ofstream(file) << "earlier";
+        }
+        EXPECT_THROW(write(), std::length_error) << name;
+        std::ifstream in(file);
+        const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(kept, "earlier") << name;
+    }
+    // An accepted drawing is still written.
+    drawing().writeTEX((dir / "ok.tex").string());
+    EXPECT_GT(fs::file_size(dir / "ok.tex"), 100u);
 }

@@ -50,6 +50,9 @@ namespace rtl
     //!   picture saying so; drawings within it are written as before, byte for byte. If grid lines, axis ticks and
     //!   primitives other than marks and polylines alone exceed it, writing throws std::length_error.
     //!   setTexMarkLimit(0) writes everything (lualatex's memory grows). Writing stays linear in the points.
+    //! - TeX's dimensions end at about 575 cm: a picture whose extent (with overruns, clip and mark reach), mark
+    //!   radius or scale, or document border is beyond 500 cm throws std::length_error before anything is written
+    //!   (Tikz2DWriter.h); angles beyond +-3600 degrees are written modulo 360.
     class LaTeXTikz2D : public Drawing2D
     {
     public:
@@ -64,8 +67,8 @@ namespace rtl
         LaTeXTikz2D &operator=(const LaTeXTikz2D &) = default;
         LaTeXTikz2D &operator=(LaTeXTikz2D &&) noexcept = default;
 
-        //! Writes the standalone document; throws std::runtime_error if the file cannot be written (and
-        //! std::length_error as described above, before the document is written).
+        //! Writes the standalone document; throws std::runtime_error if the file cannot be written, and
+        //! std::length_error as described above before the file is opened (no file left, an earlier one untouched).
         void writeTEX(const std::string &file_name)
         {
             latex_detail::writeTexFile(file_name, "LaTeXTikz2D", [this](std::ostream &os) { writeTEX(os); });

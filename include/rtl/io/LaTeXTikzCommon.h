@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -110,14 +111,18 @@ namespace rtl::latex_detail
         os << "\\end{document}\n";
     }
 
-    //! Opens file_name, calls write(stream) and throws std::runtime_error (prefixed "<who>::writeTEX") on failure.
+    //! Calls write(stream) on a buffer, then writes it to file_name; throws std::runtime_error (prefixed
+    //! "<who>::writeTEX") if the file cannot be written. The document is made first, so a writer that refuses
+    //! (std::length_error) leaves no file behind and an earlier file of that name untouched.
     template<class Write>
     void writeTexFile(const std::string &file_name, const char *who, Write &&write)
     {
+        std::ostringstream document;
+        write(document);
         std::ofstream ofs(file_name);
         if (!ofs)
             throw std::runtime_error(std::string(who) + "::writeTEX: cannot open '" + file_name + "' for writing");
-        write(ofs);
+        ofs << document.str();
         if (!ofs)
             throw std::runtime_error(std::string(who) + "::writeTEX: writing '" + file_name + "' failed");
     }
