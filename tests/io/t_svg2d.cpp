@@ -51,7 +51,9 @@ TEST(Svg2D, OneDrawingWrittenAsTikzAndSvg)
     std::ostringstream tikz;
     rtl::writeTikz(d, tikz);
     EXPECT_EQ(tikz.str(), golden("linear"));   // the same model gives LaTeXTikz2D's text
+    EXPECT_EQ(rtl::tikzString(d), tikz.str());
     std::string s = svg(d);
+    EXPECT_EQ(rtl::svgString(d), s);   // the string form (no stream; the package uses it)
     xml_check::Result r = xml_check::check(s);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.elements["svg"], 1u);

@@ -34,6 +34,7 @@ namespace
         ASSERT_FALSE(want.empty()) << name;
         EXPECT_EQ(member.str(), want) << name;
         EXPECT_EQ(free_function.str(), want) << name;
+        EXPECT_EQ(rtl::tikzString(d), want) << name;   // the string form (no stream; the package uses it)
     }
 }
 
@@ -69,4 +70,5 @@ TEST(Tikz2DGolden, TikzPictureIsTheDocumentBody)
     size_t b = doc.find("\\begin{tikzpicture}"), e = doc.find("\\end{document}");
     ASSERT_NE(b, std::string::npos);
     EXPECT_EQ(pic.str(), doc.substr(b, e - b));
+    EXPECT_EQ(rtl::tikzPictureString(d), pic.str());
 }

@@ -66,6 +66,10 @@ TEST(Tikz3DBudget, ScenesWithinTheLimitAreWrittenAsBefore)
     scene(t, 7998, 1, 4);
     EXPECT_EQ(t.texMarkLimit(), rtl::Drawing2D::pdflatex_mark_limit);
     std::string limited = tikz(t);
+    EXPECT_EQ(t.tikzString(), limited);   // the string forms (no stream; the package uses them)
+    std::ostringstream doc;
+    t.writeTEX(doc);
+    EXPECT_EQ(t.texString(), doc.str());
     t.setTexMarkLimit(0);
     EXPECT_EQ(tikz(t), limited);
     EXPECT_EQ(count(limited, "\\MarkA{"), 7998u);
