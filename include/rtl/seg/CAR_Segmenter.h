@@ -158,6 +158,18 @@ namespace rtl
         // flags_[i]: bit 0 = point i is valid, bit 1 = it meets the criterion with point i - 1 (i >= 1).
         void neighbourFlags(const std::vector<VectorType> &pts, const VectorType &origin, const seg_detail::SquaredThreshold<ElementType> &thr)
         {
+            // With a finite squared upper bound, a pair with a non-finite coordinate never links, without the
+            // validity tests: that coordinate's difference is NaN or infinite, so the squared distance is NaN or
+            // +inf, and no threshold (at most upper^2, or NaN) admits it. Only the point's own test (bit 0) is left.
+            if (thr.upper_sq <= std::numeric_limits<ElementType>::max())
+                neighbourFlagPass<false>(pts, origin, thr);
+            else
+                neighbourFlagPass<true>(pts, origin, thr);
+        }
+
+        template<bool CheckPrevious>
+        void neighbourFlagPass(const std::vector<VectorType> &pts, const VectorType &origin, const seg_detail::SquaredThreshold<ElementType> &thr)
+        {
             const size_t n = pts.size();
             ElementType o[D];
             for (int k = 0; k < D; ++k) o[k] = origin.data()[k];
@@ -183,9 +195,9 @@ namespace rtl
                         rsq += (a - o[k]) * (a - o[k]);
                         dsq += (a - b) * (a - b);
                         valid &= (a - a) == ElementType(0);
-                        valid_prev &= (b - b) == ElementType(0);
+                        if constexpr (CheckPrevious) valid_prev &= (b - b) == ElementType(0);
                     }
-                    const bool link = valid & valid_prev & (dsq <= thr(rsq));
+                    const bool link = (!CheckPrevious || (valid & valid_prev)) & (dsq <= thr(rsq));
                     f[i] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
                 }
             }
@@ -209,9 +221,9 @@ namespace rtl
                             rsq += (a - o[k]) * (a - o[k]);
                             dsq += (a - b) * (a - b);
                             valid &= (a - a) == ElementType(0);
-                            valid_prev &= (b - b) == ElementType(0);
+                            if constexpr (CheckPrevious) valid_prev &= (b - b) == ElementType(0);
                         }
-                        const bool link = valid & valid_prev & (dsq <= thr(rsq));
+                        const bool link = (!CheckPrevious || (valid & valid_prev)) & (dsq <= thr(rsq));
                         fb[j] = static_cast<unsigned char>(static_cast<unsigned>(valid) | (static_cast<unsigned>(link) << 1));
                     }
                 }
