@@ -175,22 +175,19 @@ namespace rtl
         }
 
         //! Writes the standalone document if hasContent(); throws std::runtime_error if the file cannot be written
-        //! and std::length_error (file not touched) if the scene cannot be thinned into texMarkLimit().
+        //! and std::length_error (file not touched: the document is made before the file is opened) if the scene
+        //! cannot be thinned into texMarkLimit() or is beyond TeX's dimensions.
         void writeTEX(const std::string &file_name)
         {
             if (!hasContent())
                 return;
-            texLimits(true);
-            thinning();
             latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
         void writeTEX(std::ostream &os) { writeTexTo(os); }
         //! What writeTEX writes, as a string, without any stream (not an overload of writeTEX: that takes file names).
         std::string texString()
         {
-            std::string out;
-            writeTexTo(out);
-            return out;
+            return io_detail::textString([this](std::string &out) { writeTexTo(out); });
         }
         //! writeTEX into a std::ostream or a std::string (TextSink.h).
         template<class Out>
@@ -208,9 +205,7 @@ namespace rtl
         //! What writeTikz writes, as a string, without any stream.
         std::string tikzString()
         {
-            std::string out;
-            writeTikzTo(out);
-            return out;
+            return io_detail::textString([this](std::string &out) { writeTikzTo(out); });
         }
         //! writeTikz into a std::ostream or a std::string (TextSink.h).
         template<class Out>

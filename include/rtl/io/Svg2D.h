@@ -427,9 +427,7 @@ namespace rtl
     //! What writeSvg writes, as a string, without any stream.
     inline std::string svgString(const Drawing2D &d)
     {
-        std::string out;
-        svg_detail::SvgWriter(d).write(out);
-        return out;
+        return io_detail::textString([&d](std::string &out) { svg_detail::SvgWriter(d).write(out); });
     }
 
     //! A Drawing2D with SVG output (the same drawing calls as LaTeXTikz2D).

@@ -17,6 +17,15 @@ namespace rtl::io_detail
 
 namespace rtl::io_detail
 {
+    //! What write(std::string &) appends to an empty string: the writers' string forms.
+    template<class Write>
+    std::string textString(Write &&write)
+    {
+        std::string out;
+        write(out);
+        return out;
+    }
+
     //! `<<` of text onto either target, piece by piece as the writers always wrote to streams.
     template<class Out>
     struct TextOut

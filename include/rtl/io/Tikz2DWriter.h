@@ -304,9 +304,7 @@ namespace rtl
     //! What writeTikzPicture writes, as a string, without any stream.
     inline std::string tikzPictureString(const Drawing2D &d)
     {
-        std::string out;
-        latex_detail::writeTikzPictureTo(d, out);
-        return out;
+        return io_detail::textString([&d](std::string &out) { latex_detail::writeTikzPictureTo(d, out); });
     }
 
     //! writeTikzPicture into a std::ostream or a std::string (TextSink.h).
@@ -373,9 +371,7 @@ namespace rtl
     //! What writeTikz writes, as a string, without any stream.
     inline std::string tikzString(const Drawing2D &d)
     {
-        std::string out;
-        latex_detail::writeTikzTo(d, out);
-        return out;
+        return io_detail::textString([&d](std::string &out) { latex_detail::writeTikzTo(d, out); });
     }
 
     //! writeTikz into a std::ostream or a std::string (TextSink.h).
