@@ -1,6 +1,6 @@
 // Helpers shared by the lessons: the excerpt a lesson starts on, the trace of a package call, and the replay of a
 // trace prefix. Nothing here knows an algorithm: replays only fold the package's own events.
-import { note } from './ui.js';
+import { note, numberField } from './ui.js';
 
 // The excerpt: cluster `cluster` of `scan` of `dataset` segmented with `segment` (the package's segment()), or the
 // beams `beams: [first, last]` of that scan. Adds the lesson's note (which excerpt and why) to host.controls.
@@ -71,3 +71,20 @@ export function readParams(fields, check) {
 
 export const positive = (v) => (Number.isFinite(v) && v > 0 ? null : 'must be a number above 0');
 export const nonNegative = (v) => (Number.isFinite(v) && v >= 0 ? null : 'must be a number ≥ 0');
+
+// The one-parameter vectorizer lessons (DP, RW, ITLS): the parameter's field (`field`: numberField's options without
+// key and onInput) and recompute(), which makes the package's untraced result and the same call traced. show() and
+// finalState() read run.params, run.untraced, run.trace and run.missing (what traced() says when there is no trace).
+export function vectorizerRun(host, chain, { method, key, field, what }) {
+  const fields = { [key]: numberField(host.controls, { key, ...field, onInput: host.onParamsChanged }) };
+  const run = { params: null, untraced: null, trace: [], missing: null };
+  run.recompute = () => {
+    run.params = readParams(fields, (v) => (positive(v[key]) ? { [key]: positive(v[key]) } : {}));
+    if (!run.params) { Object.assign(run, { trace: [], missing: null, untraced: null }); return { steps: 0 }; }
+    const options = { method, [key]: run.params[key] };
+    run.untraced = host.rtl.vectorize(chain, options);
+    Object.assign(run, traced(() => host.rtl.vectorize(chain, { ...options, trace: true }), what));
+    return { steps: run.trace.length };
+  };
+  return run;
+}

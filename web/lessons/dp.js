@@ -1,8 +1,8 @@
 // Douglas–Peucker, step by step from the package's trace (events `start`, `range`; wasm/js/index.d.ts): each range's
 // chord, its farthest interior point and that point's distance against ε, and the vertices kept so far.
 import { INK, Scene } from '../figure.js';
-import { loadExcerpt, pt, readParams, positive, traced, explainNoSteps } from './common.js';
-import { m, numberField } from './ui.js';
+import { loadExcerpt, pt, vectorizerRun, explainNoSteps } from './common.js';
+import { m } from './ui.js';
 
 const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
@@ -30,21 +30,13 @@ export default {
   summary: 'Keep the point farthest from the chord while it is farther than ε, and recurse on both halves.',
   async create(host) {
     const { chain, where } = await loadExcerpt(host, EXCERPT);
-    const fields = {
-      epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: max distance from the chord', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
-    };
+    const run = vectorizerRun(host, chain, { method: 'dp', key: 'epsilon', what: 'Douglas–Peucker',
+      field: { label: 'ε: max distance from the chord', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm' } });
     host.figure.fitPoints(chain);
-    let missing = null, trace = [], untraced = null, params = null;
-
     return {
-      recompute() {
-        params = readParams(fields, ({ epsilon }) => (positive(epsilon) ? { epsilon: positive(epsilon) } : {}));
-        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
-        untraced = host.rtl.vectorize(chain, { method: 'dp', epsilon: params.epsilon });
-        ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'dp', epsilon: params.epsilon, trace: true }), 'Douglas–Peucker'));
-        return { steps: trace.length };
-      },
+      recompute: run.recompute,
       show(k) {
+        const { params, untraced, trace, missing } = run;
         const s = new Scene(`Douglas–Peucker, ε = ${params?.epsilon ?? '–'} m: ${where}`);
         s.points(chain, { label: 0 });
         if (k < 0) { if (untraced) s.segments(untraced.segments, { colour: INK.segment, width: 2 }); host.figure.show(s); explainNoSteps(host, missing); return; }
@@ -76,6 +68,7 @@ export default {
         this.step = k;
       },
       finalState() {
+        const { params, untraced, trace } = run;
         const k = this.step ?? -1, kept = keptAfter(trace, k);
         // The untraced result's vertices: dp spans are [key_k, key_k+1 + 1) (index.d.ts).
         const keys = untraced ? [...Array.from(untraced.indices).filter((_, i) => i % 2 === 0), untraced.indices[untraced.indices.length - 1] - 1] : [];

@@ -2,8 +2,8 @@
 // `segment`): the run growing point by point, its RMS as a curve against σ, each close, the tail repair and the
 // final trimmed segments.
 import { INK, Scene } from '../figure.js';
-import { loadExcerpt, pt, readParams, positive, slice, traced, explainNoSteps } from './common.js';
-import { mm, numberField } from './ui.js';
+import { loadExcerpt, pt, slice, vectorizerRun, explainNoSteps } from './common.js';
+import { mm } from './ui.js';
 
 const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
@@ -33,20 +33,13 @@ export default {
   summary: 'Add points one by one to a running line fit; close the run just before the point that lifts its RMS to σ.',
   async create(host) {
     const { chain, where } = await loadExcerpt(host, EXCERPT);
-    const fields = {
-      sigma: numberField(host.controls, { key: 'sigma', label: 'σ: max RMS distance', value: 0.03, min: 0.005, max: 0.2, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
-    };
+    const run = vectorizerRun(host, chain, { method: 'itls', key: 'sigma', what: 'incremental TLS',
+      field: { label: 'σ: max RMS distance', value: 0.03, min: 0.005, max: 0.2, step: 0.005, unit: 'm' } });
     host.figure.fitPoints(chain);
-    let missing = null, trace = [], untraced = null, params = null;
     return {
-      recompute() {
-        params = readParams(fields, ({ sigma }) => (positive(sigma) ? { sigma: positive(sigma) } : {}));
-        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
-        untraced = host.rtl.vectorize(chain, { method: 'itls', sigma: params.sigma });
-        ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'itls', sigma: params.sigma, trace: true }), 'incremental TLS'));
-        return { steps: trace.length };
-      },
+      recompute: run.recompute,
       show(k) {
+        const { params, untraced, trace, missing } = run;
         this.step = k;
         const s = new Scene(`Incremental TLS, σ = ${params?.sigma ?? '–'} m: ${where}`);
         if (k < 0) { s.points(chain, { label: -1 }); if (untraced) s.segments(untraced.segments, { colour: INK.segment, width: 2 }); host.figure.show(s); explainNoSteps(host, missing); return; }
@@ -86,6 +79,7 @@ export default {
         host.text.innerHTML = html + '<p class="legend">Figure: large blue points = the run being grown, green/red ring = the point just added fits / does not; colours = closed runs; inset = the RMS of the run against σ.</p>';
       },
       finalState() {
+        const { params, untraced, trace } = run;
         const k = this.step ?? -1, r = replay(trace, k);
         return { method: 'itls', chain: Array.from(chain), params, step: k, steps: trace.length,
           replayed: { ranges: r.ranges.flat(), segments: r.segments.flatMap((g) => g.slice(2)) },

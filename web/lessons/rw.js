@@ -1,8 +1,8 @@
 // Reumann–Witkam, step by step from the package's trace (events `start`, `keep`, `strip`, `exit`): the strip of
 // half-width ε around the line from the key point through the next point, and each point that leaves it.
 import { INK, Scene } from '../figure.js';
-import { loadExcerpt, pt, readParams, positive, traced, explainNoSteps } from './common.js';
-import { m, numberField } from './ui.js';
+import { loadExcerpt, pt, vectorizerRun, explainNoSteps } from './common.js';
+import { m } from './ui.js';
 
 const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
@@ -27,20 +27,13 @@ export default {
   summary: 'Slide a strip of half-width ε along the points; where a point leaves it, the point before becomes a vertex.',
   async create(host) {
     const { chain, where } = await loadExcerpt(host, EXCERPT);
-    const fields = {
-      epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: strip half-width', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
-    };
+    const run = vectorizerRun(host, chain, { method: 'rw', key: 'epsilon', what: 'Reumann–Witkam',
+      field: { label: 'ε: strip half-width', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm' } });
     host.figure.fitPoints(chain);
-    let missing = null, trace = [], untraced = null, params = null;
     return {
-      recompute() {
-        params = readParams(fields, ({ epsilon }) => (positive(epsilon) ? { epsilon: positive(epsilon) } : {}));
-        if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
-        untraced = host.rtl.vectorize(chain, { method: 'rw', epsilon: params.epsilon });
-        ({ trace, missing } = traced(() => host.rtl.vectorize(chain, { method: 'rw', epsilon: params.epsilon, trace: true }), 'Reumann–Witkam'));
-        return { steps: trace.length };
-      },
+      recompute: run.recompute,
       show(k) {
+        const { params, untraced, trace, missing } = run;
         this.step = k;
         const s = new Scene(`Reumann–Witkam, ε = ${params?.epsilon ?? '–'} m: ${where}`);
         s.points(chain, { label: 0 });
@@ -68,6 +61,7 @@ export default {
         host.text.innerHTML = html + '<p class="legend">Figure: blue band = the strip (ε each side) from its key point (ring) ahead; red × = the point that leaves it; black = the polyline kept so far.</p>';
       },
       finalState() {
+        const { params, untraced, trace } = run;
         const k = this.step ?? -1;
         const keys = untraced?.count ? [...Array.from(untraced.indices).filter((_, i) => i % 2 === 0), untraced.indices[untraced.indices.length - 1] - 1] : [];
         return { method: 'rw', chain: Array.from(chain), params, step: k, steps: trace.length,
