@@ -29,7 +29,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 #include <list>
 #include <map>
 #include <stdexcept>
@@ -53,6 +56,36 @@
 
 namespace rtl
 {
+    namespace seg_detail
+    {
+        //! IA_Segmenter's window test in 16-byte vectors (GCC/Clang vector extensions, any target: SSE2, AVX, NEON,
+        //! wasm simd128 or scalar code); n = 0 (no vector test) for other element types and compilers.
+        template<typename E>
+        struct WindowLanes
+        {
+            static constexpr size_t n = 0;
+            typedef std::int64_t Tag;
+        };
+#if defined(__GNUC__) || defined(__clang__)
+        template<>
+        struct WindowLanes<float>
+        {
+            static constexpr size_t n = 4;
+            typedef std::int32_t Tag;
+            typedef float V __attribute__((vector_size(16)));
+            typedef std::int32_t M __attribute__((vector_size(16)));
+        };
+        template<>
+        struct WindowLanes<double>
+        {
+            static constexpr size_t n = 2;
+            typedef std::int64_t Tag;
+            typedef double V __attribute__((vector_size(16)));
+            typedef std::int64_t M __attribute__((vector_size(16)));
+        };
+#endif
+    }
+
     template<class Vector, class Observer = NoTrace>
     class IA_Segmenter
     {
@@ -187,7 +220,9 @@ namespace rtl
             {
                 const ElementType tsq = thr_(rsq);
                 const ElementType *p = pt.data().data();
-                for (size_t w = 0; w < step_; ++w)
+                bool resolved = false;
+                if (!traced || observer_ == nullptr) resolved = linkSameRecord(p, tsq, rec);
+                for (size_t w = 0; w < step_ && !resolved; ++w)
                 {
                     const size_t r = wrec_[w];
                     if constexpr (traced)
@@ -214,8 +249,18 @@ namespace rtl
             if (count_ == step_)
             {
                 slot = head_;
-                evict(slot);
                 head_ = head_ + 1 == step_ ? 0 : head_ + 1;
+                // the common eviction inline: the point joins an alive list that stays alive and contiguous
+                const size_t r = wrec_[slot];
+                Record *R = r == none ? nullptr : &lists_.recs[r];
+                if (R != nullptr && (!traced || observer_ == nullptr) && R->has_alive && R->in_window > 1 && R->contiguous &&
+                    R->base + R->alive->second.size() == widx_[slot])
+                {
+                    --R->in_window;
+                    R->alive->second.push_back(wpts_[slot]);
+                    clearSlot(slot);
+                }
+                else evict(slot);
             }
             else
             {
@@ -223,11 +268,88 @@ namespace rtl
                 if (slot >= step_) slot -= step_;
                 ++count_;
             }
-            wpts_[slot] = pt;
-            wrec_[slot] = rec;
+            putSlot(slot, pt, rec);
             widx_[slot] = stream_++;
             // every slot holds rec exactly when rec counts step_ window points (in_window counts them)
             if (rec != none && lists_.recs[rec].in_window == step_) enterTail(rec);
+        }
+
+        // Most points link to window points of one cluster only, that of the newest window point, or to none. One
+        // pass over the window's coordinate arrays (vectorised: independent per slot) tells: true with rec = that
+        // cluster or none (a new cluster opens); false when other clusters are linked too, which the caller's loop
+        // resolves in slot order, as before. Free and gap slots hold NaN coordinates, so they never link.
+        bool linkSameRecord(const ElementType *p, ElementType tsq, size_t &rec) const
+        {
+            const size_t P = pad_;
+            if constexpr (Lanes::n == 0) return false;
+            else
+            {
+                typedef typename Lanes::V V;
+                typedef typename Lanes::M M;
+                if (P == 0) return false;
+                size_t r0 = none;
+                if (count_ != 0)
+                {
+                    const size_t newest = head_ + count_ - 1;
+                    r0 = wrec_[newest < step_ ? newest : newest - step_];
+                }
+                const ElementType *c = wc_.data();
+                const Tag *tg = wtag_.data();
+                const V tv = V{} + tsq;
+                const M t0 = M{} + static_cast<Tag>(r0);
+                M any{}, other{};
+                for (size_t b = 0; b < P; b += Lanes::n)
+                {
+                    // squaredDistance's arithmetic, in its order, lane by lane
+                    V sq{};
+                    for (int k = 0; k < D; ++k)
+                    {
+                        V q;
+                        std::memcpy(&q, c + static_cast<size_t>(k) * P + b, sizeof q);
+                        const V d = p[k] - q;
+                        sq += d * d;
+                    }
+                    M t;
+                    std::memcpy(&t, tg + b, sizeof t);
+                    const M l = (M)(sq <= tv);   // a same-size bitcast: the compare's lane type varies by platform
+                    any |= l;
+                    other |= l & (t ^ t0);   // nonzero where a linked slot has another record
+                }
+                Tag a = 0, o = 0;
+                for (size_t j = 0; j < Lanes::n; ++j)
+                {
+                    a |= any[j];
+                    o |= other[j];
+                }
+                if (o != 0) return false;
+                rec = a != 0 ? r0 : none;
+                return true;
+            }
+        }
+
+        // Writes a window slot (its ring entry and its coordinate-array copy: NaN for a gap).
+        void putSlot(size_t w, const VectorType &pt, size_t rec) const
+        {
+            wpts_[w] = pt;
+            wrec_[w] = rec;
+            if (pad_ == 0) return;
+            for (int k = 0; k < D; ++k)
+                wc_[static_cast<size_t>(k) * pad_ + w] = rec == none ? std::numeric_limits<ElementType>::quiet_NaN() : pt.data()[k];
+            wtag_[w] = static_cast<Tag>(rec);
+        }
+
+        void clearSlot(size_t w)
+        {
+            wrec_[w] = none;
+            if (pad_ == 0) return;
+            for (int k = 0; k < D; ++k) wc_[static_cast<size_t>(k) * pad_ + w] = std::numeric_limits<ElementType>::quiet_NaN();
+            wtag_[w] = static_cast<Tag>(none);
+        }
+
+        void setSlotRecord(size_t w, size_t rec)
+        {
+            wrec_[w] = rec;
+            if (pad_ != 0) wtag_[w] = static_cast<Tag>(rec);
         }
 
         // Tail mode: while the window is full and all in one cluster that has an alive list, the window points are
@@ -262,8 +384,7 @@ namespace rtl
             const size_t total = v.size() - tail_start_, left = total - step_;
             for (size_t k = 0; k < step_; ++k)
             {
-                wpts_[k] = v[tail_start_ + left + k];
-                wrec_[k] = rec;
+                putSlot(k, v[tail_start_ + left + k], rec);
                 widx_[k] = tail_stream_ + left + k;
             }
             if (!R.contiguous)
@@ -392,7 +513,7 @@ namespace rtl
         {
             if (!R.has_alive)
             {
-                R.alive = lists_.alive.emplace_hint(lists_.alive.end(), R.id, takeVector());
+                R.alive = newAliveList(R.id);
                 R.has_alive = true;
                 R.contiguous = true;
                 R.base = idx;
@@ -404,19 +525,25 @@ namespace rtl
             v.push_back(p);
         }
 
-        std::vector<VectorType> takeVector()
+        // Alive lists are map nodes handed back and forth with extract/insert, so that a cluster that gets an alive
+        // list costs no allocation once the pool holds nodes (an emptied node keeps its list's capacity).
+        typename AliveMap::iterator newAliveList(size_t id)
         {
-            if (pool_.empty()) return {};
-            std::vector<VectorType> v = std::move(pool_.back());
-            pool_.pop_back();
-            return v;
+            std::vector<typename AliveMap::node_type> &pool = node_pool_.nodes;
+            if (pool.empty()) return lists_.alive.emplace_hint(lists_.alive.end(), id, std::vector<VectorType>());
+            typename AliveMap::node_type nh = std::move(pool.back());
+            pool.pop_back();
+            nh.key() = id;
+            return lists_.alive.insert(lists_.alive.end(), std::move(nh));   // ids grow: the end is the place
         }
 
-        // Keeps at most step + 2 spare lists: never more than step + 1 clusters are alive at once.
-        void recycle(std::vector<VectorType> &&v)
+        // Keeps at most step + 2 spare nodes: never more than step + 1 clusters are alive at once.
+        void dropAliveList(typename AliveMap::iterator it)
         {
-            v.clear();
-            if (pool_.size() < step_ + 2) pool_.push_back(std::move(v));
+            typename AliveMap::node_type nh = lists_.alive.extract(it);
+            if (node_pool_.nodes.size() >= step_ + 2) return;
+            nh.mapped().clear();
+            node_pool_.nodes.push_back(std::move(nh));
         }
 
         static size_t indexAt(const Record &R, size_t k) { return R.contiguous ? R.base + k : R.index[k]; }
@@ -443,7 +570,7 @@ namespace rtl
                     if (r != none) (*observer_)(ia_trace::Alive{i, lists_.recs[r].id});
                 }
             if (r == none) return;
-            wrec_[slot] = none;
+            clearSlot(slot);
             Record &R = lists_.recs[r];
             if (!R.has_alive && R.in_window == 1)
             {
@@ -463,8 +590,7 @@ namespace rtl
                 // vectors from scratch (and faulting in their pages) would cost more than the copy
                 closed_.emplace_back(v.begin(), v.end());
                 if constexpr (traced) report(ia_trace::Close{R.id, v.size()});
-                recycle(std::move(v));
-                lists_.alive.erase(R.alive);
+                dropAliveList(R.alive);
                 R.has_alive = false;
                 free_.push_back(r);
             }
@@ -489,14 +615,17 @@ namespace rtl
         {
             const size_t keep = lists_.recs[a].id < lists_.recs[b].id ? a : b, gone = keep == a ? b : a;
             for (size_t w = 0; w < step_; ++w)
-                if (wrec_[w] == gone) wrec_[w] = keep;
+                if (wrec_[w] == gone) setSlotRecord(w, keep);
             Record &K = lists_.recs[keep], &G = lists_.recs[gone];
             K.in_window += G.in_window;
             if (G.has_alive)
             {
                 if (!K.has_alive)
                 {
-                    K.alive = lists_.alive.emplace(K.id, std::move(G.alive->second)).first;
+                    // G's node becomes K's (K is older: a smaller key)
+                    typename AliveMap::node_type nh = lists_.alive.extract(G.alive);
+                    nh.key() = K.id;
+                    K.alive = lists_.alive.insert(std::move(nh)).position;
                     K.has_alive = true;
                     K.contiguous = G.contiguous;
                     K.base = G.base;
@@ -505,9 +634,8 @@ namespace rtl
                 else
                 {
                     mergeAlive(K, G);
-                    recycle(std::move(G.alive->second));
+                    dropAliveList(G.alive);
                 }
-                lists_.alive.erase(G.alive);
                 G.has_alive = false;
             }
             G.in_window = 0;
@@ -577,6 +705,12 @@ namespace rtl
             wpts_.swap(pts);
             wrec_.swap(rec);
             widx_.swap(idx);
+            // coordinate arrays for linkSameRecord: step rounded up to whole blocks of NaN-padded lanes; none at
+            // step 1 (its own path) or beyond 2^30 (record indices must fit a Tag: there are at most step + 1)
+            pad_ = lanes != 0 && step > 1 && step <= (size_t(1) << 30) ? (step + lanes - 1) / lanes * lanes : 0;
+            wc_.assign(static_cast<size_t>(D) * pad_, std::numeric_limits<ElementType>::quiet_NaN());
+            wtag_.assign(pad_, static_cast<Tag>(none));
+            for (size_t w = 0; w < count_ && pad_ != 0; ++w) putSlot(w, wpts_[w], wrec_[w]);
         }
 
         ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
@@ -590,13 +724,32 @@ namespace rtl
         mutable size_t head_ = 0, count_ = 0;
         mutable std::vector<VectorType> wpts_;
         mutable std::vector<size_t> wrec_, widx_;                 // widx_ unused at step 1: its point is stream_ - 1
+        // the window again, per coordinate (wc_[k * pad_ + slot]; NaN for gaps, free and padding slots), and the
+        // slots' records as same-width integers, so that linkSameRecord vectorises
+        typedef seg_detail::WindowLanes<ElementType> Lanes;
+        typedef typename Lanes::Tag Tag;
+        static constexpr size_t lanes = Lanes::n;
+        size_t pad_ = 0;
+        mutable std::vector<ElementType> wc_;
+        mutable std::vector<Tag> wtag_;
 
         mutable ClusterLists lists_;
         mutable size_t tail_start_ = 0, tail_stream_ = 0;        // tail mode: see enterTail
         std::vector<size_t> free_;
         std::vector<std::vector<VectorType>> closed_;           // closing order; closed_head_ is the next to hand out
         size_t closed_head_ = 0;
-        std::vector<std::vector<VectorType>> pool_;             // emptied alive lists, capacity kept
+        // emptied alive-list nodes, capacity kept; spare storage only, so a copy starts without any
+        struct NodePool
+        {
+            std::vector<typename AliveMap::node_type> nodes;
+            NodePool() = default;
+            NodePool(const NodePool &) {}
+            NodePool(NodePool &&) noexcept = default;
+            NodePool &operator=(const NodePool &) { return *this; }
+            NodePool &operator=(NodePool &&) noexcept = default;
+            ~NodePool() = default;
+        };
+        NodePool node_pool_;
         size_t next_id_ = 0;
         mutable size_t stream_ = 0;
         Observer *observer_ = nullptr;
