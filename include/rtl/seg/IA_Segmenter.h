@@ -32,7 +32,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <type_traits>
 #include <list>
 #include <map>
 #include <stdexcept>
@@ -280,12 +279,12 @@ namespace rtl
         // resolves in slot order, as before. Free and gap slots hold NaN coordinates, so they never link.
         bool linkSameRecord(const ElementType *p, ElementType tsq, size_t &rec) const
         {
-            const size_t P = pad_;
             if constexpr (Lanes::n == 0) return false;
             else
             {
                 typedef typename Lanes::V V;
                 typedef typename Lanes::M M;
+                const size_t P = pad_;
                 if (P == 0) return false;
                 size_t r0 = none;
                 if (count_ != 0)
