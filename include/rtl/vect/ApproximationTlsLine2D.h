@@ -11,12 +11,17 @@
 #include <cstddef>
 #include <cstring>
 #include <iterator>
+#include <limits>
 #include <type_traits>
 
 #include "rtl/core/LineSegmentND.h"
 #include "rtl/core/VectorND.h"
 #include "rtl/vect/PrecSums.h"
 #include "rtl/vect/TlsDetail.h"
+
+#if defined(__GNUC__) && defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace rtl
 {
@@ -139,10 +144,38 @@ namespace rtl
         //! order) after point j, of n0 + j points. True iff errorBelowRaw holds for every j; the arithmetic per state
         //! is errorBelowRaw's, evaluated without branches, for double on GCC/clang vector lanes (SSE2: 2 per
         //! instruction), so the decisions are the same.
+        //! On SSE2 the per-state decision is reduced to two running lane values instead of a mask per state:
+        //! with a, b, c finite, "a < 0 || b < 0 || a * b < c * c" is "min(a * b - c * c, min(a, b)) < 0" (the rounded
+        //! difference of two doubles has the sign of their exact difference; a * b and c * c both infinite give NaN,
+        //! which minpd replaces by its second operand, min(a, b)), so the block passes iff the maximum of that over
+        //! the states is negative; and a + b + c is finite for every state iff the sum of (f - f) is 0 (NaN otherwise).
         template<size_t block>
         static bool errorBelowRawAll(const ComputeType *s, ComputeType n0, ComputeType sigma2)
         {
-#if defined(__GNUC__)
+#if defined(__GNUC__) && defined(__SSE2__)
+            if constexpr (std::is_same_v<ComputeType, double> && block % 2 == 0)
+            {
+                const __m128d zero = _mm_setzero_pd(), two = _mm_set1_pd(2.0), sg = _mm_set1_pd(sigma2);
+                __m128d n = _mm_set_pd(n0 + 1.0, n0);   // lanes: states j, j + 1 (n0 + j is exact: counts < 2^53)
+                __m128d worst = _mm_set1_pd(-std::numeric_limits<double>::infinity()), nonfinite = zero;
+                for (size_t j = 0; j < block; j += 2)
+                {
+                    const __m128d s0 = _mm_loadu_pd(s + j), s1 = _mm_loadu_pd(s + block + j), s2 = _mm_loadu_pd(s + 2 * block + j),
+                                  s3 = _mm_loadu_pd(s + 3 * block + j), s4 = _mm_loadu_pd(s + 4 * block + j);
+                    const __m128d t = _mm_mul_pd(_mm_mul_pd(n, n), sg);
+                    const __m128d a = _mm_sub_pd(_mm_sub_pd(_mm_mul_pd(n, s2), _mm_mul_pd(s0, s0)), t);
+                    const __m128d b = _mm_sub_pd(_mm_sub_pd(_mm_mul_pd(n, s3), _mm_mul_pd(s1, s1)), t);
+                    const __m128d c = _mm_sub_pd(_mm_mul_pd(n, s4), _mm_mul_pd(s0, s1));
+                    const __m128d f = _mm_add_pd(_mm_add_pd(a, b), c);
+                    nonfinite = _mm_add_pd(nonfinite, _mm_sub_pd(f, f));
+                    const __m128d g = _mm_min_pd(_mm_sub_pd(_mm_mul_pd(a, b), _mm_mul_pd(c, c)), _mm_min_pd(a, b));
+                    worst = _mm_max_pd(worst, g);
+                    n = _mm_add_pd(n, two);
+                }
+                return _mm_movemask_pd(_mm_and_pd(_mm_cmplt_pd(worst, zero), _mm_cmpeq_pd(nonfinite, zero))) == 3;
+            }
+#endif
+#if defined(__GNUC__) && !defined(__SSE2__)
             if constexpr (std::is_same_v<ComputeType, double> && block % 2 == 0)
             {
                 typedef double V __attribute__((vector_size(16)));
