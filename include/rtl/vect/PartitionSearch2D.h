@@ -40,6 +40,17 @@
 // where no pair of fitting lines meets (not measured): 2- and 3-point ranges point almost anywhere and meet at most
 // boundaries; bridges are forced because the long lines on either side of a corner miss each other, so a useful bound
 // has to tell long ranges from short ones at every corner.
+// Backward pass (issue 15 item 7): when both bounded rounds fail, every fitting range gets a corner-aware lower bound
+// to_end on the ranges of a valid partition of the rest that starts with it (backward(): from the end; at each corner
+// only the ranges with the least count are tested, the others assumed to meet), and rounds keep a state only if its
+// predecessor's ranges + to_end fit the budget, from the bound for the whole chain up (at most 3 budgets, each given
+// up past 4 N + 1024 states), before the unbounded round. Exact as above: to_end never exceeds the true count, and a
+// predecessor that meets has at most one more. On the bridge seeds 35, 115, 299, 40, 257, 297, 84, 117
+// (R - remaining[0] = 3, 7, 9, 8, 4, 6, 9, 5) the bound for the chain is R and that round keeps 0.1-1.9 states per
+// point: the optimum's paths are few, the cost is the pass itself, which visits all F fitting ranges (78-95 per
+// point). Callgrind, the search on seeds 35, 117, 297, 115, 84: 0.60, 0.51, 0.72, 0.80, 0.91 x the instructions
+// before (an exact count, testing every candidate, was 0.99-1.28 x). Left: F itself; a bound that certifies the
+// bridges without visiting every fitting range (e.g. from a per-corner summary of the lines ending and starting there).
 // Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
 // crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
 //
@@ -151,13 +162,20 @@ namespace rtl
             {
                 ++work_.bounded;
                 lowerBounds(a, n);
-                size_t budget = remaining[0];
-                for (size_t round = 0;; ++round)
-                {
+                for (size_t budget = remaining[0]; budget <= remaining[0] + 1 && incoming[n].empty(); ++budget)
                     searchRound(pts, a, n, budget, unbounded);
-                    if (!incoming[n].empty() || budget == unbounded)
-                        break;
-                    budget = round + 1 < budget_steps ? budget + (size_t(1) << round) : unbounded;
+                if (incoming[n].empty())
+                {
+                    // The fits-only bound was short (corners force extra ranges): a corner-aware count to the end
+                    // from every fitting range (backward pass), then rounds on it, each given up past the state cap.
+                    const size_t r = backward(pts, a, n);
+                    exact_rest = true;
+                    for (size_t budget = r; budget != unbounded && budget < r + 3 && incoming[n].empty(); ++budget)
+                        if (!searchRound(pts, a, n, budget, rest_cap * n + 1024))
+                            break;
+                    exact_rest = false;
+                    if (incoming[n].empty())
+                        searchRound(pts, a, n, unbounded, unbounded);   // proves infeasibility (and finds the corner)
                 }
             }
             if (incoming[n].empty())
@@ -248,7 +266,7 @@ namespace rtl
         //! on either per call is what the fuzz harness checks, so that a slow case cannot pass unseen).
         struct Work
         {
-            size_t fits{0}, corners{0}, states{0};
+            size_t fits{0}, corners{0}, states{0};   // states: those pushed, plus the backward pass's ranges
             size_t bounded{0};   // searches that went on to bounded rounds (beyond the first round's state cap)
         };
         const Work &work() const { return work_; }
@@ -283,6 +301,7 @@ namespace rtl
         {
             size_t y;
             ComputeType total;
+            size_t rest;   // with a budget: ranges this range and the rest of the chain need at least
         };
         std::vector<Out> outs;
         std::vector<size_t> picks, limits, open_, tree, leaf_of, order, removed;
@@ -299,8 +318,15 @@ namespace rtl
         static constexpr size_t unbounded = std::numeric_limits<size_t>::max();
         static constexpr size_t block = 8;   // range starts per end bound (lowerBounds)
         static constexpr size_t state_cap = 1;   // states per point (+ 1024) of the first, unbounded round
-        static constexpr size_t budget_steps = 2;   // bounded rounds (budgets remaining[0], remaining[0] + 1) before the unbounded one
+        static constexpr size_t rest_cap = 4;   // states per point (+ 1024) of a round on the backward pass's bound
         bool prune_{true};
+        bool exact_rest{false};   // the round's budget test uses to_end[] (backward pass) instead of remaining[]
+        bool reversed_{false};   // choosePredecessors for the backward pass: candidates start at the corner, queries end there
+        // Backward pass: the fitting ranges by start (r_start, r_end; ends ascending in r_off[x] .. r_off[x + 1]),
+        // to_end[r]: a lower bound on the ranges of a valid partition of [x, N) that starts with range r (none: no
+        // such partition); by_end: the ranges grouped by end.
+        std::vector<size_t> r_off, e_off, by_end;
+        std::vector<uint32_t> r_start, r_end, to_end;
         std::vector<size_t> far, remaining, first_within;
         CornerReport failure_;
 
@@ -394,45 +420,40 @@ namespace rtl
                 in[k] = keys[k].state;
             outs.clear();
             size_t y0 = x + 2;
+            const size_t used_ranges = x == 0 ? 0 : states[in.front()].ranges;
             if (budget != unbounded)
             {
                 // remaining[] does not increase along the chain: ends before first_within[k] need more than k
                 // further ranges, where k is what the cheapest incoming state leaves.
-                const size_t used = x == 0 ? 0 : states[in.front()].ranges;
-                if (used + 1 > budget)
+                if (used_ranges + 1 > budget)
                     return;
-                if (budget - used - 1 < first_within.size())
-                    y0 = std::max(y0, first_within[budget - used - 1]);
+                if (!exact_rest && budget - used_ranges - 1 < first_within.size())
+                    y0 = std::max(y0, first_within[budget - used_ranges - 1]);
             }
             out_lines.clear();
-            for (size_t y = y0; y <= n; ++y)
+            if (exact_rest)
             {
-                // fits(), with the line of a fitting range built once (its error is the same expression).
-                ++work_.fits;
-                const auto sums = a.sums(x, y);
-                const bool ok = y - x == 2 || Approximation::errorBelow(sums, sigma2);
-                ComputeType total = 0;
-                if (!ok)
-                    total = Approximation::errorSquaredCompute(sums) * static_cast<ComputeType>(y - x);
-                if (!ok && beyondReach(total, x, n))
-                    break;
-                if (ok && y + 1 != n)   // a range ending one point before the end leaves a 1-point tail
+                // The ranges from x whose count to the end fits the budget (the cheapest incoming state's count).
+                for (size_t r = r_off[x]; r < r_off[x + 1]; ++r)
                 {
-                    out_lines.emplace_back(sums);
-                    outs.push_back(Out{y, y - x == 2 ? ComputeType(0) : out_lines.back().errSquaredCompute() * static_cast<ComputeType>(y - x)});
-                }
-                // The total never decreases with y: no end z with (z - x) sigma^2 * 1.01 <= total can fit.
-                if (!ok && total > ComputeType(0))
-                {
-                    const ComputeType reach = total / (ComputeType(1.01) * sigma2);
-                    if (reach > static_cast<ComputeType>(y - x + 1))
-                        y = std::max(y, x + std::min(static_cast<size_t>(reach), n - x) - 1);
+                    if (to_end[r] == none || used_ranges + to_end[r] > budget)
+                        continue;
+                    const size_t y = r_end[r];
+                    ++work_.fits;
+                    out_lines.emplace_back(a.sums(x, y));
+                    outs.push_back(Out{y, y - x == 2 ? ComputeType(0) : out_lines.back().errSquaredCompute() * static_cast<ComputeType>(y - x), to_end[r]});
                 }
             }
+            else
+                scanFits(a, x, n, y0, [&](size_t y, const auto &sums) {
+                    out_lines.emplace_back(sums);
+                    outs.push_back(Out{y, y - x == 2 ? ComputeType(0) : out_lines.back().errSquaredCompute() * static_cast<ComputeType>(y - x),
+                                       budget == unbounded ? 0 : remaining[y] + 1});
+                });
             if (x == 0)
             {
                 for (size_t j = 0; j < outs.size(); ++j)
-                    if (within(1, outs[j].y, budget))
+                    if (within(0, outs[j].rest, budget))
                         push(outs[j].y, State{0, none, 0, 1, outs[j].total}, out_lines[j]);
                 return;
             }
@@ -445,7 +466,7 @@ namespace rtl
             if (budget != unbounded)
                 for (size_t j = 0; j < outs.size(); ++j)
                 {
-                    const size_t rest = remaining[outs[j].y] + 1;
+                    const size_t rest = outs[j].rest;
                     const size_t most = budget >= rest ? budget - rest : 0;   // the largest usable range count
                     limits[j] = budget >= rest ? static_cast<size_t>(std::upper_bound(keys.begin(), keys.end(), most, [](size_t r, const Key &k) { return r < k.ranges; }) - keys.begin()) : 0;
                 }
@@ -465,14 +486,116 @@ namespace rtl
                     continue;
                 const uint32_t back = in[pick == in.size() ? 0 : pick];
                 const State &prev = states[back];
-                if (!within(prev.ranges + 1, outs[j].y, budget))
+                if (!within(prev.ranges, outs[j].rest, budget))
                     continue;
                 push(outs[j].y, State{static_cast<uint32_t>(x), back, prev.breaks + (pick == in.size() ? 1u : 0u), prev.ranges + 1,
                                       prev.error + outs[j].total}, out_lines[j]);
             }
         }
 
-        bool within(size_t ranges, size_t y, size_t budget) const { return budget == unbounded || ranges + remaining[y] <= budget; }
+        //! A state after `ranges` ranges whose own range and the rest need at least `rest` ranges fits `budget`.
+        bool within(size_t ranges, size_t rest, size_t budget) const { return budget == unbounded || ranges + rest <= budget; }
+
+        //! The fitting ranges [x, y), y >= y0, in increasing y (visit(y, sums)); a range ending one point before the
+        //! end is left out (it leaves a 1-point tail). Every fit counts in work().
+        template<class Visit>
+        void scanFits(const SumArray &a, size_t x, size_t n, size_t y0, Visit visit)
+        {
+            for (size_t y = y0; y <= n; ++y)
+            {
+                ++work_.fits;
+                const auto sums = a.sums(x, y);
+                const bool ok = y - x == 2 || Approximation::errorBelow(sums, sigma2);
+                ComputeType total = 0;
+                if (!ok)
+                    total = Approximation::errorSquaredCompute(sums) * static_cast<ComputeType>(y - x);
+                if (!ok && beyondReach(total, x, n))
+                    break;
+                if (ok && y + 1 != n)
+                    visit(y, sums);
+                // The total never decreases with y: no end z with (z - x) sigma^2 * 1.01 <= total can fit.
+                if (!ok && total > ComputeType(0))
+                {
+                    const ComputeType reach = total / (ComputeType(1.01) * sigma2);
+                    if (reach > static_cast<ComputeType>(y - x + 1))
+                        y = std::max(y, x + std::min(static_cast<size_t>(reach), n - x) - 1);
+                }
+            }
+        }
+
+        //! The backward pass (strict mode): to_end[] for every fitting range, by boundaries from the end. Exactly, a
+        //! range [x, y) would need 1 + the least to_end of the ranges from y whose line meets its own at y; here
+        //! only the ranges from y with the least count v are tested (the same lines, corner test and chord query as
+        //! the forward search): 1 + v if one of them meets, else 2 + v if any range from y has a larger count
+        //! (assumed to meet), else none. So to_end[] never exceeds the exact count, and a range's predecessor has
+        //! at most one more, which the bounded rounds need. Returns the bound for the whole chain (unbounded if no
+        //! valid partition exists).
+        size_t backward(const std::vector<VectorType> &pts, const SumArray &a, size_t n)
+        {
+            r_off.assign(n + 1, 0);
+            r_end.clear();
+            r_start.clear();
+            for (size_t x = 0; x + 2 <= n; ++x)
+            {
+                r_off[x] = r_end.size();
+                scanFits(a, x, n, x + 2, [&](size_t y, const auto &) {
+                    r_end.push_back(static_cast<uint32_t>(y));
+                    r_start.push_back(static_cast<uint32_t>(x));
+                });
+            }
+            r_off[n - 1] = r_off[n] = r_end.size();
+            const size_t nr = r_end.size();
+            work_.states += nr;
+            to_end.assign(nr, none);
+            e_off.assign(n + 2, 0);
+            for (size_t r = 0; r < nr; ++r)
+                ++e_off[r_end[r] + 1];
+            for (size_t y = 0; y <= n; ++y)
+                e_off[y + 1] += e_off[y];
+            by_end.resize(nr);
+            std::vector<size_t> &fill = picks;   // scratch
+            fill.assign(e_off.begin(), e_off.end() - 1);
+            for (size_t x = 0; x + 2 <= n; ++x)
+                for (size_t r = r_off[x]; r < r_off[x + 1]; ++r)
+                    by_end[fill[r_end[r]]++] = r;
+            for (size_t k = e_off[n]; k < e_off[n + 1]; ++k)
+                to_end[by_end[k]] = 1;
+            reversed_ = true;
+            for (size_t y = n - 1; y >= 2; --y)
+            {
+                if (e_off[y] == e_off[y + 1])
+                    continue;
+                // Candidates: the ranges from y with the least count (any other one is assumed to meet).
+                uint32_t vmin = none;
+                for (size_t r = r_off[y]; r < r_off[y + 1]; ++r)
+                    vmin = std::min(vmin, to_end[r]);
+                if (vmin == none)
+                    continue;
+                bool more = false;
+                in_lines.clear();
+                for (size_t r = r_off[y]; r < r_off[y + 1]; ++r)
+                    if (to_end[r] == vmin)
+                        in_lines.emplace_back(a.sums(y, r_end[r]));
+                    else
+                        more = more || to_end[r] != none;
+                out_lines.clear();
+                for (size_t k = e_off[y]; k < e_off[y + 1]; ++k)
+                    out_lines.emplace_back(a.sums(r_start[by_end[k]], y));
+                limits.assign(out_lines.size(), in_lines.size());
+                choosePredecessors(pts, y);
+                for (size_t j = 0; j < out_lines.size(); ++j)
+                    if (picks[j] < in_lines.size())
+                        to_end[by_end[e_off[y] + j]] = 1 + vmin;
+                    else if (more)
+                        to_end[by_end[e_off[y] + j]] = 2 + vmin;
+            }
+            reversed_ = false;
+            size_t best = unbounded;
+            for (size_t r = r_off[0]; r < r_off[1]; ++r)
+                if (to_end[r] != none)
+                    best = std::min<size_t>(best, to_end[r]);
+            return best;
+        }
 
         //! remaining[y]: a lower bound on the number of fitting ranges that partition [y, N) (corners ignored),
         //! non-increasing in y; first_within[k]: the first y with remaining[y] <= k. From far[b], a bound on the
@@ -531,7 +654,9 @@ namespace rtl
         bool meets(const std::vector<VectorType> &pts, size_t k, size_t j, size_t x)
         {
             ++work_.corners;
-            return vect_detail::crossingDistanceSquared(pts, in_lines[k], out_lines[j], x) <= delta2;
+            // The backward pass has the ranges after the corner as candidates (k) and those before it as queries (j).
+            return reversed_ ? vect_detail::crossingDistanceSquared(pts, out_lines[j], in_lines[k], x) <= delta2
+                             : vect_detail::crossingDistanceSquared(pts, in_lines[k], out_lines[j], x) <= delta2;
         }
 
         //! picks[j] = the first incoming line (in cost order) before limits[j] that meets outgoing line j within
