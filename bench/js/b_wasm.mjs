@@ -1,10 +1,14 @@
 #!/usr/bin/env node
 // rtl-wasm benchmarks (figures, not pass/fail; run by `./run bench`, or `node bench/js/b_wasm.mjs [--rounds=N] [--smoke]`):
 //  1. wasm vs native at 100,000 and 1,000,000 points: FTLS, Douglas-Peucker and the batch (CAR) segmenter, in one
-//     run, interleaved rounds (a native process call, then the wasm call), medians. Native = the same adapter code
-//     (wasm/src/*_ops.h) in tests/tools/rtl_native ($RTL_NATIVE_BUILD_DIR/tools, default build/native) on objects
-//     reused between its repetitions, its median of 3 calls per round; wasm = the library's own time of the call
-//     (lastComputeMs: the kept objects are reused too) and the whole JS call.
+//     run, interleaved rounds (a native process call, then the wasm call), medians and minima. Native = the same
+//     adapter code (wasm/src/*_ops.h) in tests/tools/rtl_native ($RTL_NATIVE_BUILD_DIR/tools, default build/native)
+//     with the JS defaults (FTLS split at corners), the median of 5 calls per round on objects reused between them
+//     (the first, cold call is the slowest and never the median); wasm = the library's own time of the call
+//     (lastComputeMs: the kept objects are reused too). Two ratios per case (issue 17 item 4's goals):
+//     wasm library / native (<= 1.25) and time outside the library / library (< 10 % at 100k), the outside time
+//     being the whole JS call minus its library time, per round. The kept counts (segments, clusters) of both
+//     sides are checked equal.
 //  2. time outside the library (argument checks, copy in, the C++ input check, results out) per function at
 //     100,000 points, as a share of the library's time (the goal: under 10 %).
 //  3. gzipped size of the .wasm and the JS.
@@ -21,7 +25,7 @@ const PKG = resolve(ROOT, process.env.RTL_PACKAGE || 'dist');
 const { default: init } = await import(pathToFileURL(join(PKG, 'index.node.mjs')).href);
 const args = process.argv.slice(2);
 const smoke = args.includes('--smoke');
-const rounds = Number((args.find((a) => a.startsWith('--rounds=')) || '').slice(9)) || (smoke ? 1 : 7);
+const rounds = Number((args.find((a) => a.startsWith('--rounds=')) || '').slice(9)) || (smoke ? 1 : 15);
 const SIZES = smoke ? [10_000] : [100_000, 1_000_000];
 const N2 = smoke ? 10_000 : 100_000;
 const TOOL = join(resolve(ROOT, process.env.RTL_NATIVE_BUILD_DIR || 'build/native'), 'tools', 'rtl_native');
@@ -57,8 +61,8 @@ function scan(n) {
 }
 
 function native(op, file, params) {
-  const out = JSON.parse(execFileSync(TOOL, [op, file, '2', ...params.map(String), '--reps=3'], { encoding: 'utf8', maxBuffer: 1 << 30 }));
-  return out.seconds * 1e3;
+  const out = JSON.parse(execFileSync(TOOL, [op, file, '2', ...params.map(String), '--reps=5'], { encoding: 'utf8', maxBuffer: 1 << 30 }));
+  return { ms: out.seconds * 1e3, count: op === 'segment' ? out.offsets.length - 1 : out.count };
 }
 
 const rtl = await init();
@@ -67,26 +71,33 @@ console.log(`rtl-wasm ${rtl.version} benchmarks (${PKG}): ${rounds} interleaved 
 // ---- 1. wasm vs native
 const haveNative = existsSync(TOOL);
 console.log(`\n1. wasm vs native (library call; native ${haveNative ? TOOL : 'tool not built: column skipped'}) (${load()})`);
-console.log(`${'case'.padEnd(40)} ${'native'.padStart(9)} ${'wasm lib'.padStart(9)} ${'wasm/nat'.padStart(9)} ${'whole'.padStart(9)} ${'whole/nat'.padStart(9)} ${'min ratio'.padStart(9)}  (ms)`);
+console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)}  (ms; ratios: medians, then minima)`);
 const CASES = [
-  ['FTLS (sigma 0.03, delta 3)', semicircle, (p) => rtl.vectorize(p, { method: 'ftls', sigma: 0.03, delta: 3 }), 'vectorize', [0, 0, 0.03, 3, 0.09, 1, 10000]],
+  ['FTLS (sigma 0.03, delta 3)', semicircle, (p) => rtl.vectorize(p, { method: 'ftls', sigma: 0.03, delta: 3 }), 'vectorize', [0, 0, 0.03, 3, 0.09, 1, 10000, '--split-corners']],
   ['Douglas-Peucker (epsilon 0.09)', semicircle, (p) => rtl.vectorize(p, { method: 'dp', epsilon: 0.09 }), 'vectorize', [3, 0, 0.03, 3, 0.09, 1, 10000]],
   ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5]],
 ];
+const pct = (v, w = 8) => (Number.isFinite(v) ? `${(100 * v).toFixed(1)}%` : '-').padStart(w);
 for (const n of SIZES) {
   for (const [name, make, f, op, params] of CASES) {
     const xy = make(n), file = join(dir, `${op}-${n}.f64`);
     writeFileSync(file, xy);
-    f(xy);  // warm-up: tier-up, memory growth, the kept objects
-    const t = { nat: [], lib: [], whole: [] };
+    const first = f(xy);  // warm-up: tier-up, memory growth, the kept objects
+    const count = op === 'segment' ? first.clusters.length : first.count;
+    const t = { nat: [], lib: [], whole: [], out: [] };
     for (let r = 0; r < rounds; r++) {
-      if (haveNative) t.nat.push(native(op, file, params));
-      const a = performance.now(); f(xy); t.whole.push(performance.now() - a); t.lib.push(rtl.lastComputeMs);
+      if (haveNative) {
+        const nat = native(op, file, params);
+        if (nat.count !== count) throw new Error(`${name} ${n}: native kept ${nat.count}, wasm ${count}`);
+        t.nat.push(nat.ms);
+      }
+      const a = performance.now(); f(xy); const w = performance.now() - a;
+      t.whole.push(w); t.lib.push(rtl.lastComputeMs); t.out.push(w - rtl.lastComputeMs);
     }
-    const nat = haveNative ? median(t.nat) : NaN, lib = median(t.lib), whole = median(t.whole);
-    // min ratio: the fastest wasm call over the fastest native one, the least disturbed pair on a loaded machine
-    const minRatio = Math.min(...t.lib) / (haveNative ? Math.min(...t.nat) : NaN);
-    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(40)} ${fmt(nat)} ${fmt(lib)} ${fmt(lib / nat)} ${fmt(whole)} ${fmt(whole / nat)} ${fmt(minRatio)}`);
+    const nat = haveNative ? median(t.nat) : NaN, lib = median(t.lib), out = median(t.out);
+    // minima: the least disturbed call of each kind on a loaded machine
+    const minNat = haveNative ? Math.min(...t.nat) : NaN, minLib = Math.min(...t.lib), minOut = Math.min(...t.out);
+    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(36)} ${fmt(nat, 8)} ${fmt(lib, 8)} ${fmt(lib / nat, 8)} ${fmt(minLib / minNat, 8)} ${fmt(out, 8)} ${pct(out / lib)} ${pct(minOut / minLib)} ${fmt(median(t.whole), 8)}`);
   }
 }
 

