@@ -49,8 +49,10 @@
 // (R - remaining[0] = 3, 7, 9, 8, 4, 6, 9, 5) the bound for the chain is R and that round keeps 0.1-1.9 states per
 // point: the optimum's paths are few, the cost is the pass itself, which visits all F fitting ranges (78-95 per
 // point). Callgrind, the search on seeds 35, 117, 297, 115, 84: 0.60, 0.51, 0.72, 0.80, 0.91 x the instructions
-// before (an exact count, testing every candidate, was 0.99-1.28 x). Left: F itself; a bound that certifies the
-// bridges without visiting every fitting range (e.g. from a per-corner summary of the lines ending and starting there).
+// before (an exact count, testing every candidate, was 0.99-1.28 x). It costs more where no strict partition exists
+// and the forward search dies early (seed 213: at corner 301 of 875, 28.7M -> 89.8M instructions): the pass covers the
+// whole chain first. Left: F itself; a bound that certifies the bridges without visiting every fitting range (e.g.
+// from a per-corner summary of the lines ending and starting there), and a cheap infeasibility test before the pass.
 // Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
 // crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
 //
