@@ -173,3 +173,46 @@ TEST(DouglasPeuckerExact, ChordBelowTheResolvedRangeMeasuresFromItsStart)
     // A chord of 1e200 (1e-60 of the extent) is resolved: the line distance, 1e200, is within epsilon.
     EXPECT_EQ(keptBy(dp, std::vector<V>{V(0, 0, 0), V(1e200, 0, 1e260), V(0, 0, 1e200)}), (std::vector<size_t>{0, 2}));
 }
+
+// 2D float chains are copied and checked four points per vector step: a huge or non-finite coordinate at any
+// position (every lane, the scalar tail) must send the chain to the rescaled double path. A point at y = 1e25
+// overflows the float scan (the chord through it has |u|^2 = inf, so no point would beat eps^2 |u|^2 there),
+// while the double path keeps its neighbours; the reference is the same chain in double (tame there).
+TEST(DouglasPeuckerExact, HugeOrNonFiniteCoordinateAtEveryPositionOfTheCopyPass)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    int checked = 0;
+    for (size_t n = 4; n <= 14; ++n)
+        for (size_t q = 1; q + 1 < n; ++q)
+            for (float v : {1e25f, -1e25f, nan, inf})
+                for (int axis = 0; axis < 2; ++axis)
+                {
+                    std::vector<rtl::Vector2f> pf;
+                    std::vector<rtl::Vector2d> pd;
+                    for (size_t i = 0; i < n; ++i)
+                    {
+                        rtl::Vector2f p(static_cast<float>(i), 0.0f);
+                        if (i == q)
+                            p[axis] = v;
+                        pf.push_back(p);
+                        pd.emplace_back(p.x(), p.y());
+                    }
+                    rtl::VectorizerDouglasPeucker2f dpf(0.5f);
+                    rtl::VectorizerDouglasPeucker2d dpd(0.5);
+                    std::vector<rtl::LineSegment2f> sf;
+                    std::vector<rtl::LineSegment2d> sd;
+                    dpf(pf, sf);
+                    dpd(pd, sd);
+                    ASSERT_EQ(sf.size(), sd.size()) << "n " << n << " q " << q << " v " << v << " axis " << axis;
+                    for (size_t k = 0; k < sf.size(); ++k)
+                    {
+                        const bool same = (sf[k].end().x() == sd[k].end().x() || (std::isnan(sf[k].end().x()) && std::isnan(sd[k].end().x()))) &&
+                                          (sf[k].end().y() == sd[k].end().y() || (std::isnan(sf[k].end().y()) && std::isnan(sd[k].end().y())));
+                        EXPECT_TRUE(same) << "n " << n << " q " << q << " v " << v << " axis " << axis << " segment " << k;
+                    }
+                    if (axis == 1 && std::isfinite(v) && q >= 2)
+                        EXPECT_GE(sf.size(), 3u) << "n " << n << " q " << q;   // q - 1, q and the ends at least
+                    ++checked;
+                }
+    EXPECT_EQ(checked, 4 * 2 * 77);
+}

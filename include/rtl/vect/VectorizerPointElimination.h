@@ -120,7 +120,7 @@ namespace rtl
         //! Observer of the following calls (nullptr: none); it must outlive them.
         void setObserver(Observer *observer) { observer_ = observer; }
         //! Reserves the working buffers for inputs of up to `size` points.
-        void setMaxSize(size_t size) { keep.reserve(size); stack.reserve(size); keys.reserve(size); soa.reserve(dimensions * size); }
+        void setMaxSize(size_t size) { stack.reserve(size); keys.reserve(size); soa.reserve(dimensions * size); }
 
         //! Clears `output` and fills it with the simplified polyline (empty for fewer than 2 points).
         void operator()(const std::vector<VectorType> &input, std::vector<LineSegmentType> &output)
@@ -128,8 +128,6 @@ namespace rtl
             const size_t n = input.size();
             keys.clear();
             if (n < 2) { output.clear(); return; }
-            keep.assign(n, 0);
-            keep[0] = keep[n - 1] = 1;
             if constexpr (Observer::enabled)
                 if (observer_)
                     (*observer_)(DpStart{n, epsilon});
@@ -140,19 +138,49 @@ namespace rtl
             const Element lim = std::sqrt(std::sqrt(std::numeric_limits<Element>::max() / 256));
             Element max_abs = 0;
             int ok = 1;
-            // 2D: the first range's scan (chord 0 -> n - 1) is done in the pass that copies and checks the
-            // coordinates (same operations as farthestSoa, so the same pick); used only if the chain is tame.
-            [[maybe_unused]] size_t first_far = 0;
-            [[maybe_unused]] Element first_l2 = 0;
             if constexpr (dimensions == 2)
             {
                 soa.resize(2 * n);
                 Element *x = soa.data(), *y = x + n;
-                const Element ax = input[0][0], ay = input[0][1];
-                const Element ux = input[n - 1][0] - ax, uy = input[n - 1][1] - ay;
-                first_l2 = (input[n - 1] - input[0]).lengthSquared();
-                Element best_c = eps2 * first_l2;
-                for (size_t i = 0; i < n; ++i)
+                size_t i = 0;
+#if defined(__GNUC__)
+                // Float: four points per step on vector lanes (de-interleaved by shuffles), the same tests per
+                // coordinate. The maximum of the lane maxima is the scalar running maximum: max is associative on
+                // non-NaN values, |c| has no -0, and a NaN is skipped by "m > max ? m : max" in either order.
+                if constexpr (std::is_same_v<Element, float> && sizeof(VectorType) == 2 * sizeof(float))
+                {
+                    typedef float V __attribute__((vector_size(16)));
+                    typedef int M __attribute__((vector_size(16)));
+                    const float *in = &input[0][0];
+                    const V vlim = V{} + lim;
+                    V vmax = V{};
+                    M vok = M{} - 1;
+                    const M absmask = M{} + 0x7fffffff;
+                    for (; i + 4 <= n; i += 4)
+                    {
+                        V p0, p1;
+                        std::memcpy(&p0, in + 2 * i, sizeof(V));
+                        std::memcpy(&p1, in + 2 * i + 4, sizeof(V));
+#if defined(__clang__)
+                        const V vx = __builtin_shufflevector(p0, p1, 0, 2, 4, 6), vy = __builtin_shufflevector(p0, p1, 1, 3, 5, 7);
+#else
+                        const V vx = __builtin_shuffle(p0, p1, M{0, 2, 4, 6}), vy = __builtin_shuffle(p0, p1, M{1, 3, 5, 7});
+#endif
+                        std::memcpy(x + i, &vx, sizeof(V));
+                        std::memcpy(y + i, &vy, sizeof(V));
+                        const V mx = (V)((M)vx & absmask), my = (V)((M)vy & absmask);
+                        vok &= (mx <= vlim) & (my <= vlim);
+                        vmax = mx > vmax ? mx : vmax;
+                        vmax = my > vmax ? my : vmax;
+                    }
+                    for (int l = 0; l < 4; ++l)
+                    {
+                        ok &= static_cast<int>(vok[l] != 0);
+                        max_abs = vmax[l] > max_abs ? vmax[l] : max_abs;
+                    }
+                }
+#endif
+                for (; i < n; ++i)
                 {
                     const Element vx = input[i][0], vy = input[i][1];
                     x[i] = vx;
@@ -161,8 +189,6 @@ namespace rtl
                     ok &= static_cast<int>(mx <= lim) & static_cast<int>(my <= lim);
                     max_abs = mx > max_abs ? mx : max_abs;
                     max_abs = my > max_abs ? my : max_abs;
-                    const Element c = (vx - ax) * uy - (vy - ay) * ux, c2 = c * c;
-                    if (c2 > best_c && i + 1 < n && i > 0) { best_c = c2; first_far = i; }
                 }
             }
             else if constexpr (dimensions == 3)
@@ -197,34 +223,27 @@ namespace rtl
                             max_abs = std::abs(input[i][k]);
             }
             scale = vect_detail::unitScale(static_cast<double>(max_abs));
+            // Depth first, left range first: the ranges that are not split come in chain order, so their ends
+            // after point 0 are the kept points in order.
             stack.clear();
             stack.emplace_back(0, n - 1);
+            keys.push_back(0);
             while (!stack.empty())
             {
                 const auto [a, b] = stack.back();
                 stack.pop_back();
-                if (b - a < 2)
-                    continue;
-                size_t far;
-                if constexpr (dimensions == 2)
-                    far = a == 0 && b == n - 1 && tame && distance_ == DpDistance::Line && first_l2 > Element(0) &&
-                                  eps2 * first_l2 >= std::numeric_limits<Element>::min()
-                              ? first_far
-                              : pick(input, a, b);
-                else
-                    far = pick(input, a, b);
+                const size_t far = b - a < 2 ? 0 : pick(input, a, b);
                 if constexpr (Observer::enabled)
-                    if (observer_)
+                    if (observer_ && b - a >= 2)
                         reportRange(input, a, b, far);
                 if (far != 0)
                 {
-                    keep[far] = 1;
                     stack.emplace_back(far, b);
                     stack.emplace_back(a, far);
                 }
+                else
+                    keys.push_back(b);
             }
-            for (size_t i = 0; i < n; ++i)
-                if (keep[i]) keys.push_back(i);
             vect_detail::polyline(input, keys, output);
         }
 
@@ -466,22 +485,21 @@ namespace rtl
             if constexpr (dimensions == 2 && (std::is_same_v<Element, float> || std::is_same_v<Element, double>))
             {
                 typedef Element V __attribute__((vector_size(16)));
+                typedef long long W __attribute__((vector_size(16)));
                 constexpr size_t lanes = 16 / sizeof(Element);
                 for (; i + block <= b; i += block)
                 {
                     const V bc = V{} + best_c;
-                    V any = V{};
+                    W any = W{};
                     for (size_t q = 0; q < block; q += lanes)
                     {
                         V vx, vy;
                         std::memcpy(&vx, x + i + q, sizeof(V));
                         std::memcpy(&vy, y + i + q, sizeof(V));
                         const V c = (vx - ax) * uy - (vy - ay) * ux;
-                        any = (c * c > bc) ? V{} + Element(1) : any;
+                        any |= (W)(c * c > bc);
                     }
-                    bool beats = false;
-                    for (size_t l = 0; l < lanes; ++l)
-                        beats |= any[l] != Element(0);
+                    const bool beats = (any[0] | any[1]) != 0;
                     if (beats)
                         for (size_t k = 0; k < block; ++k)
                         {
@@ -523,7 +541,6 @@ namespace rtl
         std::vector<Element> soa;
         bool tame{false};
         double scale{1};
-        std::vector<char> keep;
         std::vector<std::pair<size_t, size_t>> stack;
         std::vector<size_t> keys;
     };
