@@ -17,6 +17,8 @@
 #include "rtl/seg/IA_Segmenter.h"
 #include "rtl/seg/SegTrace.h"
 
+#include "interleaved_scan.h"
+
 namespace
 {
     using V2d = rtl::VectorND<2, double>;
@@ -466,4 +468,40 @@ TEST(SegTrace, ReplayEqualsResultOnRealScans)
     EXPECT_GT(car_merges, 0u);
     EXPECT_GT(car_seam_merges, 0u);
     EXPECT_GT(ia_merges, 0u);
+}
+
+// A traced IA type always takes the slow path, with or without an observer (its fast paths are not compiled): without
+// one, and with one set and removed mid-stream, it closes the same clusters in the same order and keeps the same alive
+// lists as the untraced segmenter, over window changes, gaps, interleaved chains and flushes.
+TEST(IaTrace, TracedTypeWithoutObserverEqualsUntraced)
+{
+    const auto pts = segcheck::interleavedScan<V2f>(4000, 7, {0.02, 60, 3, 0.01, 0.02});
+    for (unsigned step = 1; step <= 10; ++step)
+    {
+        rtl::IA_Segmenter<V2f> plain(step, 0.05f, 0.5f, 0.02f);
+        rtl::IA_Segmenter<V2f, rtl::IaTraceLog> traced(step, 0.05f, 0.5f, 0.02f);
+        rtl::IaTraceLog log;
+        std::vector<std::vector<V2f>> a, b;
+        for (size_t i = 0; i < pts.size(); ++i)
+        {
+            if (i == 1000) traced.setObserver(&log);
+            if (i == 1500) traced.setObserver(nullptr);
+            if (i == 2500) { plain.setStepSize(step + 3); traced.setStepSize(step + 3); }
+            plain.addPoint(pts[i]);
+            traced.addPoint(pts[i]);
+            while (plain.closedClustersAvailable()) a.push_back(plain.grabCluster());
+            while (traced.closedClustersAvailable()) b.push_back(traced.grabCluster());
+            if (i % 997 == 0)
+            {
+                ASSERT_EQ(plain.aliveClusters(), traced.aliveClusters()) << "step " << step << " point " << i;
+            }
+        }
+        EXPECT_FALSE(log.events.empty());
+        plain.flush();
+        traced.flush();
+        while (plain.closedClustersAvailable()) a.push_back(plain.grabCluster());
+        while (traced.closedClustersAvailable()) b.push_back(traced.grabCluster());
+        EXPECT_GT(a.size(), 20u) << "step " << step;
+        EXPECT_EQ(a, b) << "step " << step;
+    }
 }

@@ -18,7 +18,7 @@
 //
 // Tracing (core/Trace.h): IA_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
 // (addPoint, the window moves of setStepSize and flush) as the events of seg/SegTrace.h (use rtl::IaTraceLog to
-// record them); a traced segmenter skips its fast path (same clusters). With the default rtl::NoTrace
+// record them); a traced type takes the slow path, with or without an observer (same clusters). With the default rtl::NoTrace
 // nothing is reported and the code is the untraced code.
 //
 // Bad input: step 0 is treated as 1; addPoint throws std::invalid_argument unless 0 <= lower_bound <= upper_bound
@@ -136,12 +136,12 @@ namespace rtl
                 oz += o - o;
             }
             const bool valid = pz == ElementType(0), origin_finite = oz == ElementType(0);
+            // a traced type always takes the slow path (observer or not): its fast paths are not compiled at all
             if constexpr (traced)
-                if (observer_)
-                {
-                    addPointSlow(pt, valid, origin_finite, rsq);
-                    return;
-                }
+            {
+                addPointSlow(pt, valid, origin_finite, rsq);
+                return;
+            }
             // hot path, kept small enough to inline: the window is all in one cluster and sits at the end of its alive
             // list (tail mode, see enterTail); a point within reach of the newest joins it, and no other comparison
             // can change anything
@@ -220,7 +220,7 @@ namespace rtl
                 const ElementType tsq = thr_(rsq);
                 const ElementType *p = pt.data().data();
                 bool resolved = false;
-                if (!traced || observer_ == nullptr) resolved = linkSameRecord(p, tsq, rec);
+                if constexpr (!traced) resolved = linkSameRecord(p, tsq, rec);
                 for (size_t w = 0; w < step_ && !resolved; ++w)
                 {
                     const size_t r = wrec_[w];
@@ -252,7 +252,7 @@ namespace rtl
                 // the common eviction inline: the point joins an alive list that stays alive and contiguous
                 const size_t r = wrec_[slot];
                 Record *R = r == none ? nullptr : &lists_.recs[r];
-                if (R != nullptr && (!traced || observer_ == nullptr) && R->has_alive && R->in_window > 1 && R->contiguous &&
+                if (R != nullptr && !traced && R->has_alive && R->in_window > 1 && R->contiguous &&
                     R->base + R->alive->second.size() == widx_[slot])
                 {
                     --R->in_window;
@@ -359,7 +359,7 @@ namespace rtl
         void enterTail(size_t rec)
         {
             if constexpr (traced)
-                if (observer_) return;
+                return;
             Record &R = lists_.recs[rec];
             if (!R.has_alive || R.in_window != step_ || count_ != step_) return;
             std::vector<VectorType> &v = R.alive->second;

@@ -306,7 +306,7 @@ namespace rtl
             size_t rest;   // with a budget: ranges this range and the rest of the chain need at least
         };
         std::vector<Out> outs;
-        std::vector<size_t> picks, limits, open_, tree, leaf_of, order, removed;
+        std::vector<size_t> picks, limits, open_, tree, leaf_of, removed;
         static constexpr size_t none_rank = std::numeric_limits<size_t>::max();
         std::vector<ComputeType> vals;
         Work work_;
@@ -314,7 +314,7 @@ namespace rtl
         struct Chord;
         struct Item;
         std::vector<Chord> in_chords, out_chords;
-        std::vector<Item> items, queries;
+        std::vector<Item> items, queries, by_key;
         std::vector<size_t> starts;
         std::vector<CornerReport> break_reports;
         static constexpr size_t unbounded = std::numeric_limits<size_t>::max();
@@ -743,6 +743,12 @@ namespace rtl
             ComputeType key, val;
             size_t index;
         };
+        //! Orders items by val or by key: one comparator type, so that both sorts share one std::sort (code size).
+        struct ItemLess
+        {
+            bool by_val;
+            bool operator()(const Item &p, const Item &q) const { return by_val ? p.val < q.val : p.key < q.key; }
+        };
 
         //! The chord that `line` cuts from the disc of radius delta about m; `eta` grows to the angular error bound.
         Chord chordOf(const Approximation &line, const VectorND<2, ComputeType> &m, ComputeType &eta) const
@@ -778,7 +784,7 @@ namespace rtl
         {
             if (items.empty() || queries.empty())
                 return;
-            std::sort(items.begin(), items.end(), [](const Item &p, const Item &q) { return p.val < q.val; });
+            std::sort(items.begin(), items.end(), ItemLess{true});
             vals.clear();
             const size_t ni = items.size();
             size_t size = 1;
@@ -790,16 +796,18 @@ namespace rtl
                 leaf_of[items[i].index] = i;
             }
             tree.assign(2 * size, none_rank);
-            order.clear();
-            for (size_t i = 0; i < ni; ++i) order.push_back(i);
-            std::sort(order.begin(), order.end(), [&](size_t p, size_t q) { return items[p].key < items[q].key; });
-            std::sort(queries.begin(), queries.end(), [](const Item &p, const Item &q) { return p.key < q.key; });
+            // the items by key, each with its rank in val order (its leaf); items of equal key enter the tree before
+            // the same query, so their order among themselves does not matter
+            by_key.clear();
+            for (size_t i = 0; i < ni; ++i) by_key.push_back(Item{items[i].key, items[i].val, i});
+            std::sort(by_key.begin(), by_key.end(), ItemLess{false});
+            std::sort(queries.begin(), queries.end(), ItemLess{false});
             size_t next = 0;
             for (const Item &qu : queries)
             {
-                while (next < ni && items[order[next]].key < qu.key + eta)
+                while (next < ni && by_key[next].key < qu.key + eta)
                 {
-                    set(size, order[next], items[order[next]].index);
+                    set(size, by_key[next].index, items[by_key[next].index].index);
                     ++next;
                 }
                 const Chord &o = out_chords[qu.index];
