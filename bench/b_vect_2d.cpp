@@ -9,26 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "bench_semicircle.h"
 #include "bench_util.h"
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 
 namespace
 {
-    std::vector<rtl::Vector2f> semicircle(size_t n, unsigned seed)
-    {
-        std::mt19937 gen(seed);
-        std::normal_distribution<double> nd(0.0, 0.01);
-        std::vector<rtl::Vector2f> pts;
-        pts.reserve(n);
-        for (size_t i = 0; i < n; ++i)
-        {
-            const double a = M_PI * static_cast<double>(i) / static_cast<double>(n - 1);
-            pts.emplace_back(static_cast<float>(8 * std::cos(a) + nd(gen)), static_cast<float>(8 * std::sin(a) + nd(gen)));
-        }
-        return pts;
-    }
-
+    using rtl::bench::semicircle;
     double floorPass(const std::vector<rtl::Vector2f> &pts)
     {
         double x = 0, y = 0, x2 = 0, y2 = 0, xy = 0;

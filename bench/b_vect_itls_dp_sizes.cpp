@@ -15,34 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "bench_semicircle.h"
 #include "bench_util.h"
 #include "rtl/Vectorization.h"
 
 namespace
 {
-    std::vector<rtl::Vector2f> semicircle(size_t n, unsigned seed)
-    {
-        std::mt19937 gen(seed);
-        std::normal_distribution<double> nd(0.0, 0.01);
-        std::vector<rtl::Vector2f> pts;
-        pts.reserve(n);
-        for (size_t i = 0; i < n; ++i)
-        {
-            const double a = M_PI * static_cast<double>(i) / static_cast<double>(n - 1);
-            pts.emplace_back(static_cast<float>(8 * std::cos(a) + nd(gen)), static_cast<float>(8 * std::sin(a) + nd(gen)));
-        }
-        return pts;
-    }
-
-    template<class Segments>
-    double checksum(const Segments &segs)
-    {
-        double s = 0;
-        for (const auto &g : segs)
-            s += static_cast<double>(g.beg().x()) + 2.0 * g.beg().y() + 3.0 * g.end().x() + 5.0 * g.end().y();
-        return s;
-    }
-
+    using rtl::bench::semicircle;
+    using rtl::bench::segmentChecksum;
     double cpuSeconds()
     {
         timespec ts{};
@@ -113,9 +93,9 @@ int main(int argc, char **argv)
             e = cpuSeconds(); t[3].push_back(e - s);
         }
         itls(pts);
-        const double c_itls = checksum(itls.lineSegments());
+        const double c_itls = segmentChecksum(itls.lineSegments());
         dp(pts, out);
-        const double c_dp = checksum(out);
+        const double c_dp = segmentChecksum(out);
         const std::string sz = std::to_string(n);
         rtl::bench::printHeader(("ITLS / DP, 2D semicircle r=8, noise 0.01, " + sz + " points, CPU-time medians").c_str());
         const double f5 = median(t[0]), fc = median(t[1]);

@@ -10,35 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "bench_semicircle.h"
 #include "bench_util.h"
 #include "rtl/Vectorization.h"
 
 namespace
 {
-    std::vector<rtl::Vector2f> semicircle(size_t n, unsigned seed)
-    {
-        std::mt19937 gen(seed);
-        std::normal_distribution<double> nd(0.0, 0.01);
-        std::vector<rtl::Vector2f> pts;
-        pts.reserve(n);
-        for (size_t i = 0; i < n; ++i)
-        {
-            const double a = M_PI * static_cast<double>(i) / static_cast<double>(n - 1);
-            pts.emplace_back(static_cast<float>(8 * std::cos(a) + nd(gen)), static_cast<float>(8 * std::sin(a) + nd(gen)));
-        }
-        return pts;
-    }
-
-    //! Sum of the segments' end coordinates: equal results give equal sums.
-    template<class Segments>
-    double checksum(const Segments &segs)
-    {
-        double s = 0;
-        for (const auto &g : segs)
-            s += static_cast<double>(g.beg().x()) + 2.0 * g.beg().y() + 3.0 * g.end().x() + 5.0 * g.end().y();
-        return s;
-    }
-
+    using rtl::bench::semicircle;
+    using rtl::bench::segmentChecksum;
     double floorPass(const std::vector<rtl::Vector2f> &pts)
     {
         double x = 0, y = 0, x2 = 0, y2 = 0, xy = 0;
@@ -74,11 +53,11 @@ int main(int argc, char **argv)
     const double t_floor = rtl::bench::medianSeconds([&] { sink += floorPass(pts); }, opt.repetitions);
     rtl::bench::doNotOptimize(sink);
     const double t_itls = rtl::bench::medianSeconds([&] { ok &= itls(pts); s_itls = itls.indices().size(); }, opt.repetitions);
-    c_itls = checksum(itls.lineSegments());
+    c_itls = segmentChecksum(itls.lineSegments());
     const double t_dp = rtl::bench::medianSeconds([&] { dp(pts, out); s_dp = out.size(); }, opt.repetitions);
-    c_dp = checksum(out);
+    c_dp = segmentChecksum(out);
     const double t_rw = rtl::bench::medianSeconds([&] { rw(pts, out); s_rw = out.size(); }, opt.repetitions);
-    c_rw = checksum(out);
+    c_rw = segmentChecksum(out);
 
     rtl::bench::printHeader(("untraced ITLS / DP / RW, 2D semicircle r=8, noise 0.01, " + std::to_string(n) + " points").c_str());
     rtl::bench::printRow("floor (x, y, x2, y2, xy pass)", n, t_floor, t_floor);

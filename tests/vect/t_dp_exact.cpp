@@ -211,7 +211,9 @@ TEST(DouglasPeuckerExact, HugeOrNonFiniteCoordinateAtEveryPositionOfTheCopyPass)
                         EXPECT_TRUE(same) << "n " << n << " q " << q << " v " << v << " axis " << axis << " segment " << k;
                     }
                     if (axis == 1 && std::isfinite(v) && q >= 2)
+                    {
                         EXPECT_GE(sf.size(), 3u) << "n " << n << " q " << q;   // q - 1, q and the ends at least
+                    }
                     ++checked;
                 }
     EXPECT_EQ(checked, 4 * 2 * 77);
