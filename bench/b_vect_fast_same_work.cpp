@@ -3,7 +3,8 @@
 // reused object divided by the median time of its floor, measured in interleaved rounds of the same run:
 //   2D floor: one pass accumulating x, y, x^2, y^2, xy in double (the 5 prefix-sum moments);
 //   3D floor: the 9 moments of a 3D point (semicircle in the xy plane, noise on all three axes).
-// AFTLS linear in n means its ratio stays flat from 1e5 to 1e7. --smoke: 1e3 points, one round.
+// AFTLS linear in n means its ratio stays flat from 1e5 to 1e7. --smoke: 1e3 points, one round. Also prints the
+// `time_ns` / `check` lines of bench/trace_overhead.sh (e.g. ROUNDS=7 bench/trace_overhead.sh bench/b_vect_fast_same_work.cpp c26034c).
 // Times are the thread's CPU time (CLOCK_THREAD_CPUTIME_ID): on the shared 2-core VM wall time also counts the
 // time the thread waits for a core (at load ~7 one wall-time run put AFTLS 2D at 5.5x the floor at 1M, the
 // CPU-time run right after at 1.45x).
@@ -13,6 +14,7 @@
 #include <random>
 #include <time.h>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "bench_util.h"
@@ -123,6 +125,14 @@ int main(int argc, char **argv)
         std::printf("%10zu %12.3f %12.3f %9.2fx %9.2fx %11.2fx %9.2fx %10zu\n", n, m2 / static_cast<double>(n) * 1e9,
                     m3 / static_cast<double>(n) * 1e9, median(t_ftls2) / m2, median(t_aftls2) / m2, median(t_ftls3) / m3,
                     median(t_aftls3) / m3, ftls2.indices().size());
+        // bench/trace_overhead.sh lines: the same source built against an older tree gives the speed-up at equal
+        // results (range counts of each vectorizer)
+        const std::pair<const char *, double> cases[] = {{"floor2d", m2}, {"floor3d", m3}, {"ftls2d", median(t_ftls2)},
+                                                         {"aftls2d", median(t_aftls2)}, {"ftls3d", median(t_ftls3)}, {"aftls3d", median(t_aftls3)}};
+        for (const auto &c : cases)
+            std::printf("time_ns %s_%zu %.0f\n", c.first, n, c.second * 1e9);
+        std::printf("check ftls2d_%zu %zu\ncheck aftls2d_%zu %zu\ncheck ftls3d_%zu %zu\ncheck aftls3d_%zu %zu\n", n, ftls2.indices().size(), n,
+                    aftls2.indices().size(), n, ftls3.indices().size(), n, aftls3.indices().size());
     }
     return 0;
 }
