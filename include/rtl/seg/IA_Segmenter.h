@@ -116,7 +116,7 @@ namespace rtl
         //! The observer that receives the steps from now on (nullptr: none); not owned.
         void setObserver(Observer *observer) { observer_ = observer; }
 
-        [[nodiscard]] size_t closedClustersAvailable() const { return closed_.size() - closed_head_; }
+        [[nodiscard]] size_t closedClustersAvailable() const { return closed_left_; }
         [[nodiscard]] size_t aliveClustersAvailable() const { return lists_.alive.size(); }
         [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const
         {
@@ -160,18 +160,14 @@ namespace rtl
         //! Removes and returns the oldest closed cluster; an empty vector when none is closed.
         std::vector<VectorType> grabCluster()
         {
-            if (closed_head_ == closed_.size()) return {};
-            std::vector<VectorType> c = std::move(closed_[closed_head_++]);
-            if (closed_head_ == closed_.size())
-            {
-                closed_.clear();
-                closed_head_ = 0;
-            }
-            else if (closed_head_ >= 64 && 2 * closed_head_ >= closed_.size())
+            if (closed_left_ == 0) return {};
+            const size_t head = closed_.size() - closed_left_--;
+            std::vector<VectorType> c = std::move(closed_[head]);
+            if (closed_left_ == 0) closed_.clear();
+            else if (head >= 63 && 2 * (head + 1) >= closed_.size())
             {
                 // a caller that never empties the queue: drop the handed-out front, amortised O(1) per cluster
-                closed_.erase(closed_.begin(), closed_.begin() + static_cast<std::ptrdiff_t>(closed_head_));
-                closed_head_ = 0;
+                closed_.erase(closed_.begin(), closed_.begin() + static_cast<std::ptrdiff_t>(head + 1));
             }
             return c;
         }
@@ -215,6 +211,7 @@ namespace rtl
             }
 
             size_t rec = none;
+            Record *Rn = nullptr;   // rec's record
             if (valid)
             {
                 const ElementType tsq = thr_(rsq);
@@ -242,24 +239,15 @@ namespace rtl
                     rec = newRecord();
                     if constexpr (traced) report(ia_trace::Open{stream_, lists_.recs[rec].id});
                 }
-                ++lists_.recs[rec].in_window;
+                Rn = &lists_.recs[rec];   // stable from here on: no record is added below
+                ++Rn->in_window;
             }
             size_t slot;
             if (count_ == step_)
             {
                 slot = head_;
                 head_ = head_ + 1 == step_ ? 0 : head_ + 1;
-                // the common eviction inline: the point joins an alive list that stays alive and contiguous
-                const size_t r = wrec_[slot];
-                Record *R = r == none ? nullptr : &lists_.recs[r];
-                if (R != nullptr && !traced && R->has_alive && R->in_window > 1 && R->contiguous &&
-                    R->base + R->alive->second.size() == widx_[slot])
-                {
-                    --R->in_window;
-                    R->alive->second.push_back(wpts_[slot]);
-                    clearSlot(slot);
-                }
-                else evict(slot);
+                if (!evictToAlive(slot)) evict(slot);
             }
             else
             {
@@ -270,7 +258,21 @@ namespace rtl
             putSlot(slot, pt, rec);
             widx_[slot] = stream_++;
             // every slot holds rec exactly when rec counts step_ window points (in_window counts them)
-            if (rec != none && lists_.recs[rec].in_window == step_) enterTail(rec);
+            if (Rn != nullptr && Rn->in_window == step_) enterTail(rec);
+        }
+
+        // The common eviction, inline: the slot's point joins an alive list that stays alive and contiguous. The slot
+        // is left as it is: the caller rewrites all of it (putSlot). False: evict() must do it.
+        bool evictToAlive(size_t slot)
+        {
+            if constexpr (traced) return false;
+            const size_t r = wrec_[slot];
+            if (r == none) return false;
+            Record &R = lists_.recs[r];
+            if (!R.has_alive || R.in_window < 2 || !R.contiguous || R.base + R.alive->second.size() != widx_[slot]) return false;
+            --R.in_window;
+            R.alive->second.push_back(wpts_[slot]);
+            return true;
         }
 
         // Most points link to window points of one cluster only, that of the newest window point, or to none. One
@@ -295,32 +297,34 @@ namespace rtl
                 const ElementType *c = wc_.data();
                 const Tag *tg = wtag_.data();
                 const V tv = V{} + tsq;
-                const M t0 = M{} + static_cast<Tag>(r0);
-                M any{}, other{};
+                // slot tags are 2 rec + 1 (slotTag), t0 is 2 r0: t ^ t0 has bit 0 set and other bits exactly when
+                // the slot's record is not r0, so one OR of the linked lanes' t ^ t0 tells both "any" and "other"
+                const M t0 = M{} + static_cast<Tag>(2 * r0);
+                M acc{};
                 for (size_t b = 0; b < P; b += Lanes::n)
                 {
-                    // squaredDistance's arithmetic, in its order, lane by lane
-                    V sq{};
-                    for (int k = 0; k < D; ++k)
+                    // squaredDistance's arithmetic, in its order, lane by lane (0 + d0^2 is d0^2)
+                    V q;
+                    std::memcpy(&q, c + b, sizeof q);
+                    V d = p[0] - q;
+                    V sq = d * d;
+                    for (int k = 1; k < D; ++k)
                     {
-                        V q;
                         std::memcpy(&q, c + static_cast<size_t>(k) * P + b, sizeof q);
-                        const V d = p[k] - q;
+                        d = p[k] - q;
                         sq += d * d;
                     }
                     M t;
                     std::memcpy(&t, tg + b, sizeof t);
                     const M l = (M)(sq <= tv);   // a same-size bitcast: the compare's lane type varies by platform
-                    any |= l;
-                    other |= l & (t ^ t0);   // nonzero where a linked slot has another record
+                    acc |= l & (t ^ t0);
                 }
-                Tag a = 0, o = 0;
-                for (size_t j = 0; j < Lanes::n; ++j)
-                {
-                    a |= any[j];
-                    o |= other[j];
-                }
-                if (o != 0) return false;
+                // the lanes' OR in 64-bit words (each lane's bit 0 stays bit 0 of its lane): two words, not n lanes
+                std::uint64_t w[sizeof(M) / 8], a = 0;
+                std::memcpy(w, &acc, sizeof w);
+                for (std::uint64_t x : w) a |= x;
+                constexpr std::uint64_t bit0 = sizeof(Tag) == 4 ? 0x0000000100000001u : 1u;
+                if ((a & ~bit0) != 0) return false;
                 rec = a != 0 ? r0 : none;
                 return true;
             }
@@ -334,7 +338,7 @@ namespace rtl
             if (pad_ == 0) return;
             for (int k = 0; k < D; ++k)
                 wc_[static_cast<size_t>(k) * pad_ + w] = rec == none ? std::numeric_limits<ElementType>::quiet_NaN() : pt.data()[k];
-            wtag_[w] = static_cast<Tag>(rec);
+            wtag_[w] = slotTag(rec);
         }
 
         void clearSlot(size_t w)
@@ -342,13 +346,13 @@ namespace rtl
             wrec_[w] = none;
             if (pad_ == 0) return;
             for (int k = 0; k < D; ++k) wc_[static_cast<size_t>(k) * pad_ + w] = std::numeric_limits<ElementType>::quiet_NaN();
-            wtag_[w] = static_cast<Tag>(none);
+            wtag_[w] = slotTag(none);
         }
 
         void setSlotRecord(size_t w, size_t rec)
         {
             wrec_[w] = rec;
-            if (pad_ != 0) wtag_[w] = static_cast<Tag>(rec);
+            if (pad_ != 0) wtag_[w] = slotTag(rec);
         }
 
         // Tail mode: while the window is full and all in one cluster that has an alive list, the window points are
@@ -575,6 +579,7 @@ namespace rtl
             {
                 // the cluster closes with this point and never had an alive list: skip the alive map
                 closed_.emplace_back(1, wpts_[slot]);
+                ++closed_left_;
                 if constexpr (traced) report(ia_trace::Close{R.id, 1});
                 R.in_window = 0;
                 free_.push_back(r);
@@ -588,6 +593,7 @@ namespace rtl
                 // hand out an exact-size copy and keep the alive list's capacity for the next cluster: growing
                 // vectors from scratch (and faulting in their pages) would cost more than the copy
                 closed_.emplace_back(v.begin(), v.end());
+                ++closed_left_;
                 if constexpr (traced) report(ia_trace::Close{R.id, v.size()});
                 dropAliveList(R.alive);
                 R.has_alive = false;
@@ -705,10 +711,10 @@ namespace rtl
             wrec_.swap(rec);
             widx_.swap(idx);
             // coordinate arrays for linkSameRecord: step rounded up to whole blocks of NaN-padded lanes; none at
-            // step 1 (its own path) or beyond 2^30 (record indices must fit a Tag: there are at most step + 1)
+            // step 1 (its own path) or beyond 2^30 (slotTag needs record indices < 2^31: there are at most step + 1)
             pad_ = lanes != 0 && step > 1 && step <= (size_t(1) << 30) ? (step + lanes - 1) / lanes * lanes : 0;
             wc_.assign(static_cast<size_t>(D) * pad_, std::numeric_limits<ElementType>::quiet_NaN());
-            wtag_.assign(pad_, static_cast<Tag>(none));
+            wtag_.assign(pad_, slotTag(none));
             for (size_t w = 0; w < count_ && pad_ != 0; ++w) putSlot(w, wpts_[w], wrec_[w]);
         }
 
@@ -728,6 +734,9 @@ namespace rtl
         typedef seg_detail::WindowLanes<ElementType> Lanes;
         typedef typename Lanes::Tag Tag;
         static constexpr size_t lanes = Lanes::n;
+        // linkSameRecord's tag of a slot's record: odd, distinct for distinct records (record indices < 2^31)
+        static Tag slotTag(size_t rec) { return static_cast<Tag>(2 * rec + 1); }
+
         size_t pad_ = 0;
         mutable std::vector<ElementType> wc_;
         mutable std::vector<Tag> wtag_;
@@ -735,8 +744,10 @@ namespace rtl
         mutable ClusterLists lists_;
         mutable size_t tail_start_ = 0, tail_stream_ = 0;        // tail mode: see enterTail
         std::vector<size_t> free_;
-        std::vector<std::vector<VectorType>> closed_;           // closing order; closed_head_ is the next to hand out
-        size_t closed_head_ = 0;
+        // closing order; the last closed_left_ are not handed out yet (a count, so that closedClustersAvailable(),
+        // called after every point, is one load)
+        std::vector<std::vector<VectorType>> closed_;
+        size_t closed_left_ = 0;
         // emptied alive-list nodes, capacity kept; spare storage only, so a copy starts without any
         struct NodePool
         {
