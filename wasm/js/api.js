@@ -154,10 +154,41 @@ function wrap(m) {
     }
   }
 
+  // pointBuffer()'s block (adapter.h viewBlock): its address and capacity in numbers; 0 when there is none.
+  let viewAt = 0, viewCap = 0;
+  function pointBuffer(n, dim) {
+    const fn = 'pointBuffer';
+    if (typeof n !== 'number') throw new TypeError(`${fn}: n must be a number, got ${describe(n)}`);
+    const d = dimOption({ dim }, fn);
+    const len = n * d;
+    if (!Number.isInteger(n) || n < 0) throw new RangeError(`${fn}: n must be an integer >= 0, got ${n}`);
+    const p = m.viewBlock(len);
+    if (!p) { viewAt = 0; throw new RangeError(`${fn}: ${n} points of dim ${d} exceed the limit or the wasm memory`); }
+    viewCap = p === viewAt ? Math.max(viewCap, len) : Math.max(len, 64);
+    viewAt = p;
+    return new Float64Array(m.HEAPF64.buffer, p, len);
+  }
+  // The address to read `a` in place from, if it is (a part of) the current pointBuffer() view, else 0 (it is
+  // copied). A view on wasm memory outside that block (stale, or made by hand) and a detached view are rejected:
+  // the one would read freed memory, the other reads as no points.
+  function inPlace(fn, a) {
+    if (a.buffer === m.HEAPF64.buffer) {
+      const at = a.byteOffset;
+      if (viewAt && at >= viewAt && at + a.byteLength <= viewAt + 8 * viewCap) return at;
+      throw new TypeError(`${fn}: points is a view on wasm memory outside the current pointBuffer() block`);
+    }
+    if (a.length === 0) {
+      try { new Uint8Array(a.buffer, 0, 0); } catch { throw new TypeError(`${fn}: points is a detached view (wasm memory grew: take a new pointBuffer())`); }
+    }
+    return 0;
+  }
+
   // Writes `len` numbers into the module's kept input buffer (wasm/src/adapter.h; fill(HEAPF64, index) writes them
   // from index on, straight into wasm memory) and returns check(f(ptr, len)). Inputs beyond the buffer's limit get
-  // a block of their own, freed after the call.
-  function withInputOf(fn, len, fill, f) {
+  // a block of their own, freed after the call. src: the input array, read in place if it is a pointBuffer() view.
+  function withInputOf(fn, len, fill, f, src) {
+    const at = src ? inPlace(fn, src) : 0;
+    if (at) return check(f(at, len), fn);
     let p = m.inputBuffer(len), own = 0;
     if (!p) {
       own = p = m._malloc(Math.max(8, 8 * len));
@@ -170,7 +201,7 @@ function wrap(m) {
       if (own) m._free(own);
     }
   }
-  const withInput = (fn, a, f) => withInputOf(fn, a.length, (heap, at) => heap.set(a, at), f);
+  const withInput = (fn, a, f) => withInputOf(fn, a.length, (heap, at) => heap.set(a, at), f, a);
 
   function fitLine(points, opts) {
     const fn = 'fitLine';
@@ -236,6 +267,7 @@ function wrap(m) {
     const segmentDistance = method === 'dp' && distance === 'segment';
     if (trace && segmentDistance) throw new RangeError(`${fn}: option trace is not available with distance 'segment'`);
     const xyz = toF64(points, fn, 'points');
+    const n = xyz.length / dim;  // before the call: growth during it detaches a pointBuffer() view
     const r = withInput(fn, xyz, (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
       sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace, segmentDistance));
     lastComputeMs = r.computeMs;
@@ -245,7 +277,6 @@ function wrap(m) {
     let failure = null;
     if (r.failure) {
       const f = corner(r.failure, 0);
-      const n = xyz.length / dim;
       f.message = f.boundary === 0
         ? `${fn}: no partition of the ${n} points into ranges within sigma ${sigma} exists`
         : `${fn}: no polyline within sigma ${sigma} meets delta ${f.delta} at chain index ${f.boundary}: the lines of the ` +
@@ -478,6 +509,7 @@ function wrap(m) {
   }
 
   const simplifier = makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; });
+  const release = () => { simplifier.release(); m.releaseBuffers(); m.viewBlock(-1); viewAt = 0; };
   const api = {
     version: VERSION,
     fitLine,
@@ -492,9 +524,11 @@ function wrap(m) {
     readOrganizedLidar,
     simplify: simplifier.simplify,
     // Frees the input buffer, vectorizers and segmenters kept between calls (they grow back on the next call).
-    releaseBuffers: () => { simplifier.release(); m.releaseBuffers(); },
+    // Also pointBuffer()'s block: its views must not be used afterwards.
+    releaseBuffers: release,
     // Malloc heap in use once the kept buffers are released: equal figures before and after calls mean no leak.
-    heapInUse: () => { simplifier.release(); m.releaseBuffers(); return m.heapInUse(); },
+    heapInUse: () => { release(); return m.heapInUse(); },
+    pointBuffer,
     memoryBytes: () => m.memoryBytes(),
     stackPointer: () => m.stackPointer(),
   };

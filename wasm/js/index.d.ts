@@ -601,6 +601,13 @@ export interface RTL {
    *  neither allocates nor zero-fills; inputs above 2^21 points release theirs after the call anyway); they grow
    *  back on the next call */
   releaseBuffers(): void;
+  /** zero-copy input: a Float64Array of n * dim numbers (dim 2 or 3, default 2) on a block of wasm memory the
+   *  module keeps. Fill it with interleaved coordinates and pass it (or a subarray of it) as the points of
+   *  vectorize, segment or simplify: they read it in place instead of copying it in. Calls never move the block;
+   *  a later pointBuffer() may (same or smaller size: same block), releaseBuffers() and heapInUse() free it, and
+   *  wasm memory growth detaches the view (length 0): check `view.length` and take a new one. A view on the module's
+   *  memory outside the current block, or a detached one, is rejected with a TypeError. */
+  pointBuffer(n: number, dim?: Dim): Float64Array;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
   /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0, not
    *  finite, or >= maxRange: the log's own no-return value unless given) are NaN points. RangeError starting

@@ -10,10 +10,10 @@
 function makeSimplify(m, withInputOf, setComputeMs) {
   const fn = 'simplify';
 
-  function kept(len, dim, fill, tolerance, highQuality) {
+  function kept(len, dim, fill, tolerance, highQuality, src) {
     let written = len;
     const r = withInputOf(fn, len, (heap, at) => { written = fill(heap, at) ?? len; },
-      (p) => m.simplify(p, written, dim, tolerance, highQuality));
+      (p) => m.simplify(p, written, dim, tolerance, highQuality), src);
     setComputeMs(r.computeMs);
     return r.kept;
   }
@@ -142,9 +142,12 @@ function makeSimplify(m, withInputOf, setComputeMs) {
       const dim = o.dim ?? 2;
       const xyz = toF64(points, fn, 'points');
       if (xyz.length % dim) throw new RangeError(`${fn}: points has ${xyz.length} numbers, not a multiple of dim ${dim} (interleaved coordinates expected)`);
-      const idx = kept(xyz.length, dim, (heap, at) => heap.set(xyz, at), t, hq);
+      const len = xyz.length, off = xyz.byteOffset;
+      const idx = kept(len, dim, (heap, at) => heap.set(xyz, at), t, hq, xyz);
+      // A pointBuffer() view detached by memory growth during the call: read its numbers through a new view.
+      const src = xyz.length === len ? xyz : new Float64Array(m.HEAPF64.buffer, off, len);
       const out = new Float64Array(dim * idx.length);
-      for (let k = 0; k < idx.length; k++) for (let c = 0; c < dim; c++) out[dim * k + c] = xyz[dim * idx[k] + c];
+      for (let k = 0; k < idx.length; k++) for (let c = 0; c < dim; c++) out[dim * k + c] = src[dim * idx[k] + c];
       return out;
     }
     if (!Array.isArray(points)) throw new TypeError(`${fn}: points must be an array of {x, y} objects or a typed array of interleaved coordinates, got ${describe(points)}`);

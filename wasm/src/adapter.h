@@ -3,7 +3,8 @@
 //    the wasm stack pointer moved): every binding runs inside guarded(), which turns an exception into a returned
 //    {error, kind} object that the JS layer rethrows as RangeError/TypeError/Error, prefixed with the JS function's
 //    name when the message does not start with it;
-//  * large arrays come in as (pointer, count) into the wasm heap, written by JS with HEAPF64.set;
+//  * large arrays come in as (pointer, count) into the wasm heap, written by JS with HEAPF64.set, or read in place
+//    from the block the caller filled through pointBuffer() (viewBlock);
 //  * results leave as JS typed arrays copied in C++, so JS never holds a view that memory growth could detach.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <emscripten/val.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <climits>
 #include <cmath>
 #include <cstddef>
@@ -104,6 +106,24 @@ inline std::uintptr_t inputBuffer(double count) {
   }
   return reinterpret_cast<std::uintptr_t>(b.data.get());
 }
+// The block behind pointBuffer() (api.js): JS fills it through a Float64Array view and passes that view back, and
+// the call then reads it in place (no copy). Not a kept.h type: only pointBuffer() (growing it) and releaseBuffers()
+// (count < 0) free it, so a view stays valid across every other call. Same limit as the input buffer (0 above it).
+inline std::uintptr_t viewBlock(double count) {
+  static InputBuffer b;
+  if (count < 0 || count > 3.0 * static_cast<double>(rtl_ops::kKeptPoints)) {
+    b.data.reset();
+    b.capacity = 0;
+    return 0;
+  }
+  const auto n = std::max<std::size_t>(static_cast<std::size_t>(count), 64);
+  if (n > b.capacity) {
+    b.data.reset();
+    b.data.reset(new (std::nothrow) double[n]);
+    b.capacity = b.data ? n : 0;
+  }
+  return reinterpret_cast<std::uintptr_t>(b.data.get());
+}
 inline const char* bytes(std::uintptr_t p) { return reinterpret_cast<const char*>(p); }
 
 // Copies n numbers into a new JS typed array (the view is only used for the copy, inside this call).
@@ -142,39 +162,43 @@ constexpr double kMaxCoordinate = 1e18;
 // Checks an interleaved point array: a whole number of points, at least `minPoints`, all finite (unless gaps are
 // allowed, where a point with any NaN coordinate is a gap; +-Infinity is always rejected) and, if given, none larger
 // than maxMagnitude in absolute value.
-inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::size_t dim, std::size_t minPoints,
-                        bool allowGaps, double maxMagnitude = HUGE_VAL) {
+// values = false: the first two only (vectorize and segment check the numbers while copying them: badInput in
+// vect_ops.h / seg_ops.h, then this again for the message). Not inlined: one copy for the six bindings.
+[[gnu::noinline]] inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::size_t dim,
+                                          std::size_t minPoints, bool allowGaps, double maxMagnitude = HUGE_VAL,
+                                          bool values = true) {
   if (len % dim != 0)
     throw std::invalid_argument(std::string(fn) + ": points has " + str(len) + " numbers, not a multiple of dim " +
                                 str(dim) + " (interleaved coordinates expected)");
   const std::size_t n = len / dim;
   if (n < minPoints)
     throw std::invalid_argument(std::string(fn) + ": needs at least " + str(minPoints) + " points, got " + str(n));
-  // Fast pass, branch-free per block of 256 numbers, two per vector (simd128): a number passes if |v| <= limit or,
-  // with gaps allowed, if it is NaN (neither <= nor > the limit); +-Infinity never passes. Only an input that fails
-  // it is scanned again for the message. One loop for the three cases: 227 B less gzipped than three scalar ones,
-  // same speed (memory-bound: ~0.09 ms for 100k 2D points, as before).
+  if (!values) return;
+  // Fast pass, branch-free per block of 256 numbers, two per vector (simd128), one comparison per number and case:
+  // `bad` collects |v| > limit (+-Infinity included: limit is finite) and, without gaps, NaN (v != v). Only an input
+  // that fails it is scanned again for the message. Was three masks and four comparisons per vector: 100k 2D points
+  // ~0.11 -> ~0.08 ms (Node 20, medians of 301 calls; memory-bound from there).
   using F2 = double __attribute__((vector_size(16)));
   using I2 = long long __attribute__((vector_size(16)));
-  const F2 limit = {maxMagnitude, maxMagnitude};
-  const I2 gaps = allowGaps ? I2{-1, -1} : I2{0, 0};
+  const double lim = maxMagnitude < DBL_MAX ? maxMagnitude : DBL_MAX;
+  const F2 limit = {lim, lim};
+  const I2 nanBad = allowGaps ? I2{0, 0} : I2{-1, -1};
   const I2 absMask = {LLONG_MAX, LLONG_MAX};
-  const F2 inf = {HUGE_VAL, HUGE_VAL};
   bool ok = true;
   std::size_t i = 0;
   for (; ok && i + 256 <= len; i += 256) {
-    I2 all = {-1, -1};
+    I2 bad = {0, 0};
     for (std::size_t k = i; k < i + 256; k += 2) {
       F2 v;
       std::memcpy(&v, xy + k, sizeof v);
       const F2 a = reinterpret_cast<F2>(reinterpret_cast<I2>(v) & absMask);
-      all &= ((a <= limit) | (gaps & ~(a > limit))) & (a != inf);
+      bad |= (a > limit) | (nanBad & (v != v));
     }
-    ok = (all[0] & all[1]) != 0;
+    ok = (bad[0] | bad[1]) == 0;
   }
   for (; ok && i < len; ++i) {
     const double a = std::fabs(xy[i]);
-    ok = (a <= maxMagnitude || (allowGaps && !(a > maxMagnitude))) && a != HUGE_VAL;
+    ok = !(a > lim) && (allowGaps || a == a);
   }
   if (ok) return;
   for (std::size_t i = 0; i < len; ++i) {

@@ -2,6 +2,8 @@
 // (tests/tools/rtl_native.cpp), so that both run exactly the same C++ on the same numbers. No emscripten here.
 #pragma once
 
+#include <cfloat>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -39,6 +41,9 @@ struct SegmentOutput {
   std::vector<std::uint32_t> offsets;      // cluster k = indices[offsets[k] .. offsets[k+1])
   std::vector<std::uint32_t> runs;         // contiguous half-open index runs [b, e) of all clusters, flattened
   std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
+  // A coordinate is +-Infinity (NaN is a gap), checked while copying the input (one pass over it, not a check pass
+  // and a copy pass); the rest of the output is then empty.
+  bool badInput = false;
 };
 
 // The untraced segmenter and its point vector, kept between calls (one per thread; the wasm module has one): the
@@ -58,10 +63,13 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   pts.clear();  // keeps the capacity; emplace_back skips VectorND's zeroing default constructor
   pts.reserve(n);
   using Eig = typename rtl::VectorND<D, double>::EigenType;
+  SegmentOutput out;
   for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < D; ++k) out.badInput |= std::fabs(xyz[D * i + k]) > DBL_MAX;
     pts.emplace_back(rtl::VectorND<D, double>(Eig(Eigen::Map<const Eig>(xyz + D * i))));
     pts.back().index = static_cast<std::uint32_t>(i);
   }
+  if (out.badInput) return out;
   IndexedPoint<D> origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
   // Traced: a fresh segmenter of the traced type (a one-off); untraced: the kept one, given this call's settings.
@@ -77,7 +85,6 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   seg.setMaxSize(n);
   seg.loadData(pts, origin);
 
-  SegmentOutput out;
   out.labels.assign(n, -1);
   out.indices.reserve(n);
   out.offsets.push_back(0);

@@ -10,7 +10,7 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
   return guarded([&] {
     if (dim != 2 && dim != 3) throw std::invalid_argument("segment: dim must be 2 or 3, got " + std::to_string(dim));
     const double* xyz = doubles(ptr);
-    checkPoints("segment", xyz, len, static_cast<std::size_t>(dim), 0, true);
+    checkPoints("segment", xyz, len, static_cast<std::size_t>(dim), 0, true, HUGE_VAL, false);  // the numbers: while copying (seg_ops.h)
     rtl_ops::SegmentParams p;
     p.step = static_cast<std::size_t>(step);
     p.lowerBound = lower;
@@ -22,6 +22,7 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
     rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
     const double t0 = nowMs();
     const auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p, events) : rtl_ops::segment<3>(xyz, len / 3, p, events);
+    if (out.badInput) checkPoints("segment", xyz, len, static_cast<std::size_t>(dim), 0, true);  // throws the message
     const double computeMs = nowMs() - t0;
     val r = val::object();
     r.set("labels", i32(out.labels));

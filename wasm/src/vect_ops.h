@@ -30,6 +30,9 @@ struct VectorizeParams {
   // DP: distance to the chord segment (simplify-js's, rtl/vect/SimplifyCompatible.h) instead of RTL's chord line.
   bool segmentDistance = false;
   bool split = false;  // FTLS/AFTLS 2D: break the polyline at corners that cannot be met within delta
+  // Coordinates must be within +-maxMagnitude (NaN never passes), checked while copying them (one pass over the
+  // input, not a check pass and a copy pass); otherwise the output has badInput set and nothing else.
+  double maxMagnitude = HUGE_VAL;
 };
 
 // FTLS/AFTLS 2D: a corner that cannot be met within delta (rtl::CornerReport).
@@ -51,6 +54,7 @@ struct VectorizeOutput {
   std::vector<Corner> breaks;                 // split mode: where the polyline broke
   bool failed = false;                        // strict mode: `failure` is the corner that cannot be met
   Corner failure;
+  bool badInput = false;                      // a coordinate beyond VectorizeParams::maxMagnitude or NaN
 };
 
 namespace detail {
@@ -59,14 +63,17 @@ template <int D>
 using Vec = rtl::VectorND<D, double>;
 
 // The input as the vectorizers' point vector, in one pass into the kept vector (clear + emplace_back keeps its
-// capacity and skips VectorND's zeroing default constructor).
+// capacity and skips VectorND's zeroing default constructor) that also checks each coordinate against `limit`
+// (`bad`: one is NaN or beyond it).
 template <int D>
-const std::vector<Vec<D>>& points(const double* xyz, std::size_t n) {
+const std::vector<Vec<D>>& points(const double* xyz, std::size_t n, double limit, bool& bad) {
   auto& v = kept<std::vector<Vec<D>>>();
   v.clear();
   v.reserve(n);
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < D; ++k) bad |= !(std::fabs(xyz[D * i + k]) <= limit);
     v.emplace_back(typename Vec<D>::EigenType(Eigen::Map<const typename Vec<D>::EigenType>(xyz + D * i)));
+  }
   return v;
 }
 
@@ -182,8 +189,9 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
   using namespace detail;
   if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
   const ReleaseKeptAbove release{n};
-  const auto& pts = points<D>(xyz, n);
   VectorizeOutput o;
+  const auto& pts = points<D>(xyz, n, p.maxMagnitude, o.badInput);
+  if (o.badInput) return o;
   o.stride = p.plane ? 4 : (D == 2 ? 3 : 6);
   auto finishLines = [&](bool ok, const auto& vz, const auto& segs) {
     o.ok = ok;
