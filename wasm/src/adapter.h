@@ -94,35 +94,33 @@ inline const double* doubles(std::uintptr_t p) { return reinterpret_cast<const d
 struct InputBuffer {
   std::unique_ptr<double[]> data;
   std::size_t capacity = 0;
+  // At least max(count, 64) numbers (count within the limit above); the old block is freed before the new one is
+  // taken, so growing never needs both at once.
+  std::uintptr_t reserve(double count) {
+    const auto n = std::max<std::size_t>(static_cast<std::size_t>(count), 64);
+    if (n > capacity) {
+      data.reset();
+      data.reset(new (std::nothrow) double[n]);
+      capacity = data ? n : 0;
+    }
+    return reinterpret_cast<std::uintptr_t>(data.get());
+  }
 };
 inline std::uintptr_t inputBuffer(double count) {
   if (!(count >= 0) || count > 3.0 * static_cast<double>(rtl_ops::kKeptPoints)) return 0;
-  auto& b = rtl_ops::kept<InputBuffer>();
-  const auto n = std::max<std::size_t>(static_cast<std::size_t>(count), 64);
-  if (n > b.capacity) {
-    b.data.reset();
-    b.data.reset(new (std::nothrow) double[n]);
-    b.capacity = b.data ? n : 0;
-  }
-  return reinterpret_cast<std::uintptr_t>(b.data.get());
+  return rtl_ops::kept<InputBuffer>().reserve(count);
 }
 // The block behind pointBuffer() (api.js): JS fills it through a Float64Array view and passes that view back, and
 // the call then reads it in place (no copy). Not a kept.h type: only pointBuffer() (growing it) and releaseBuffers()
 // (count < 0) free it, so a view stays valid across every other call. Same limit as the input buffer (0 above it).
 inline std::uintptr_t viewBlock(double count) {
   static InputBuffer b;
-  if (count < 0 || count > 3.0 * static_cast<double>(rtl_ops::kKeptPoints)) {
+  if (!(count >= 0) || count > 3.0 * static_cast<double>(rtl_ops::kKeptPoints)) {
     b.data.reset();
     b.capacity = 0;
     return 0;
   }
-  const auto n = std::max<std::size_t>(static_cast<std::size_t>(count), 64);
-  if (n > b.capacity) {
-    b.data.reset();
-    b.data.reset(new (std::nothrow) double[n]);
-    b.capacity = b.data ? n : 0;
-  }
-  return reinterpret_cast<std::uintptr_t>(b.data.get());
+  return b.reserve(count);
 }
 inline const char* bytes(std::uintptr_t p) { return reinterpret_cast<const char*>(p); }
 
