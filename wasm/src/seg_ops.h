@@ -14,6 +14,7 @@
 #include <rtl/seg/CAR_Segmenter.h>
 #include <rtl/seg/SegTrace.h>
 
+#include "input_check.h"
 #include "kept.h"
 #include "trace_ops.h"
 
@@ -41,8 +42,8 @@ struct SegmentOutput {
   std::vector<std::uint32_t> offsets;      // cluster k = indices[offsets[k] .. offsets[k+1])
   std::vector<std::uint32_t> runs;         // contiguous half-open index runs [b, e) of all clusters, flattened
   std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
-  // A coordinate is +-Infinity (NaN is a gap), checked while copying the input (one pass over it, not a check pass
-  // and a copy pass); the rest of the output is then empty.
+  // A coordinate is +-Infinity (NaN is a gap), checked before the copy into the segmenter's point vector
+  // (input_check.h); the rest of the output is then empty.
   bool badInput = false;
 };
 
@@ -64,12 +65,12 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   pts.reserve(n);
   using Eig = typename rtl::VectorND<D, double>::EigenType;
   SegmentOutput out;
+  out.badInput = anyBeyond(xyz, D * n, DBL_MAX, false);  // +-Infinity; NaN is a gap
+  if (out.badInput) return out;
   for (std::size_t i = 0; i < n; ++i) {
-    for (int k = 0; k < D; ++k) out.badInput |= std::fabs(xyz[D * i + k]) > DBL_MAX;
     pts.emplace_back(rtl::VectorND<D, double>(Eig(Eigen::Map<const Eig>(xyz + D * i))));
     pts.back().index = static_cast<std::uint32_t>(i);
   }
-  if (out.badInput) return out;
   IndexedPoint<D> origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
   // Traced: a fresh segmenter of the traced type (a one-off); untraced: the kept one, given this call's settings.
