@@ -20,16 +20,6 @@
 
 namespace rtl_ops {
 
-// A point that remembers its index in the scan. CAR_Segmenter copies points into its clusters; carrying the index
-// along gives per-point labels without searching for the copies afterwards.
-template <int D>
-struct IndexedPoint : rtl::VectorND<D, double> {
-  using Base = rtl::VectorND<D, double>;
-  IndexedPoint() = default;
-  IndexedPoint(const Base& b) : Base(b) {}  // NOLINT: implicit, so that VectorType::zeros() converts
-  std::uint32_t index = 0;
-};
-
 struct SegmentParams {
   std::size_t step = 3;
   double lowerBound = 0.1, upperBound = 0.5;
@@ -49,10 +39,12 @@ struct SegmentOutput {
 
 // The untraced segmenter and its point vector, kept between calls (one per thread; the wasm module has one): the
 // segmenter's work buffers and the points grow to the largest scan once instead of being allocated every call.
+// Clusters are read as index ranges (CAR_Segmenter::grabClusterRanges), so the points need not carry their index.
 template <int D>
 struct SegmentWorkspace {
-  std::vector<IndexedPoint<D>> pts;
-  rtl::CAR_Segmenter<IndexedPoint<D>> seg;
+  std::vector<rtl::VectorND<D, double>> pts;
+  std::vector<std::size_t> ranges;
+  rtl::CAR_Segmenter<rtl::VectorND<D, double>> seg;
 };
 
 template <int D, class Observer>
@@ -61,21 +53,19 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   const ReleaseKeptAbove release{n};
   auto& work = kept<SegmentWorkspace<D>>();
   auto& pts = work.pts;
-  pts.clear();  // keeps the capacity; emplace_back skips VectorND's zeroing default constructor
-  pts.reserve(n);
-  using Eig = typename rtl::VectorND<D, double>::EigenType;
+  using Point = rtl::VectorND<D, double>;
+  using Eig = typename Point::EigenType;
   SegmentOutput out;
   out.badInput = anyBeyond(xyz, D * n, DBL_MAX, false);  // +-Infinity; NaN is a gap
   if (out.badInput) return out;
-  for (std::size_t i = 0; i < n; ++i) {
-    pts.emplace_back(rtl::VectorND<D, double>(Eig(Eigen::Map<const Eig>(xyz + D * i))));
-    pts.back().index = static_cast<std::uint32_t>(i);
-  }
-  IndexedPoint<D> origin;
+  pts.resize(n);  // zero-fills only beyond the last call's size; every point is assigned below
+  Point* dst = pts.data();
+  for (std::size_t i = 0; i < n; ++i) dst[i] = Point(Eig(Eigen::Map<const Eig>(xyz + D * i)));
+  Point origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
   // Traced: a fresh segmenter of the traced type (a one-off); untraced: the kept one, given this call's settings.
-  rtl::CAR_Segmenter<IndexedPoint<D>, Observer> fresh;
-  auto& seg = [&]() -> rtl::CAR_Segmenter<IndexedPoint<D>, Observer>& {
+  rtl::CAR_Segmenter<Point, Observer> fresh;
+  auto& seg = [&]() -> rtl::CAR_Segmenter<Point, Observer>& {
     if constexpr (Observer::enabled) return fresh;
     else return work.seg;
   }();
@@ -87,22 +77,28 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   seg.loadData(pts, origin);
 
   out.labels.assign(n, -1);
-  out.indices.reserve(n);
+  out.indices.resize(n);  // at most n points in clusters; trimmed below
+  std::uint32_t* idx = out.indices.data();
+  std::size_t filled = 0;
   out.offsets.push_back(0);
   out.runOffsets.push_back(0);
-  while (seg.clustersAvailable() > 0) {
-    const auto c = seg.grabCluster();
+  auto& ranges = work.ranges;
+  for (;;) {
+    ranges.clear();
+    if (seg.grabClusterRanges(ranges) == 0) break;
     const auto label = static_cast<std::int32_t>(out.offsets.size() - 1);
-    for (std::size_t k = 0; k < c.size(); ++k) {
-      const std::uint32_t i = c[k].index;
-      out.labels[i] = label;
-      out.indices.push_back(i);
-      if (k > 0 && i == out.runs.back()) ++out.runs.back();
-      else out.runs.insert(out.runs.end(), {i, i + 1});
+    for (std::size_t r = 0; r < ranges.size(); r += 2) {
+      const auto b = static_cast<std::uint32_t>(ranges[r]), e = static_cast<std::uint32_t>(ranges[r + 1]);
+      std::fill(out.labels.begin() + b, out.labels.begin() + e, label);
+      for (std::uint32_t i = b; i < e; ++i) idx[filled++] = i;
+      // adjacent ranges of one cluster form one run
+      if (r > 0 && b == out.runs.back()) out.runs.back() = e;
+      else out.runs.insert(out.runs.end(), {b, e});
     }
-    out.offsets.push_back(static_cast<std::uint32_t>(out.indices.size()));
+    out.offsets.push_back(static_cast<std::uint32_t>(filled));
     out.runOffsets.push_back(static_cast<std::uint32_t>(out.runs.size()));
   }
+  out.indices.resize(filled);
   return out;
 }
 

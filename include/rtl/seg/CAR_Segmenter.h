@@ -138,6 +138,27 @@ namespace rtl
             return c;
         }
 
+        //! Removes the next cluster as grabCluster() does, but gives its points as scan indices instead of copies:
+        //! appends the half-open index ranges [begin, end) of its points to `ranges` (two numbers a range, in
+        //! grabCluster()'s order, so a cluster that wraps the seam starts with its end-of-scan range) and returns
+        //! the cluster's number of points; 0, appending nothing, when no cluster is left. An addition to RTL's API
+        //! for callers that want labels or indices rather than points (no per-cluster allocation or point copy).
+        size_t grabClusterRanges(std::vector<size_t> &ranges)
+        {
+            if (next_ >= out_.size()) return 0;
+            const Cluster &cl = out_[next_++];
+            const size_t points = cl.points;
+            for (size_t k = cl.piece_begin; k < cl.piece_end; ++k)
+                ranges.insert(ranges.end(), {pieces_[k].begin, pieces_[k].end});
+            if (next_ == out_.size())
+            {
+                out_.clear();
+                pieces_.clear();
+                next_ = 0;
+            }
+            return points;
+        }
+
     private:
         static constexpr int D = VectorType::dimensionality();
         static constexpr size_t none = std::numeric_limits<size_t>::max();
