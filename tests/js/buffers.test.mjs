@@ -80,3 +80,11 @@ test('a failing call, releaseBuffers() and an input above the kept limit leave t
   assert.ok(h.count > 10 && h.rms.every((r) => r <= 0.01));
   assert.deepEqual([dp(used, small2), seg(used, ring(3000))], expected, 'after an input above the kept limit');
 });
+
+test('results are copies: later calls (which reuse the module\'s result block) do not change an earlier result', () => {
+  const results = calls.map(([name, f, , big]) => [name, f(used, big)]);
+  const snapshots = results.map(([, r]) => structuredClone(r));
+  for (const [, f, small] of calls) f(used, small);
+  for (const [, f, , big] of [...calls].reverse()) f(used, big);
+  results.forEach(([name, r], k) => assert.deepEqual(r, snapshots[k], `${name}: changed by later calls`));
+});

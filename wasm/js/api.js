@@ -203,6 +203,20 @@ function wrap(m) {
   }
   const withInput = (fn, a, f) => withInputOf(fn, a.length, (heap, at) => heap.set(a, at), f, a);
 
+  // The results of a binding that returns a ResultBlock (wasm/src/adapter.h: one number, the block's address; when
+  // traced, {out: address, trace}): {scalars, arrays, trace}, each array copied out of wasm memory as types[i].
+  // Read right after the call: the next call reuses the block.
+  function takeResults(r, types) {
+    const traced = typeof r === 'object';
+    const H = m.HEAPF64, buf = H.buffer;
+    let k = (traced ? r.out : r) / 8;
+    const S = H[k++], scalars = H.slice(k, k + S);
+    k += S;
+    const A = H[k++], arrays = new Array(A);
+    for (let i = 0; i < A; i++, k += 2) arrays[i] = new types[i](buf, H[k], H[k + 1]).slice();
+    return { scalars, arrays, trace: traced ? r.trace : undefined };
+  }
+
   function fitLine(points, opts) {
     const fn = 'fitLine';
     const o = options(opts, fn, ['dim']);
@@ -210,6 +224,11 @@ function wrap(m) {
     const xy = toF64(points, fn, 'points');
     return withHeap(fn, [xy], (p, n) => m.fitLine(p, n, dim));
   }
+
+  // The array types of the ResultBlocks of m.vectorize and m.segment, in the order of wasm/src/vectorize.cpp and
+  // wasm/src/segment.cpp.
+  const VECTORIZE_ARRAYS = [Float64Array, Float64Array, Uint32Array, Uint32Array, Float64Array, Float64Array, Uint32Array, Float64Array];
+  const SEGMENT_ARRAYS = [Int32Array, Uint32Array, Uint32Array, Uint32Array, Uint32Array];
 
   function segment(points, opts) {
     const fn = 'segment';
@@ -221,14 +240,15 @@ function wrap(m) {
     const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
-    const r = withInput(fn, xyz, (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1], origin[2], trace));
-    lastComputeMs = r.computeMs;
+    const res = takeResults(withInput(fn, xyz, (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1],
+      origin[2], trace)), SEGMENT_ARRAYS);
+    lastComputeMs = res.scalars[0];
+    const [labels, indices, offsets, runs, runOffsets] = res.arrays;
     const clusters = [];
-    for (let k = 0; k + 1 < r.offsets.length; k++) {
-      const indices = r.indices.subarray(r.offsets[k], r.offsets[k + 1]);
-      clusters.push({ indices, ranges: r.runs.subarray(r.runOffsets[k], r.runOffsets[k + 1]) });
+    for (let k = 0; k + 1 < offsets.length; k++) {
+      clusters.push({ indices: indices.subarray(offsets[k], offsets[k + 1]), ranges: runs.subarray(runOffsets[k], runOffsets[k + 1]) });
     }
-    return trace ? { labels: r.labels, clusters, trace: traceEvents(r.trace) } : { labels: r.labels, clusters };
+    return trace ? { labels, clusters, trace: traceEvents(res.trace) } : { labels, clusters };
   }
 
   const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
@@ -268,15 +288,18 @@ function wrap(m) {
     if (trace && segmentDistance) throw new RangeError(`${fn}: option trace is not available with distance 'segment'`);
     const xyz = toF64(points, fn, 'points');
     const n = xyz.length / dim;  // before the call: growth during it detaches a pointBuffer() view
-    const r = withInput(fn, xyz, (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method), primitive === 'plane',
-      sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace, segmentDistance));
-    lastComputeMs = r.computeMs;
+    const res = takeResults(withInput(fn, xyz, (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method),
+      primitive === 'plane', sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace, segmentDistance)),
+    VECTORIZE_ARRAYS);
+    const [ok, count, stride, computeMs, failed, ...failureTriple] = res.scalars;
+    const [segments, polygonPoints, polygonOffsets, indices, params, rms, polylineOffsets, breakTriples] = res.arrays;
+    lastComputeMs = computeMs;
     const corner = (b, k) => ({ boundary: b[k], crossingDistance: b[k + 1], delta: b[k + 2] });
     const breaks = [];
-    for (let k = 0; k < r.breaks.length; k += 3) breaks.push(corner(r.breaks, k));
+    for (let k = 0; k < breakTriples.length; k += 3) breaks.push(corner(breakTriples, k));
     let failure = null;
-    if (r.failure) {
-      const f = corner(r.failure, 0);
+    if (failed) {
+      const f = corner(failureTriple, 0);
       f.message = f.boundary === 0
         ? `${fn}: no partition of the ${n} points into ranges within sigma ${sigma} exists`
         : `${fn}: no polyline within sigma ${sigma} meets delta ${f.delta} at chain index ${f.boundary}: the lines of the ` +
@@ -286,12 +309,11 @@ function wrap(m) {
       failure = f;
     }
     const polygons = [];
-    for (let k = 0; k + 1 < r.polygonOffsets.length; k++) polygons.push(r.polygonPoints.slice(r.polygonOffsets[k], r.polygonOffsets[k + 1]));
+    for (let k = 0; k + 1 < polygonOffsets.length; k++) polygons.push(polygonPoints.slice(polygonOffsets[k], polygonOffsets[k + 1]));
     return {
-      method, dim, primitive, ok: r.ok, count: r.count, segments: r.segments, polygons,
-      indices: r.indices, params: r.params, stride: r.stride, rms: r.rms,
-      polylineOffsets: r.polylineOffsets, breaks, failure,
-      ...(trace ? { trace: traceEvents(r.trace) } : {}),
+      method, dim, primitive, ok: ok === 1, count, segments, polygons, indices, params, stride, rms,
+      polylineOffsets, breaks, failure,
+      ...(trace ? { trace: traceEvents(res.trace) } : {}),
     };
   }
 
@@ -508,7 +530,7 @@ function wrap(m) {
     };
   }
 
-  const simplifier = makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; });
+  const simplifier = makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; }, takeResults);
   const release = () => { simplifier.release(); m.releaseBuffers(); m.viewBlock(-1); viewAt = 0; };
   const api = {
     version: VERSION,

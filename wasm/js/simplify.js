@@ -6,16 +6,16 @@
 // come from there), so no imports or exports here.
 
 // withInputOf(fn, len, fill, f): api.js's writer into the module's kept input buffer; setComputeMs records the
-// library's own time of the call (lastComputeMs).
-function makeSimplify(m, withInputOf, setComputeMs) {
+// library's own time of the call (lastComputeMs); takeResults copies a binding's ResultBlock out (api.js).
+function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
   const fn = 'simplify';
 
   function kept(len, dim, fill, tolerance, highQuality, src) {
     let written = len;
-    const r = withInputOf(fn, len, (heap, at) => { written = fill(heap, at) ?? len; },
-      (p) => m.simplify(p, written, dim, tolerance, highQuality), src);
-    setComputeMs(r.computeMs);
-    return r.kept;
+    const r = takeResults(withInputOf(fn, len, (heap, at) => { written = fill(heap, at) ?? len; },
+      (p) => m.simplify(p, written, dim, tolerance, highQuality), src), [Uint32Array]);
+    setComputeMs(r.scalars[0]);
+    return r.arrays[0];
   }
 
   const nonFinite = (v) => (Number.isNaN(v) ? 'NaN' : v > 0 ? 'Infinity' : '-Infinity');

@@ -5,7 +5,8 @@
 //    name when the message does not start with it;
 //  * large arrays come in as (pointer, count) into the wasm heap, written by JS with HEAPF64.set, or read in place
 //    from the block the caller filled through pointBuffer() (viewBlock);
-//  * results leave as JS typed arrays copied in C++, so JS never holds a view that memory growth could detach.
+//  * results leave as JS typed arrays: copied in C++, or laid out in one kept block (ResultBlock) that the JS layer
+//    copies out right after the call, so JS never keeps a view that memory growth could detach.
 #pragma once
 
 #include <emscripten/bind.h>
@@ -59,13 +60,13 @@ inline std::string withoutLabel(const char* message, const char* label) {
   return m.substr(k);
 }
 
-// Runs f() and returns its val; any exception becomes {error, kind} (kind: TypeError, RangeError or Error).
+// The {error, kind} value of the exception being handled (kind: TypeError, RangeError or Error); called from a catch
+// block only. One copy of the type dispatch for all the bindings, not one per guarded() instantiation.
 // `label`: the library's name for the failing part, dropped from the message (see withoutLabel).
-template <class F>
-val guarded(F&& f, const char* label = nullptr) noexcept {
+[[gnu::noinline]] inline val currentError(const char* label) noexcept {
   try {
     try {
-      return f();
+      throw;
     } catch (const type_error& e) {
       return errorValue("TypeError", withoutLabel(e.what(), label).c_str());
     } catch (const std::invalid_argument& e) {
@@ -81,8 +82,18 @@ val guarded(F&& f, const char* label = nullptr) noexcept {
     } catch (const std::exception& e) {
       return errorValue("Error", withoutLabel(e.what(), label).c_str());
     }
-  } catch (...) {  // also whatever building the message above threw
+  } catch (...) {  // not a std::exception, or whatever building the message above threw
     return errorValue("Error", "unknown C++ exception");
+  }
+}
+
+// Runs f() and returns its val; any exception becomes {error, kind} (currentError).
+template <class F>
+val guarded(F&& f, const char* label = nullptr) noexcept {
+  try {
+    return f();
+  } catch (...) {
+    return currentError(label);
   }
 }
 
@@ -136,6 +147,80 @@ inline val u32(const std::vector<std::uint32_t>& v) { return typedArray("Uint32A
 inline val i32(const std::vector<std::int32_t>& v) { return typedArray("Int32Array", v.data(), v.size()); }
 
 inline std::string str(std::size_t v) { return std::to_string(v); }
+
+// A call's results handed to JS as one number: the address of a kept block holding the scalars and arrays, which
+// wasm/js/api.js (takeResults) copies out right after the call. Building a result object field by field through
+// embind costs ~4 JS calls per array (the constructor looked up by name, a memory view, the copy, the key string):
+// 15-30 us per vectorize() call, as much as FTLS's own time on a few thousand points. Layout, in doubles:
+//   [scalar count S, scalars..., array count A, (byte address, element count) per array..., array bytes...]
+// each array starting on an 8-byte boundary (or read where it is, see take). The caller's arrays must stay alive
+// until finish().
+class ResultBlock {
+ public:
+  // Not inlined: one copy of the push_back code, not one per field of every binding.
+  [[gnu::noinline]] ResultBlock& scalar(double v) {
+    scalars_.push_back(v);
+    return *this;
+  }
+  template <class T>
+  ResultBlock& array(const std::vector<T>& v) { return bytes(v.data(), v.size(), sizeof(T)); }
+  // A per-point array moved into the block's keeping instead of copied (one copy less: JS copies it out anyway);
+  // the block holds it until the next call's take().
+  ResultBlock& take(std::vector<std::int32_t>&& v) {
+    taken32_ = std::move(v);
+    return bytes(taken32_.data(), taken32_.size(), 0);
+  }
+  ResultBlock& take(std::vector<std::uint32_t>&& v) {
+    takenU32_ = std::move(v);
+    return bytes(takenU32_.data(), takenU32_.size(), 0);
+  }
+  // Lays the block out and returns its address; the next call's results reuse it. It only grows, uninitialised
+  // (no zero-fill), except that a block of over kKeptPoints doubles is given back when a later result needs less
+  // than half of it (a one-off huge result does not pin it).
+  [[gnu::noinline]] double finish() {
+    const std::size_t head = 2 + scalars_.size() + 2 * arrays_.size();
+    std::size_t words = head;
+    for (const auto& a : arrays_) words += (a.bytes + 7) / 8;
+    if (words > capacity_ || (capacity_ > rtl_ops::kKeptPoints && words < capacity_ / 2)) {
+      block_.reset();
+      block_.reset(new double[words]);
+      capacity_ = words;
+    }
+    double* b = block_.get();
+    std::size_t k = 0;
+    b[k++] = static_cast<double>(scalars_.size());
+    for (double v : scalars_) b[k++] = v;
+    b[k++] = static_cast<double>(arrays_.size());
+    std::size_t at = head;
+    for (const auto& a : arrays_) {
+      // bytes 0: taken, read where it is (or empty)
+      b[k++] = static_cast<double>(reinterpret_cast<std::uintptr_t>(a.bytes ? b + at : a.data));
+      b[k++] = static_cast<double>(a.n);
+      if (a.bytes) std::memcpy(b + at, a.data, a.bytes);
+      at += (a.bytes + 7) / 8;
+    }
+    scalars_.clear();
+    arrays_.clear();
+    return static_cast<double>(reinterpret_cast<std::uintptr_t>(b));
+  }
+
+ private:
+  [[gnu::noinline]] ResultBlock& bytes(const void* data, std::size_t n, std::size_t size) {
+    arrays_.push_back({data, n, n * size});
+    return *this;
+  }
+  struct Array {
+    const void* data;
+    std::size_t n, bytes;
+  };
+  std::vector<double> scalars_;
+  std::vector<Array> arrays_;
+  std::vector<std::int32_t> taken32_;
+  std::vector<std::uint32_t> takenU32_;
+  std::unique_ptr<double[]> block_;
+  std::size_t capacity_ = 0;
+};
+inline ResultBlock& results() { return rtl_ops::kept<ResultBlock>(); }
 
 // A FlatTrace (trace_ops.h) as {names: string[], data: Float64Array}; the JS layer builds the event objects.
 template <class Flat>

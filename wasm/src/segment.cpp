@@ -21,17 +21,22 @@ val segment(std::uintptr_t ptr, std::size_t len, int dim, double step, double lo
     rtl_ops::FlatTrace flat;
     rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
     const double t0 = nowMs();
-    const auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p, events) : rtl_ops::segment<3>(xyz, len / 3, p, events);
+    auto out = dim == 2 ? rtl_ops::segment<2>(xyz, len / 2, p, events) : rtl_ops::segment<3>(xyz, len / 3, p, events);
     if (out.badInput) checkPoints("segment", xyz, len, static_cast<std::size_t>(dim), 0, true);  // throws the message
     const double computeMs = nowMs() - t0;
-    val r = val::object();
-    r.set("labels", i32(out.labels));
-    r.set("indices", u32(out.indices));
-    r.set("offsets", u32(out.offsets));
-    r.set("runs", u32(out.runs));
-    r.set("runOffsets", u32(out.runOffsets));
-    r.set("computeMs", computeMs);
-    if (trace) r.set("trace", traceValue(flat));
+    // The order of wasm/js/api.js's segment (SEGMENT_ARRAYS).
+    const double res = results()
+                           .scalar(computeMs)
+                           .take(std::move(out.labels))
+                           .take(std::move(out.indices))
+                           .array(out.offsets)
+                           .array(out.runs)
+                           .array(out.runOffsets)
+                           .finish();
+    if (!trace) return val(res);
+    val r = val::object();  // traced: {out: the block's address, trace}
+    r.set("out", res);
+    r.set("trace", traceValue(flat));
     return r;
   });
 }

@@ -19,10 +19,7 @@ val simplify(std::uintptr_t ptr, std::size_t len, int dim, double tolerance, boo
                                                      tolerance, highQuality);
     const double computeMs = nowMs() - t0;
     static_assert(sizeof(std::size_t) == sizeof(std::uint32_t), "wasm32: size_t indices copy straight into a Uint32Array");
-    val r = val::object();
-    r.set("kept", typedArray("Uint32Array", kept.data(), kept.size()));
-    r.set("computeMs", computeMs);
-    return r;
+    return val(results().scalar(computeMs).array(kept).finish());  // wasm/js/simplify.js reads it as [Uint32Array]
   });
 }
 

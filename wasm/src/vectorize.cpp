@@ -38,27 +38,32 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
       polys.insert(polys.end(), poly.begin(), poly.end());
       polyOffsets.push_back(static_cast<std::uint32_t>(polys.size()));
     }
-    val r = val::object();
-    r.set("ok", o.ok);
-    r.set("count", static_cast<double>(o.count));
-    r.set("segments", f64(o.segments));
-    r.set("polygonPoints", f64(polys));
-    r.set("polygonOffsets", u32(polyOffsets));
-    r.set("indices", u32(o.indices));
-    r.set("params", f64(o.params));
-    r.set("stride", o.stride);
-    r.set("rms", f64(o.rms));
-    r.set("computeMs", computeMs);
-    r.set("polylineOffsets", u32(o.polylineOffsets));
     // Corners as flat triples boundary, crossingDistance, delta (breaks; failure when failed).
     std::vector<double> breaks;
     for (const auto& b : o.breaks) breaks.insert(breaks.end(), {static_cast<double>(b.boundary), b.crossingDistance, b.delta});
-    r.set("breaks", f64(breaks));
-    if (o.failed) {
-      const double f[3] = {static_cast<double>(o.failure.boundary), o.failure.crossingDistance, o.failure.delta};
-      r.set("failure", f64(f, 3));
-    }
-    if (trace) r.set("trace", traceValue(flat));
+    // The order of wasm/js/api.js's vectorize (VECTORIZE_ARRAYS).
+    const double out = results()
+                           .scalar(o.ok)
+                           .scalar(static_cast<double>(o.count))
+                           .scalar(o.stride)
+                           .scalar(computeMs)
+                           .scalar(o.failed)
+                           .scalar(static_cast<double>(o.failure.boundary))
+                           .scalar(o.failure.crossingDistance)
+                           .scalar(o.failure.delta)
+                           .array(o.segments)
+                           .array(polys)
+                           .array(polyOffsets)
+                           .array(o.indices)
+                           .array(o.params)
+                           .array(o.rms)
+                           .array(o.polylineOffsets)
+                           .array(breaks)
+                           .finish();
+    if (!trace) return val(out);
+    val r = val::object();  // traced: {out: the block's address, trace}
+    r.set("out", out);
+    r.set("trace", traceValue(flat));
     return r;
   });
 }
