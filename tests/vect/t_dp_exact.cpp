@@ -218,3 +218,137 @@ TEST(DouglasPeuckerExact, HugeOrNonFiniteCoordinateAtEveryPositionOfTheCopyPass)
                 }
     EXPECT_EQ(checked, 4 * 2 * 77);
 }
+
+namespace
+{
+    //! The first DpRange event's farthest point (0 if the whole range is not split).
+    template<typename T>
+    size_t firstSplit(const std::vector<rtl::VectorND<2, T>> &pts, T eps)
+    {
+        rtl::DpTraceLog log;
+        rtl::VectorizerDouglasPeuckerND<2, T, rtl::DpTraceLog> dp(eps);
+        dp.setObserver(&log);
+        std::vector<rtl::LineSegmentND<2, T>> segs;
+        dp(pts, segs);
+        for (const auto &e : log.events)
+            if (const auto *r = std::get_if<rtl::DpRange>(&e))
+                return r->split ? r->farthest : 0;
+        return 0;
+    }
+
+    //! Douglas-Peucker driven by the public scalar farthest() (the in-order scan in Element arithmetic): the
+    //! decisions the SoA block scan must reproduce on tame chains with non-degenerate chords.
+    template<typename T>
+    std::vector<size_t> keptByScalarScan(const std::vector<rtl::VectorND<2, T>> &pts, T eps)
+    {
+        rtl::VectorizerDouglasPeuckerND<2, T> dp(eps);
+        std::vector<size_t> keys{0};
+        std::vector<std::pair<size_t, size_t>> stack{{0, pts.size() - 1}};
+        while (!stack.empty())
+        {
+            const auto [a, b] = stack.back();
+            stack.pop_back();
+            const size_t far = b - a < 2 ? 0 : dp.farthest(pts, a, b);
+            if (far != 0)
+            {
+                stack.emplace_back(far, b);
+                stack.emplace_back(a, far);
+            }
+            else
+                keys.push_back(b);
+        }
+        return keys;
+    }
+
+    //! Points (i, 0) for i < n with chord (0, 0) -> (n - 1, 0): a point (i, h) has squared cross product
+    //! (h (n - 1))^2, exact for the small integers and halves used here, so equal |h| tie exactly.
+    template<typename T>
+    std::vector<rtl::VectorND<2, T>> axisChain(size_t n)
+    {
+        std::vector<rtl::VectorND<2, T>> pts;
+        for (size_t i = 0; i < n; ++i)
+            pts.emplace_back(static_cast<T>(i), T(0));
+        return pts;
+    }
+
+    template<typename T>
+    void checkBlockPositions()
+    {
+        // The block scan runs over blocks of 16 from a + 1 (lanes of 2 doubles or 4 floats), then a scalar tail:
+        // the farthest point at every position of ranges up to 4 blocks and a tail, with an exact tie later
+        // (same or opposite side: the first is kept), smaller bumps before it in the same block, a point exactly
+        // at epsilon (not beyond it: never picked), and the farthest point tied with an earlier lesser maximum.
+        const T eps = T(0.5);
+        for (size_t n = 3; n <= 72; ++n)
+            for (size_t p = 1; p + 1 < n; ++p)
+            {
+                auto pts = axisChain<T>(n);
+                pts[p][1] = T(4);
+                EXPECT_EQ(firstSplit(pts, eps), p) << "n " << n << " p " << p;
+                for (size_t q = p + 1; q + 1 < n; q += (q < p + 20 ? 1 : 7))
+                {
+                    auto tied = pts;
+                    tied[q][1] = q % 2 ? T(-4) : T(4);
+                    EXPECT_EQ(firstSplit(tied, eps), p) << "n " << n << " p " << p << " tie at " << q;
+                }
+                if (p >= 2)
+                {
+                    auto lesser = pts;
+                    lesser[p - 1][1] = T(3.5);
+                    lesser[1][1] = p > 2 ? T(-3) : lesser[1][1];
+                    EXPECT_EQ(firstSplit(lesser, eps), p) << "n " << n << " p " << p << " lesser before";
+                }
+                auto at_eps = axisChain<T>(n);
+                at_eps[p][1] = eps;   // (eps (n - 1))^2 equals the threshold eps^2 (n - 1)^2: not beyond
+                EXPECT_EQ(firstSplit(at_eps, eps), size_t(0)) << "n " << n << " p " << p << " at epsilon";
+                if (p + 2 < n)
+                {
+                    at_eps[p + 1][1] = T(0.75);
+                    EXPECT_EQ(firstSplit(at_eps, eps), p + 1) << "n " << n << " p " << p << " after epsilon";
+                }
+            }
+    }
+}
+
+TEST(DouglasPeuckerExact, BlockScanPicksTheFirstFarthestAtEveryPosition)
+{
+    checkBlockPositions<double>();
+    checkBlockPositions<float>();
+}
+
+// Noisy arcs and random walks (many nested ranges, records inside blocks, blocks that do not beat the best): the
+// kept points equal those of the in-order scalar scan.
+TEST(DouglasPeuckerExact, BlockScanEqualsTheScalarScan)
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> noise(-0.5, 0.5);
+    for (int c = 0; c < 40; ++c)
+    {
+        const size_t n = 50 + 997 * static_cast<size_t>(c);
+        std::vector<rtl::Vector2d> pd;
+        std::vector<rtl::Vector2f> pf;
+        double wx = 0, wy = 0;
+        for (size_t i = 0; i < n; ++i)
+        {
+            double x, y;
+            if (c % 2 == 0)
+            {
+                const double a = 3.14159265358979 * static_cast<double>(i) / static_cast<double>(n - 1);
+                x = 8 * std::cos(a) + 0.01 * noise(rng);
+                y = 8 * std::sin(a) + 0.01 * noise(rng);
+            }
+            else
+            {
+                x = wx += noise(rng);
+                y = wy += noise(rng);
+            }
+            pd.emplace_back(x, y);
+            pf.emplace_back(static_cast<float>(x), static_cast<float>(y));
+        }
+        const double eps = c % 2 == 0 ? 0.01 + 0.02 * (c % 5) : 0.5 + c % 3;
+        rtl::VectorizerDouglasPeucker2d dpd(eps);
+        rtl::VectorizerDouglasPeucker2f dpf(static_cast<float>(eps));
+        EXPECT_EQ(keptBy(dpd, pd), keptByScalarScan(pd, eps)) << "chain " << c;
+        EXPECT_EQ(keptBy(dpf, pf), keptByScalarScan(pf, static_cast<float>(eps))) << "chain " << c;
+    }
+}

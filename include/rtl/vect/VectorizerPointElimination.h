@@ -449,8 +449,8 @@ namespace rtl
         }
 
         //! farthest() on the coordinate arrays in `soa` (same operations per point, so the same result): blocks of
-        //! 16 points are compared with the best so far without branches; only a block with a point beyond it is
-        //! rescanned in order for its first maximal index.
+        //! 16 points are compared with the best so far without branches; only in a block with a point beyond it is
+        //! the first maximal index searched for.
         size_t farthestSoa(const std::vector<VectorType> &pts, size_t a, size_t b) const
         {
             const Element l2 = (pts[b] - pts[a]).lengthSquared();
@@ -481,31 +481,36 @@ namespace rtl
             size_t i = a + 1;
 #if defined(__GNUC__)
             // 2D float/double: the same per-point operations on GCC/clang vector lanes (SSE2: 4 floats or 2 doubles
-            // per instruction), so the same values; a block with a point beyond the best is rescanned in order.
+            // per instruction), so the same values. Per block, a running maximum per lane (one max instruction a
+            // vector, no masks; exact, as `tame` excludes NaN) starting at the best so far; if its largest lane M
+            // beats the best, the in-order scan would end the block at M on the first point equal to M, which is
+            // then searched for.
             if constexpr (dimensions == 2 && (std::is_same_v<Element, float> || std::is_same_v<Element, double>))
             {
                 typedef Element V __attribute__((vector_size(16)));
-                typedef long long W __attribute__((vector_size(16)));
                 constexpr size_t lanes = 16 / sizeof(Element);
                 for (; i + block <= b; i += block)
                 {
-                    const V bc = V{} + best_c;
-                    W any = W{};
+                    V m = V{} + best_c;
                     for (size_t q = 0; q < block; q += lanes)
                     {
                         V vx, vy;
                         std::memcpy(&vx, x + i + q, sizeof(V));
                         std::memcpy(&vy, y + i + q, sizeof(V));
-                        const V c = (vx - ax) * uy - (vy - ay) * ux;
-                        any |= (W)(c * c > bc);
+                        const V c = (vx - ax) * uy - (vy - ay) * ux, c2 = c * c;
+                        m = m < c2 ? c2 : m;   // SSE2 maxpd/maxps, wasm f64x2/f32x4.pmax
                     }
-                    const bool beats = (any[0] | any[1]) != 0;
-                    if (beats)
-                        for (size_t k = 0; k < block; ++k)
-                        {
-                            const Element c2 = cross2(i + k);
-                            if (c2 > best_c) { best_c = c2; best = i + k; }
-                        }
+                    Element top = m[0];
+                    for (size_t l = 1; l < lanes; ++l)
+                        top = top < m[l] ? m[l] : top;
+                    if (top > best_c)
+                    {
+                        best_c = top;
+                        size_t k = 0;
+                        while (cross2(i + k) != top)
+                            ++k;
+                        best = i + k;
+                    }
                 }
             }
 #endif
