@@ -352,3 +352,62 @@ TEST(DouglasPeuckerExact, BlockScanEqualsTheScalarScan)
         EXPECT_EQ(keptBy(dpf, pf), keptByScalarScan(pf, static_cast<float>(eps))) << "chain " << c;
     }
 }
+
+// 2D double chains are copied and checked two points per vector step: a huge or non-finite coordinate at any
+// position (either lane, the scalar tail) must send the chain to the rescaled path, as the 3D copy (one point at
+// a time) does for the same chain with z = 0. A point at y = 1e100 overflows the tame scan (the squared cross
+// products and eps^2 |u|^2 are inf for the chords through it: no point would beat the threshold), while the
+// rescaled path keeps its neighbours.
+TEST(DouglasPeuckerExact, HugeOrNonFiniteDoubleAtEveryPositionOfTheCopyPass)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    int checked = 0;
+    for (size_t n = 3; n <= 12; ++n)
+        for (size_t q = 0; q < n; ++q)
+            for (double v : {1e100, -1e100, 1e300, 1e77, nan, inf, -inf})
+                for (int axis = 0; axis < 2; ++axis)
+                {
+                    std::vector<rtl::Vector2d> p2;
+                    std::vector<rtl::Vector3d> p3;
+                    for (size_t i = 0; i < n; ++i)
+                    {
+                        rtl::Vector2d p(static_cast<double>(i), (i % 3) * 0.25);
+                        if (i == q)
+                            p[axis] = v;
+                        p2.push_back(p);
+                        p3.emplace_back(p.x(), p.y(), 0.0);
+                    }
+                    rtl::VectorizerDouglasPeucker2d dp2(0.5);
+                    rtl::VectorizerDouglasPeucker3d dp3(0.5);
+                    const auto k2 = keptBy(dp2, p2), k3 = keptBy(dp3, p3);
+                    EXPECT_EQ(k2, k3) << "n " << n << " q " << q << " v " << v << " axis " << axis;
+                    if (axis == 1 && std::abs(v) == 1e100 && q >= 2 && q + 1 < n)
+                    {
+                        EXPECT_GE(k2.size(), 4u) << "n " << n << " q " << q;   // q - 1, q and the ends at least
+                    }
+                    ++checked;
+                }
+    EXPECT_EQ(checked, 75 * 7 * 2);
+}
+
+// The copy pass's largest |coordinate| (from either lane or the tail) sets the rescaling of the double path, taken
+// by a range with coincident ends: with ends at the origin, points at x = 1e70 and, later, 2e70 among points at
+// 1e-200, the farther one is kept and the nearer lies on its chord. Rescaled by the largest of the 1e-200 values
+// instead, both distances would overflow to inf and tie, keeping the nearer.
+TEST(DouglasPeuckerExact, CopyPassMaximumAtEveryPositionSetsTheRescaling)
+{
+    int checked = 0;
+    for (size_t n = 4; n <= 11; ++n)
+        for (size_t p = 1; p + 1 < n; ++p)
+            for (size_t q = p + 1; q + 1 < n; ++q)
+            {
+                std::vector<rtl::Vector2d> pts(n, rtl::Vector2d(1e-200, 1e-200));
+                pts.front() = pts.back() = rtl::Vector2d(0, 0);
+                pts[p] = rtl::Vector2d(1e70, 0);
+                pts[q] = rtl::Vector2d(2e70, 0);
+                rtl::VectorizerDouglasPeucker2d dp(1e-100);
+                EXPECT_EQ(keptBy(dp, pts), (std::vector<size_t>{0, q, n - 1})) << "n " << n << " p " << p << " q " << q;
+                ++checked;
+            }
+    EXPECT_EQ(checked, 120);
+}

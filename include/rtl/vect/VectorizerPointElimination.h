@@ -144,38 +144,51 @@ namespace rtl
                 Element *x = soa.data(), *y = x + n;
                 size_t i = 0;
 #if defined(__GNUC__)
-                // Float: four points per step on vector lanes (de-interleaved by shuffles), the same tests per
-                // coordinate. The maximum of the lane maxima is the scalar running maximum: max is associative on
-                // non-NaN values, |c| has no -0, and a NaN is skipped by "m > max ? m : max" in either order.
-                if constexpr (std::is_same_v<Element, float> && sizeof(VectorType) == 2 * sizeof(float))
+                // Float/double: four/two points per step on vector lanes (de-interleaved by shuffles). The maximum
+                // of the lane maxima is the scalar running maximum: max is associative on non-NaN values, |c| has no
+                // -0, and a NaN is skipped by "m > max ? m : max" in either order. `ok` (every |c| <= lim) is that
+                // maximum <= lim and no NaN, which the lanes' sums of |c| tell (non-negative terms: +inf at worst,
+                // never NaN from numbers): additions, as GCC scalarises AND-ed 64-bit lane masks.
+                if constexpr ((std::is_same_v<Element, float> || std::is_same_v<Element, double>) && sizeof(VectorType) == 2 * sizeof(Element))
                 {
-                    typedef float V __attribute__((vector_size(16)));
-                    typedef int M __attribute__((vector_size(16)));
-                    const float *in = &input[0][0];
-                    const V vlim = V{} + lim;
-                    V vmax = V{};
-                    M vok = M{} - 1;
-                    const M absmask = M{} + 0x7fffffff;
-                    for (; i + 4 <= n; i += 4)
+                    typedef Element V __attribute__((vector_size(16)));
+                    typedef std::conditional_t<std::is_same_v<Element, float>, int, long long> I;
+                    typedef I M __attribute__((vector_size(16)));
+                    constexpr size_t lanes = 16 / sizeof(Element);
+                    const Element *in = &input[0][0];
+                    V vmax = V{}, vsum = V{};
+                    const M absmask = M{} + std::numeric_limits<I>::max();
+                    for (; i + lanes <= n; i += lanes)
                     {
-                        V p0, p1;
+                        V p0, p1, vx, vy;
                         std::memcpy(&p0, in + 2 * i, sizeof(V));
-                        std::memcpy(&p1, in + 2 * i + 4, sizeof(V));
+                        std::memcpy(&p1, in + 2 * i + lanes, sizeof(V));
+                        if constexpr (lanes == 4)
+                        {
 #if defined(__clang__)
-                        const V vx = __builtin_shufflevector(p0, p1, 0, 2, 4, 6), vy = __builtin_shufflevector(p0, p1, 1, 3, 5, 7);
+                            vx = __builtin_shufflevector(p0, p1, 0, 2, 4, 6), vy = __builtin_shufflevector(p0, p1, 1, 3, 5, 7);
 #else
-                        const V vx = __builtin_shuffle(p0, p1, M{0, 2, 4, 6}), vy = __builtin_shuffle(p0, p1, M{1, 3, 5, 7});
+                            vx = __builtin_shuffle(p0, p1, M{0, 2, 4, 6}), vy = __builtin_shuffle(p0, p1, M{1, 3, 5, 7});
 #endif
+                        }
+                        else
+                        {
+#if defined(__clang__)
+                            vx = __builtin_shufflevector(p0, p1, 0, 2), vy = __builtin_shufflevector(p0, p1, 1, 3);
+#else
+                            vx = __builtin_shuffle(p0, p1, M{0, 2}), vy = __builtin_shuffle(p0, p1, M{1, 3});
+#endif
+                        }
                         std::memcpy(x + i, &vx, sizeof(V));
                         std::memcpy(y + i, &vy, sizeof(V));
                         const V mx = (V)((M)vx & absmask), my = (V)((M)vy & absmask);
-                        vok &= (mx <= vlim) & (my <= vlim);
+                        vsum += mx + my;
                         vmax = mx > vmax ? mx : vmax;
                         vmax = my > vmax ? my : vmax;
                     }
-                    for (int l = 0; l < 4; ++l)
+                    for (size_t l = 0; l < lanes; ++l)
                     {
-                        ok &= static_cast<int>(vok[l] != 0);
+                        ok &= static_cast<int>(vmax[l] <= lim) & static_cast<int>(vsum[l] == vsum[l]);
                         max_abs = vmax[l] > max_abs ? vmax[l] : max_abs;
                     }
                 }
