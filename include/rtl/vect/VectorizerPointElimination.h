@@ -505,12 +505,14 @@ namespace rtl
                 for (; i + block <= b; i += block)
                 {
                     V m = V{} + best_c;
+                    Element c2s[block];   // kept for the search: no recomputation (and it always ends in the block)
                     for (size_t q = 0; q < block; q += lanes)
                     {
                         V vx, vy;
                         std::memcpy(&vx, x + i + q, sizeof(V));
                         std::memcpy(&vy, y + i + q, sizeof(V));
                         const V c = (vx - ax) * uy - (vy - ay) * ux, c2 = c * c;
+                        std::memcpy(c2s + q, &c2, sizeof(V));
                         m = m < c2 ? c2 : m;   // SSE2 maxpd/maxps, wasm f64x2/f32x4.pmax
                     }
                     Element top = m[0];
@@ -520,7 +522,7 @@ namespace rtl
                     {
                         best_c = top;
                         size_t k = 0;
-                        while (cross2(i + k) != top)
+                        while (c2s[k] != top)
                             ++k;
                         best = i + k;
                     }
