@@ -1,7 +1,8 @@
 // IA_Segmenter's closed queue and window test: a consumer that lets the queue grow (past the point where the
 // handed-out front is dropped) gets the clusters of an eager consumer in the same order, with the same counts at
 // every point, also from a copy; a point that links only to a window point older than the newest (the newest a gap,
-// or of another cluster) joins that cluster.
+// or of another cluster) joins that cluster. Alive lists stay out of the alive map until aliveClusters() is called
+// (parked): the counts, the map and the clusters do not depend on when it is called, also for copies and merges.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -136,6 +137,66 @@ namespace
             EXPECT_EQ(drain(ia), (std::vector<std::vector<V>>{{pt<V>(0, 0), pt<V>(0.8, 0), pt<V>(0.4, 0)}})) << "step " << step;
         }
     }
+}
+
+namespace
+{
+    // One segmenter never asks for the alive map, one asks after every `every`-th point; copies of both are taken at
+    // `copy_every` points (parked and attached lists side by side), compared there and run to the end.
+    template<class V>
+    void parkedAliveLists(const std::vector<V> &pts, size_t step, typename V::ElementType scaling, size_t every)
+    {
+        using E = typename V::ElementType;
+        const E lb = E(0.01), ub = E(0.1);
+        rtl::IA_Segmenter<V> quiet(step, lb, ub, scaling), asked(step, lb, ub, scaling);
+        std::vector<std::vector<V>> a, b;
+        size_t mismatches = 0, copies = 0;
+        for (size_t i = 0; i < pts.size(); ++i)
+        {
+            quiet.addPoint(pts[i]);
+            asked.addPoint(pts[i]);
+            mismatches += quiet.aliveClustersAvailable() == asked.aliveClustersAvailable() ? 0 : 1;
+            if (i % every == 0)
+            {
+                const size_t n = asked.aliveClustersAvailable();
+                mismatches += asked.aliveClusters().size() == n && asked.aliveClustersAvailable() == n ? 0 : 1;
+            }
+            if (i % 997 == 0)
+            {
+                // copies of a segmenter with parked lists (quiet) and with attached ones (asked)
+                rtl::IA_Segmenter<V> cq(quiet), ca(asked);
+                const auto &alive = cq.aliveClusters();
+                mismatches += alive == ca.aliveClusters() && alive == asked.aliveClusters() ? 0 : 1;
+                ++copies;
+            }
+            while (quiet.closedClustersAvailable() > 0) a.push_back(quiet.grabCluster());
+            while (asked.closedClustersAvailable() > 0) b.push_back(asked.grabCluster());
+        }
+        EXPECT_EQ(quiet.aliveClusters(), asked.aliveClusters());
+        quiet.flush();
+        asked.flush();
+        while (quiet.closedClustersAvailable() > 0) a.push_back(quiet.grabCluster());
+        while (asked.closedClustersAvailable() > 0) b.push_back(asked.grabCluster());
+        EXPECT_EQ(mismatches, 0u) << "every " << every;
+        EXPECT_GT(copies, 3u);
+        EXPECT_GT(a.size(), 100u);
+        EXPECT_EQ(a, b) << "every " << every;
+    }
+}
+
+TEST(IaQueue, AliveClustersDoNotDependOnWhenTheMapIsAskedFor)
+{
+    for (size_t step : {size_t(1), size_t(2), size_t(3), size_t(10)})
+        for (size_t every : {size_t(1), size_t(3), size_t(50)})
+        {
+            SCOPED_TRACE("step " + std::to_string(step));
+            const size_t n = 6000;
+            const float s = rtl::seg_detail::circularScaling<float>(step, n);
+            parkedAliveLists(shortRuns<V2f>(n, 10), step, s, every);
+            // interleaved chains: merges of parked and attached lists
+            parkedAliveLists(segcheck::interleavedScan<V2f>(n, 3, {0.05, 60, 3, 0.02, 0.02}), step, 0.01f, every);
+            parkedAliveLists(segcheck::interleavedScan<V3d>(n, 4, {0.03, 40, 2, 0.0, 0.04}), step, 0.02, every);
+        }
 }
 
 TEST(IaQueue, LaggingConsumerGetsTheEagerClustersInOrder)

@@ -35,6 +35,7 @@
 #include <list>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "rtl/core/Trace.h"
@@ -117,10 +118,11 @@ namespace rtl
         void setObserver(Observer *observer) { observer_ = observer; }
 
         [[nodiscard]] size_t closedClustersAvailable() const { return closed_left_; }
-        [[nodiscard]] size_t aliveClustersAvailable() const { return lists_.alive.size(); }
+        [[nodiscard]] size_t aliveClustersAvailable() const { return lists_.alive.size() + lists_.parked; }
         [[nodiscard]] const std::map<size_t, std::vector<VectorType>> &aliveClusters() const
         {
             untail();
+            lists_.attachParked();
             return lists_.alive;
         }
 
@@ -269,9 +271,9 @@ namespace rtl
             const size_t r = wrec_[slot];
             if (r == none) return false;
             Record &R = lists_.recs[r];
-            if (!R.has_alive || R.in_window < 2 || !R.contiguous || R.base + R.alive->second.size() != widx_[slot]) return false;
+            if (!R.has_alive || R.in_window < 2 || !R.contiguous || R.base + R.list->size() != widx_[slot]) return false;
             --R.in_window;
-            R.alive->second.push_back(wpts_[slot]);
+            R.list->push_back(wpts_[slot]);
             return true;
         }
 
@@ -366,7 +368,7 @@ namespace rtl
                 return;
             Record &R = lists_.recs[rec];
             if (!R.has_alive || R.in_window != step_ || count_ != step_) return;
-            std::vector<VectorType> &v = R.alive->second;
+            std::vector<VectorType> &v = *R.list;
             const size_t first = step_ == 1 ? stream_ - 1 : widx_[head_];
             if (R.contiguous && R.base + v.size() != first) listIndices(R);
             tail_start_ = v.size();
@@ -400,31 +402,62 @@ namespace rtl
             lists_.tail_rec = none;
         }
 
+        // A map node out of the map; a copy is deep (a node handle cannot be copied: the copy is made in a map of
+        // its own and extracted from it).
+        struct ParkedNode
+        {
+            typename AliveMap::node_type nh;
+            ParkedNode() = default;
+            ParkedNode(const ParkedNode &o)
+            {
+                if (o.nh.empty()) return;
+                AliveMap m;
+                m.emplace(o.nh.key(), o.nh.mapped());
+                nh = m.extract(m.begin());
+            }
+            ParkedNode(ParkedNode &&) noexcept = default;
+            ParkedNode &operator=(const ParkedNode &o)
+            {
+                if (this != &o) *this = ParkedNode(o);
+                return *this;
+            }
+            ParkedNode &operator=(ParkedNode &&) noexcept = default;
+            ~ParkedNode() = default;
+        };
+
         struct Record
         {
             size_t id = 0;
             size_t in_window = 0;
-            bool has_alive = false;
-            typename AliveMap::iterator alive;      // valid when has_alive
+            // the alive list is a map node: in the alive map (`attached`, at `alive`) or parked in `park`, out of the
+            // map until aliveClusters() asks for it, so that a cluster that opens and closes in between costs no
+            // map insertion or removal; `list` is the node's vector either way (a node never moves)
+            bool has_alive = false, attached = false;
+            typename AliveMap::iterator alive;      // valid when has_alive && attached
+            std::vector<VectorType> *list = nullptr;   // valid when has_alive
+            ParkedNode park;                        // holds the node when has_alive && !attached
             // stream indices of the alive points, needed to merge interleaved clusters in stream order: implicitly
             // base, base + 1, ... while `contiguous` (always so for step 1), else listed in `index`
             bool contiguous = true;
             size_t base = 0;
             std::vector<size_t> index;
         };
+        // recs grows by moves only: a copy would leave `list` pointing into the old parked nodes
+        static_assert(std::is_nothrow_move_constructible<Record>::value, "IA_Segmenter: Record must move without copying");
 
-        // The records and the alive map they point into. A copy re-points each record's iterator into the copy's
-        // own map (the implicit copy would keep iterators into the source's map); a move keeps them, since the
-        // map's nodes move with it.
+        // The records and the alive map they point into. A copy re-points each record's iterator and list into the
+        // copy's own map and parked nodes (the implicit copy would keep pointers into the source's); a move keeps
+        // them, since the nodes move with it.
         struct ClusterLists
         {
             std::vector<Record> recs;
             AliveMap alive;
+            size_t parked = 0;                                // records whose alive list is parked (not in `alive`)
             size_t tail_rec = none;                           // tail mode: the record whose list holds the window
             std::vector<VectorType> *tail = nullptr;          // its alive list (a map node: kept by moves)
 
             ClusterLists() = default;
-            ClusterLists(const ClusterLists &o) : recs(o.recs), alive(o.alive), tail_rec(o.tail_rec) { repoint(); }
+            ClusterLists(const ClusterLists &o) : recs(o.recs), alive(o.alive), parked(o.parked), tail_rec(o.tail_rec) { repoint(); }
             ClusterLists(ClusterLists &&) noexcept = default;
             ClusterLists &operator=(const ClusterLists &o)
             {
@@ -441,8 +474,29 @@ namespace rtl
             void repoint()
             {
                 for (Record &R : recs)
-                    if (R.has_alive) R.alive = alive.find(R.id);
-                tail = tail_rec == none ? nullptr : &recs[tail_rec].alive->second;
+                    if (R.has_alive)
+                    {
+                        if (R.attached)
+                        {
+                            R.alive = alive.find(R.id);
+                            R.list = &R.alive->second;
+                        }
+                        else R.list = &R.park.nh.mapped();
+                    }
+                tail = tail_rec == none ? nullptr : recs[tail_rec].list;
+            }
+
+            // Puts every parked alive list into the map (const for aliveClusters(): the members are mutable).
+            void attachParked()
+            {
+                if (parked == 0) return;
+                for (Record &R : recs)
+                    if (R.has_alive && !R.attached)
+                    {
+                        R.alive = alive.insert(std::move(R.park.nh)).position;
+                        R.attached = true;
+                    }
+                parked = 0;
             }
         };
 
@@ -516,34 +570,52 @@ namespace rtl
         {
             if (!R.has_alive)
             {
-                R.alive = newAliveList(R.id);
-                R.has_alive = true;
+                newAliveList(R);
                 R.contiguous = true;
                 R.base = idx;
                 R.index.clear();
             }
-            std::vector<VectorType> &v = R.alive->second;
+            std::vector<VectorType> &v = *R.list;
             if (R.contiguous && idx != R.base + v.size()) listIndices(R);
             if (!R.contiguous) R.index.push_back(idx);
             v.push_back(p);
         }
 
         // Alive lists are map nodes handed back and forth with extract/insert, so that a cluster that gets an alive
-        // list costs no allocation once the pool holds nodes (an emptied node keeps its list's capacity).
-        typename AliveMap::iterator newAliveList(size_t id)
+        // list costs no allocation once the pool holds nodes (an emptied node keeps its list's capacity). A pooled
+        // node is parked in the record, out of the map (see Record); a new one goes straight into the map.
+        void newAliveList(Record &R)
         {
             std::vector<typename AliveMap::node_type> &pool = node_pool_.nodes;
-            if (pool.empty()) return lists_.alive.emplace_hint(lists_.alive.end(), id, std::vector<VectorType>());
-            typename AliveMap::node_type nh = std::move(pool.back());
+            R.has_alive = true;
+            if (pool.empty())
+            {
+                R.alive = lists_.alive.emplace_hint(lists_.alive.end(), R.id, std::vector<VectorType>());   // ids grow
+                R.attached = true;
+                R.list = &R.alive->second;
+                return;
+            }
+            R.park.nh = std::move(pool.back());
             pool.pop_back();
-            nh.key() = id;
-            return lists_.alive.insert(lists_.alive.end(), std::move(nh));   // ids grow: the end is the place
+            R.park.nh.key() = R.id;
+            R.attached = false;
+            R.list = &R.park.nh.mapped();
+            ++lists_.parked;
+        }
+
+        // Takes R's alive list out of the map (or out of its parking place): R.has_alive is false afterwards.
+        typename AliveMap::node_type takeAliveList(Record &R)
+        {
+            R.has_alive = false;
+            if (R.attached) return lists_.alive.extract(R.alive);
+            --lists_.parked;
+            return std::move(R.park.nh);
         }
 
         // Keeps at most step + 2 spare nodes: never more than step + 1 clusters are alive at once.
-        void dropAliveList(typename AliveMap::iterator it)
+        void dropAliveList(Record &R)
         {
-            typename AliveMap::node_type nh = lists_.alive.extract(it);
+            typename AliveMap::node_type nh = takeAliveList(R);
             if (node_pool_.nodes.size() >= step_ + 2) return;
             nh.mapped().clear();
             node_pool_.nodes.push_back(std::move(nh));
@@ -554,7 +626,7 @@ namespace rtl
         static void listIndices(Record &R)
         {
             if (!R.contiguous) return;
-            const size_t n = R.alive->second.size();
+            const size_t n = R.list->size();
             R.index.resize(n);
             for (size_t k = 0; k < n; ++k) R.index[k] = R.base + k;
             R.contiguous = false;
@@ -587,7 +659,7 @@ namespace rtl
             }
             const size_t idx = step_ == 1 ? stream_ - 1 : widx_[slot];
             pushAlive(R, wpts_[slot], idx);
-            std::vector<VectorType> &v = R.alive->second;
+            std::vector<VectorType> &v = *R.list;
             if (--R.in_window == 0)
             {
                 // hand out an exact-size copy and keep the alive list's capacity for the next cluster: growing
@@ -595,8 +667,7 @@ namespace rtl
                 closed_.emplace_back(v.begin(), v.end());
                 ++closed_left_;
                 if constexpr (traced) report(ia_trace::Close{R.id, v.size()});
-                dropAliveList(R.alive);
-                R.has_alive = false;
+                dropAliveList(R);
                 free_.push_back(r);
             }
         }
@@ -627,11 +698,13 @@ namespace rtl
             {
                 if (!K.has_alive)
                 {
-                    // G's node becomes K's (K is older: a smaller key)
-                    typename AliveMap::node_type nh = lists_.alive.extract(G.alive);
-                    nh.key() = K.id;
-                    K.alive = lists_.alive.insert(std::move(nh)).position;
+                    // G's node becomes K's, parked (K is older: a smaller key)
+                    K.park.nh = takeAliveList(G);
+                    K.park.nh.key() = K.id;
                     K.has_alive = true;
+                    K.attached = false;
+                    K.list = &K.park.nh.mapped();
+                    ++lists_.parked;
                     K.contiguous = G.contiguous;
                     K.base = G.base;
                     K.index.swap(G.index);
@@ -639,9 +712,8 @@ namespace rtl
                 else
                 {
                     mergeAlive(K, G);
-                    dropAliveList(G.alive);
+                    dropAliveList(G);
                 }
-                G.has_alive = false;
             }
             G.in_window = 0;
             free_.push_back(gone);
@@ -652,7 +724,7 @@ namespace rtl
         // the cost is O(|G| + that part), not O(|K|).
         static void mergeAlive(Record &K, Record &G)
         {
-            std::vector<VectorType> &kp = K.alive->second, &gp = G.alive->second;
+            std::vector<VectorType> &kp = *K.list, &gp = *G.list;
             const size_t nk = kp.size(), ng = gp.size();
             if (indexAt(G, 0) > indexAt(K, nk - 1))
             {
