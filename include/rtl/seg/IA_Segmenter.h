@@ -147,12 +147,20 @@ namespace rtl
             // hot path, kept small enough to inline: the window is all in one cluster and sits at the end of its alive
             // list (tail mode, see enterTail); a point within reach of the newest joins it, and no other comparison
             // can change anything
-            if (lists_.tail != nullptr && checked_ && origin_finite && valid)
+            if (checked_ && origin_finite && valid)
             {
-                std::vector<VectorType> &v = *lists_.tail;
-                if (seg_detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq))
+                if (lists_.tail != nullptr)
                 {
-                    v.push_back(pt);
+                    std::vector<VectorType> &v = *lists_.tail;
+                    if (seg_detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq))
+                    {
+                        v.push_back(pt);
+                        return;
+                    }
+                }
+                else if (pad_ != 0)
+                {
+                    addToRing(pt, rsq);
                     return;
                 }
             }
@@ -188,6 +196,52 @@ namespace rtl
         static constexpr size_t none = std::numeric_limits<size_t>::max();
         static constexpr bool traced = Observer::enabled;
         typedef std::map<size_t, std::vector<VectorType>> AliveMap;
+
+        // The slot path without addPointSlow's checks (short clusters take it for every point): untraced, window lanes
+        // (so step > 1), a valid point and a finite origin, checked parameters, not in tail mode.
+        RTL_SEG_NOINLINE void addToRing(const VectorType &pt, ElementType rsq)
+        {
+            const ElementType tsq = thr_(rsq);
+            const ElementType *p = pt.data().data();
+            size_t rec;
+            if (!linkSameRecord(p, tsq, rec)) rec = linkInSlotOrder(p, tsq);
+            if (rec == none) rec = newRecord();
+            Record &R = lists_.recs[rec];   // stable from here on: no record is added below
+            ++R.in_window;
+            size_t slot;
+            if (count_ == step_)
+            {
+                slot = head_;
+                head_ = head_ + 1 == step_ ? 0 : head_ + 1;
+                if (!evictToAlive(slot)) evict(slot);
+            }
+            else
+            {
+                slot = head_ + count_;
+                if (slot >= step_) slot -= step_;
+                ++count_;
+            }
+            // putSlot for a point with a record
+            wpts_[slot] = pt;
+            wrec_[slot] = rec;
+            for (int k = 0; k < D; ++k) wc_[static_cast<size_t>(k) * pad_ + slot] = pt.data()[k];
+            wtag_[slot] = slotTag(rec);
+            widx_[slot] = stream_++;
+            if (R.in_window == step_) enterTail(rec);
+        }
+
+        // addPointSlow's window loop, untraced: every linked cluster in slot order, merged into the first.
+        RTL_SEG_NOINLINE size_t linkInSlotOrder(const ElementType *p, ElementType tsq)
+        {
+            size_t rec = none;
+            for (size_t w = 0; w < step_; ++w)
+            {
+                const size_t r = wrec_[w];
+                if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
+                rec = rec == none ? r : merge(rec, r);
+            }
+            return rec;
+        }
 
         RTL_SEG_NOINLINE void addPointSlow(const VectorType &pt, bool valid, bool origin_finite, ElementType rsq)
         {
@@ -271,8 +325,9 @@ namespace rtl
             const size_t r = wrec_[slot];
             if (r == none) return false;
             Record &R = lists_.recs[r];
-            if (!R.has_alive || R.in_window < 2 || !R.contiguous || R.base + R.list->size() != widx_[slot]) return false;
+            if (R.next != widx_[slot] || R.in_window < 2) return false;
             --R.in_window;
+            ++R.next;
             R.list->push_back(wpts_[slot]);
             return true;
         }
@@ -308,12 +363,13 @@ namespace rtl
                     // squaredDistance's arithmetic, in its order, lane by lane (0 + d0^2 is d0^2)
                     V q;
                     std::memcpy(&q, c + b, sizeof q);
-                    V d = p[0] - q;
+                    // q - p is -(p - q) exactly (rounding is symmetric): the same squares, and SSE2 computes it in place
+                    V d = q - p[0];
                     V sq = d * d;
                     for (int k = 1; k < D; ++k)
                     {
                         std::memcpy(&q, c + static_cast<size_t>(k) * P + b, sizeof q);
-                        d = p[k] - q;
+                        d = q - p[k];
                         sq += d * d;
                     }
                     M t;
@@ -395,6 +451,7 @@ namespace rtl
             if (!R.contiguous)
                 for (size_t k = 0; k < left; ++k) R.index.push_back(tail_stream_ + k);
             v.resize(tail_start_ + left);
+            syncNext(R);
             head_ = 0;
             count_ = step_;
             stream_ = tail_stream_ + total;
@@ -441,7 +498,12 @@ namespace rtl
             bool contiguous = true;
             size_t base = 0;
             std::vector<size_t> index;
+            // evictToAlive's test in one comparison: the stream index that extends the alive list contiguously
+            // (base + its size) while has_alive && contiguous, else none (syncNext); stale in tail mode
+            size_t next = none;
         };
+
+        static void syncNext(Record &R) { R.next = R.has_alive && R.contiguous ? R.base + R.list->size() : none; }
         // recs grows by moves only: a copy would leave `list` pointing into the old parked nodes
         static_assert(std::is_nothrow_move_constructible<Record>::value, "IA_Segmenter: Record must move without copying");
 
@@ -525,6 +587,7 @@ namespace rtl
             R.id = next_id_++;
             R.in_window = 0;
             R.has_alive = false;
+            R.next = none;
             return r;
         }
 
@@ -579,6 +642,7 @@ namespace rtl
             if (R.contiguous && idx != R.base + v.size()) listIndices(R);
             if (!R.contiguous) R.index.push_back(idx);
             v.push_back(p);
+            syncNext(R);
         }
 
         // Alive lists are map nodes handed back and forth with extract/insert, so that a cluster that gets an alive
@@ -607,6 +671,7 @@ namespace rtl
         typename AliveMap::node_type takeAliveList(Record &R)
         {
             R.has_alive = false;
+            R.next = none;
             if (R.attached) return lists_.alive.extract(R.alive);
             --lists_.parked;
             return std::move(R.park.nh);
@@ -630,6 +695,7 @@ namespace rtl
             R.index.resize(n);
             for (size_t k = 0; k < n; ++k) R.index[k] = R.base + k;
             R.contiguous = false;
+            R.next = none;
         }
 
         // The window point in `slot` leaves the window for its cluster's alive list; the cluster closes if it was
@@ -714,6 +780,7 @@ namespace rtl
                     mergeAlive(K, G);
                     dropAliveList(G);
                 }
+                syncNext(K);
             }
             G.in_window = 0;
             free_.push_back(gone);
