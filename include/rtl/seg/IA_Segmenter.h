@@ -206,6 +206,7 @@ namespace rtl
             size_t rec;
             if (!linkSameRecord(p, tsq, rec)) rec = linkInSlotOrder(p, tsq);
             if (rec == none) rec = newRecord();
+            hint_ = rec;
             Record &R = lists_.recs[rec];   // stable from here on: no record is added below
             ++R.in_window;
             size_t slot;
@@ -213,7 +214,7 @@ namespace rtl
             {
                 slot = head_;
                 head_ = head_ + 1 == step_ ? 0 : head_ + 1;
-                if (!evictToAlive(slot)) evict(slot);
+                evictFromRing(slot);
             }
             else
             {
@@ -228,6 +229,56 @@ namespace rtl
             wtag_[slot] = slotTag(rec);
             widx_[slot] = stream_++;
             if (R.in_window == step_) enterTail(rec);
+        }
+
+        // addToRing's eviction, evict() without clearing the slot (the caller rewrites it): a point that extends
+        // its cluster's alive list, or starts it with a pooled node, inline; the last point of a cluster whose alive
+        // list it extends closes it in closeFromRing; anything else through evict().
+        void evictFromRing(size_t slot)
+        {
+            const size_t r = wrec_[slot];
+            if (r == none) return;
+            Record &R = lists_.recs[r];
+            const size_t idx = widx_[slot];
+            if (R.in_window >= 2)
+            {
+                if (R.next != idx)
+                {
+                    if (R.has_alive || node_pool_.nodes.empty())
+                    {
+                        evict(slot);
+                        return;
+                    }
+                    newAliveList(R);
+                    R.contiguous = true;
+                    R.base = idx;
+                    R.index.clear();
+                    R.next = idx;
+                }
+                --R.in_window;
+                ++R.next;
+                R.list->push_back(wpts_[slot]);
+                return;
+            }
+            if (R.next == idx) closeFromRing(r, slot);
+            else evict(slot);
+        }
+
+        // evict() of the last window point of a cluster whose alive list it extends: the list and the point go out
+        // in one exact-size vector, without passing through the list.
+        RTL_SEG_NOINLINE void closeFromRing(size_t r, size_t slot)
+        {
+            Record &R = lists_.recs[r];
+            const std::vector<VectorType> &v = *R.list;
+            std::vector<VectorType> c;
+            c.reserve(v.size() + 1);
+            c.insert(c.end(), v.begin(), v.end());
+            c.push_back(wpts_[slot]);
+            closed_.push_back(std::move(c));
+            ++closed_left_;
+            R.in_window = 0;
+            dropAliveList(R);
+            free_.push_back(r);
         }
 
         // addPointSlow's window loop, untraced: every linked cluster in slot order, merged into the first.
@@ -295,6 +346,7 @@ namespace rtl
                     rec = newRecord();
                     if constexpr (traced) report(ia_trace::Open{stream_, lists_.recs[rec].id});
                 }
+                hint_ = rec;
                 Rn = &lists_.recs[rec];   // stable from here on: no record is added below
                 ++Rn->in_window;
             }
@@ -332,10 +384,12 @@ namespace rtl
             return true;
         }
 
-        // Most points link to window points of one cluster only, that of the newest window point, or to none. One
-        // pass over the window's coordinate arrays (vectorised: independent per slot) tells: true with rec = that
+        // Most points link to window points of one cluster only, that of the last valid point (hint_), or to none.
+        // One pass over the window's coordinate arrays (vectorised: independent per slot) tells: true with rec = that
         // cluster or none (a new cluster opens); false when other clusters are linked too, which the caller's loop
-        // resolves in slot order, as before. Free and gap slots hold NaN coordinates, so they never link.
+        // resolves in slot order, as before. Free and gap slots hold NaN coordinates, so they never link. hint_ is
+        // the record of the last valid point added at step > 1 (also past gaps, unlike the newest slot's); it may be
+        // stale (freed, or reused since): any guess gives the right answer, a wrong one costs the caller's loop.
         bool linkSameRecord(const ElementType *p, ElementType tsq, size_t &rec) const
         {
             if constexpr (Lanes::n == 0) return false;
@@ -345,12 +399,7 @@ namespace rtl
                 typedef typename Lanes::M M;
                 const size_t P = pad_;
                 if (P == 0) return false;
-                size_t r0 = none;
-                if (count_ != 0)
-                {
-                    const size_t newest = head_ + count_ - 1;
-                    r0 = wrec_[newest < step_ ? newest : newest - step_];
-                }
+                const size_t r0 = hint_;
                 const ElementType *c = wc_.data();
                 const Tag *tg = wtag_.data();
                 const V tv = V{} + tsq;
@@ -877,6 +926,7 @@ namespace rtl
         static Tag slotTag(size_t rec) { return static_cast<Tag>(2 * rec + 1); }
 
         size_t pad_ = 0;
+        size_t hint_ = none;   // linkSameRecord's guess: the record of the last valid point
         mutable std::vector<ElementType> wc_;
         mutable std::vector<Tag> wtag_;
 
