@@ -53,6 +53,14 @@
 #define RTL_SEG_NOINLINE
 #endif
 #endif
+// A branch the compiler should lay out as the fall-through path.
+#ifndef RTL_SEG_LIKELY
+#if defined(__GNUC__) || defined(__clang__)
+#define RTL_SEG_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define RTL_SEG_LIKELY(x) (x)
+#endif
+#endif
 
 namespace rtl
 {
@@ -129,8 +137,11 @@ namespace rtl
         void addPoint(const VectorType &pt, const VectorType &origin = VectorType::zeros())
         {
             // x - x is 0 for finite x, NaN otherwise, so one comparison of the sums checks every coordinate
-            ElementType rsq = 0, pz = 0, oz = 0;
-            for (int k = 0; k < D; ++k)
+            // the first coordinate's terms start the sums: 0 + x is x for them (a square or x - x is never -0), and
+            // the compiler cannot drop the additions to 0 itself
+            const ElementType a0 = pt.data()[0], o0 = origin.data()[0];
+            ElementType rsq = (a0 - o0) * (a0 - o0), pz = a0 - a0, oz = o0 - o0;
+            for (int k = 1; k < D; ++k)
             {
                 const ElementType a = pt.data()[k], o = origin.data()[k];
                 rsq += (a - o) * (a - o);
@@ -152,7 +163,8 @@ namespace rtl
                 if (lists_.tail != nullptr)
                 {
                     std::vector<VectorType> &v = *lists_.tail;
-                    if (seg_detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq))
+                    // likely: the join is then straight-line code in the caller's loop, not a jump out and back
+                    if (RTL_SEG_LIKELY(seg_detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq)))
                     {
                         v.push_back(pt);
                         return;
