@@ -448,6 +448,41 @@ TEST(BadInput, BoundsStepAndOrigin)
     EXPECT_EQ(ia.closedClustersAvailable(), 1u);
 }
 
+namespace
+{
+    // A point with one non-finite coordinate (any of them: addPoint starts its sums with the first) is a gap; an
+    // origin with one is refused.
+    template<class V>
+    void iaOneNonFiniteCoordinate()
+    {
+        using E = typename V::ElementType;
+        const E bad[] = {std::numeric_limits<E>::quiet_NaN(), std::numeric_limits<E>::infinity(), -std::numeric_limits<E>::infinity()};
+        for (int k = 0; k < V::dimensionality(); ++k)
+            for (E b : bad)
+            {
+                typename V::EigenType e = V::zeros().data();
+                e[0] = 1;
+                const V p0(e), p2(e);
+                e[k] = b;
+                const V gap(e);
+                rtl::IA_Segmenter<V> ia(2, E(0.1), E(0.1), E(0));
+                ia.addPoint(p0);
+                ia.addPoint(gap);
+                ia.addPoint(p2);   // links to p0 across the gap
+                ia.flush();
+                ASSERT_EQ(ia.closedClustersAvailable(), 1u) << "coordinate " << k << " value " << b;
+                EXPECT_EQ(ia.grabCluster(), (std::vector<V>{p0, p2})) << "coordinate " << k << " value " << b;
+                EXPECT_THROW(ia.addPoint(p0, gap), std::invalid_argument) << "coordinate " << k << " value " << b;
+            }
+    }
+}
+
+TEST(BadInput, IaOneNonFiniteCoordinateIsAGap)
+{
+    iaOneNonFiniteCoordinate<V2f>();
+    iaOneNonFiniteCoordinate<V3d>();
+}
+
 TEST(BadInput, LoadDataReplacesPreviousResult)
 {
     rtl::CAR_Segmenter<V2f> car(2, 0.1f, 0.1f);
