@@ -14,6 +14,12 @@
 // Issue 17 item 2 (the window test ORs one tag word per lane, the evicted slot is not cleared before putSlot rewrites
 // it, closedClustersAvailable() reads a count): 36.4M -> 31.9M at 100k, 108.9M -> 97.8M at 1M; step 10 ~10 clusters
 // (tail mode) 7.35M -> 6.65M at 100k (GCC 12 -O3, the scan loop of b_seg_common.h's segmentIa, same clusters).
+// Issue 17 item 2, second pass (95161fa..22b28a0: parked alive lists, addToRing, evictFromRing/closeFromRing, the
+// last valid point's record as the window test's guess), counted on segmentIa's loop alone: 31.7M -> 26.3M at 100k
+// ~10,000 clusters step 10 (step 3 19.2M -> 17.7M), 95.7M -> 88.4M at 1M; tail mode 6.45M -> 6.25M. Time ratio to
+// c26034c at 100k ~10,000 clusters step 10: 0.86 -> 0.76. The tail-mode rows (~10 clusters, and 1M/10M) of this
+// binary move by +-10 % with the heap layout alone (one extra allocation before the IA rows swaps which of b9dd06b
+// and 22b28a0 is faster): compare them with a second layout before reading a few per cent into them.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
