@@ -293,7 +293,8 @@ namespace rtl
             free_.push_back(r);
         }
 
-        // addPointSlow's window loop, untraced: every linked cluster in slot order, merged into the first.
+        // The window loop of an untraced segmenter (addToRing, addPointSlow): every linked cluster in slot order, merged
+        // into the first. addPointSlow's traced loop is the same with the trace's reports.
         RTL_SEG_NOINLINE size_t linkInSlotOrder(const ElementType *p, ElementType tsq)
         {
             size_t rec = none;
@@ -335,24 +336,25 @@ namespace rtl
             {
                 const ElementType tsq = thr_(rsq);
                 const ElementType *p = pt.data().data();
-                bool resolved = false;
-                if constexpr (!traced) resolved = linkSameRecord(p, tsq, rec);
-                for (size_t w = 0; w < step_ && !resolved; ++w)
+                if constexpr (!traced)
                 {
-                    const size_t r = wrec_[w];
-                    if constexpr (traced)
+                    if (!linkSameRecord(p, tsq, rec)) rec = linkInSlotOrder(p, tsq);
+                }
+                else
+                    for (size_t w = 0; w < step_; ++w)   // linkInSlotOrder with the trace's reports
+                    {
+                        const size_t r = wrec_[w];
                         if (observer_ && r != none)
                             reportComparison(stream_, widx_[w], seg_detail::squaredDistance<D>(p, wpts_[w].data().data()), tsq);
-                    if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
-                    if constexpr (traced)
+                        if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
                         if (observer_)
                         {
                             if (rec == none) (*observer_)(ia_trace::Link{stream_, widx_[w], lists_.recs[r].id});
                             else (*observer_)(ia_trace::Merge{stream_, widx_[w], std::max(lists_.recs[rec].id, lists_.recs[r].id),
                                                               std::min(lists_.recs[rec].id, lists_.recs[r].id)});
                         }
-                    rec = rec == none ? r : merge(rec, r);
-                }
+                        rec = rec == none ? r : merge(rec, r);
+                    }
                 if (rec == none)
                 {
                     rec = newRecord();
