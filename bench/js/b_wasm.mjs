@@ -11,10 +11,12 @@
 //     wasm library / native (<= 1.25) and time outside the library / library (< 10 % at 100k), the outside time
 //     being the whole JS call minus its library time, per round. The kept counts (segments, clusters) of both
 //     sides are checked equal. The native tool is one process for the whole run (see native() below). "faults":
-//     the minor page faults of a wasm call (median): the ArrayBuffers of a call's results fault their pages in
-//     when the allocator has no written pages to reuse, ~10 us a page on this VM, 200 pages for CAR's per-point
-//     arrays at 100k points. With a native process forked per round, every such page faulted, and CAR's outside
-//     time was 2.2 ms at 100k (442 % of the library call) instead of ~0.1 ms.
+//     the minor page faults of a wasm call (median). CAR returns its per-point arrays (8 bytes a point) in a new
+//     ArrayBuffer, whose pages fault in whenever the C allocator under it hands out fresh memory (a fresh mmap, or
+//     the heap grown again after freed buffers were trimmed off its top), ~10 us a page on this VM: 200 pages at
+//     100k points, ~2-7 ms. Calls in a row (this section) meet that state, interleaved calls (section 2) mostly
+//     reuse pages. "floor": a new ArrayBuffer of the same size, filled, timed after each round's calls: it meets
+//     the same state, so outside - floor is the package's own share.
 //  2. time outside the library (argument checks, copy in, the C++ input check, results out) per function at
 //     100,000 points, as a share of the library's time (the goal: under 10 %); ", pointBuffer" rows: the input is
 //     an rtl.pointBuffer() view, read in place (no copy in).
@@ -73,8 +75,8 @@ function scan(n) {
 
 // The native tool: one process for the whole run (--serve: a command a line, an answer a line), started before
 // the first wasm call. A process started per round forks this one each time, and a fork write-protects all of
-// its memory: every page the following wasm calls wrote faulted once (CAR's outside time at 100k: 2.2 ms instead of
-// 0.1). --summary: only the time and the count, not the results (1.4 MB of JSON for CAR at 100k points).
+// its memory: every page the following wasm calls wrote faulted once more. --summary: only the time and the
+// count, not the results (1.4 MB of JSON for CAR at 100k points, parsed between the timed calls).
 let server = null, answers = null;
 function startNative() {
   server = spawn(TOOL, ['--serve'], { stdio: ['pipe', 'pipe', 'inherit'] });
@@ -97,20 +99,30 @@ console.log(`rtl-wasm ${rtl.version} benchmarks (${PKG}): ${rounds} interleaved 
 
 // ---- 1. wasm vs native
 console.log(`\n1. wasm vs native (library call; native ${haveNative ? TOOL : 'tool not built: column skipped'}) (${load()})`);
-console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)} ${'faults'.padStart(7)}  (ms; ratios: medians, then minima; faults: minor page faults per wasm call, median)`);
+console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)} ${'faults'.padStart(7)} ${'floor'.padStart(8)} ${'faults'.padStart(7)}  (ms; ratios: medians, then minima; faults: minor page faults per call, median; floor: a new ArrayBuffer of the call's per-point results, filled)`);
 const CASES = [
   ['FTLS (sigma 0.03, delta 3)', semicircle, (p) => rtl.vectorize(p, { method: 'ftls', sigma: 0.03, delta: 3 }), 'vectorize', [0, 0, 0.03, 3, 0.09, 1, 10000, '--split-corners']],
   ['Douglas-Peucker (epsilon 0.09)', semicircle, (p) => rtl.vectorize(p, { method: 'dp', epsilon: 0.09 }), 'vectorize', [3, 0, 0.03, 3, 0.09, 1, 10000]],
-  ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5]],
+  ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5], 8],
 ];
+// The floor of a call's time outside the library when it returns per-point arrays as owned copies (CAR: labels and
+// indices, 8 bytes a point): a new ArrayBuffer of that size, filled. Timed after each round's wasm calls, the same
+// number of times: it meets the allocator in the state they left (fresh pages or reused ones).
+function floorMs(bytes, src) {
+  const f0 = faults(), a = performance.now();
+  const b = new Uint8Array(bytes);
+  b.set(src);
+  return [performance.now() - a, faults() - f0, b[bytes - 1]];
+}
 const pct = (v, w = 8) => (Number.isFinite(v) ? `${(100 * v).toFixed(1)}%` : '-').padStart(w);
 for (const n of SIZES) {
-  for (const [name, make, f, op, params] of CASES) {
+  for (const [name, make, f, op, params, bytesPerPoint = 0] of CASES) {
     const xy = make(n), file = join(dir, `${op}-${n}.f64`);
+    const floorSrc = new Uint8Array(bytesPerPoint * n).fill(1);
     writeFileSync(file, xy);
     const first = f(xy);  // warm-up: tier-up, memory growth, the kept objects
     const count = op === 'segment' ? first.clusters.length : first.count;
-    const t = { nat: [], lib: [], whole: [], out: [], faults: [] };
+    const t = { nat: [], lib: [], whole: [], out: [], faults: [], floor: [], floorFaults: [] };
     for (let r = 0; r < rounds; r++) {
       if (haveNative) {
         const nat = await native(op, file, params);
@@ -125,11 +137,15 @@ for (const n of SIZES) {
         c.whole.push(w); c.lib.push(rtl.lastComputeMs); c.out.push(w - rtl.lastComputeMs); c.faults.push(faults() - f0);
       }
       t.whole.push(median(c.whole)); t.lib.push(median(c.lib)); t.out.push(median(c.out)); t.faults.push(median(c.faults));
+      if (bytesPerPoint) {
+        const fl = Array.from({ length: REPS }, () => floorMs(bytesPerPoint * n, floorSrc));
+        t.floor.push(median(fl.map((x) => x[0]))); t.floorFaults.push(median(fl.map((x) => x[1])));
+      }
     }
     const nat = haveNative ? median(t.nat) : NaN, lib = median(t.lib), out = median(t.out);
     // minima: the least disturbed call of each kind on a loaded machine
     const minNat = haveNative ? Math.min(...t.nat) : NaN, minLib = Math.min(...t.lib), minOut = Math.min(...t.out);
-    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(36)} ${fmt(nat, 8)} ${fmt(lib, 8)} ${fmt(lib / nat, 8)} ${fmt(minLib / minNat, 8)} ${fmt(out, 8)} ${pct(out / lib)} ${pct(minOut / minLib)} ${fmt(median(t.whole), 8)} ${String(median(t.faults)).padStart(7)}`);
+    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(36)} ${fmt(nat, 8)} ${fmt(lib, 8)} ${fmt(lib / nat, 8)} ${fmt(minLib / minNat, 8)} ${fmt(out, 8)} ${pct(out / lib)} ${pct(minOut / minLib)} ${fmt(median(t.whole), 8)} ${String(median(t.faults)).padStart(7)} ${fmt(bytesPerPoint ? median(t.floor) : NaN, 8)} ${(bytesPerPoint ? String(median(t.floorFaults)) : '-').padStart(7)}`);
   }
 }
 
