@@ -11,17 +11,17 @@
 //     wasm library / native (<= 1.25) and time outside the library / library (< 10 % at 100k), the outside time
 //     being the whole JS call minus its library time, per round. The kept counts (segments, clusters) of both
 //     sides are checked equal. The native tool is one process for the whole run (see native() below). "faults":
-//     the minor page faults of a wasm call (median). CAR returns its per-point arrays (8 bytes a point) in a new
-//     ArrayBuffer, whose pages fault in whenever the C allocator under it hands out fresh memory (a fresh mmap, or
+//     the minor page faults of a wasm call (median). CAR returns its per-point arrays (8 bytes a point) in new
+//     ArrayBuffers, whose pages fault in whenever the C allocator under it hands out fresh memory (a fresh mmap, or
 //     the heap grown again after freed buffers were trimmed off its top), ~10 us a page on this VM: 200 pages at
 //     100k points, ~2-7 ms. Calls in a row (this section) meet that state, interleaved calls (section 2) mostly
-//     reuse pages. "floor": a new ArrayBuffer of the same size, filled, timed after each round's calls: it meets
+//     reuse pages. "floor": new ArrayBuffers of the same sizes, filled, timed after each round's calls: it meets
 //     the same state, so outside - floor is the package's own share.
 //  2. time outside the library (argument checks, copy in, the C++ input check, results out) per function at
 //     100,000 points, as a share of the library's time (the goal: under 10 %); ", pointBuffer" rows: the input is
 //     an rtl.pointBuffer() view, read in place (no copy in).
-//  2b. segment()'s outside time by parts at 100,000 points, against its floor (a new ArrayBuffer of 8 bytes a point,
-//     filled: the two per-point arrays segment() returns as owned copies).
+//  2b. segment()'s outside time by parts at 100,000 points, against its floor (two new ArrayBuffers of 4 bytes a
+//     point, filled: the two per-point arrays segment() returns as owned copies).
 //  3. gzipped size of the .wasm and the JS.
 // RTL_PACKAGE=dir: a package folder built by wasm/build.mjs with RTL_DIST_DIR, instead of dist/.
 import { spawn } from 'node:child_process';
@@ -99,20 +99,21 @@ console.log(`rtl-wasm ${rtl.version} benchmarks (${PKG}): ${rounds} interleaved 
 
 // ---- 1. wasm vs native
 console.log(`\n1. wasm vs native (library call; native ${haveNative ? TOOL : 'tool not built: column skipped'}) (${load()})`);
-console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)} ${'faults'.padStart(7)} ${'floor'.padStart(8)} ${'faults'.padStart(7)}  (ms; ratios: medians, then minima; faults: minor page faults per call, median; floor: a new ArrayBuffer of the call's per-point results, filled)`);
+console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)} ${'faults'.padStart(7)} ${'floor'.padStart(8)} ${'faults'.padStart(7)}  (ms; ratios: medians, then minima; faults: minor page faults per call, median; floor: new ArrayBuffers of the call's per-point results, filled)`);
 const CASES = [
   ['FTLS (sigma 0.03, delta 3)', semicircle, (p) => rtl.vectorize(p, { method: 'ftls', sigma: 0.03, delta: 3 }), 'vectorize', [0, 0, 0.03, 3, 0.09, 1, 10000, '--split-corners']],
   ['Douglas-Peucker (epsilon 0.09)', semicircle, (p) => rtl.vectorize(p, { method: 'dp', epsilon: 0.09 }), 'vectorize', [3, 0, 0.03, 3, 0.09, 1, 10000]],
   ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5], 8],
 ];
 // The floor of a call's time outside the library when it returns per-point arrays as owned copies (CAR: labels and
-// indices, 8 bytes a point): a new ArrayBuffer of that size, filled. Timed after each round's wasm calls, the same
+// indices, 4 + 4 bytes a point): two new ArrayBuffers of those sizes, filled. Timed after each round's wasm calls, the same
 // number of times: it meets the allocator in the state they left (fresh pages or reused ones).
 function floorMs(bytes, src) {
   const f0 = faults(), a = performance.now();
-  const b = new Uint8Array(bytes);
-  b.set(src);
-  return [performance.now() - a, faults() - f0, b[bytes - 1]];
+  const b = new Uint8Array(bytes / 2), c = new Uint8Array(bytes / 2);  // two arrays, as segment() returns
+  b.set(src.subarray(0, bytes / 2));
+  c.set(src.subarray(bytes / 2));
+  return [performance.now() - a, faults() - f0, b[0] + c[0]];
 }
 const pct = (v, w = 8) => (Number.isFinite(v) ? `${(100 * v).toFixed(1)}%` : '-').padStart(w);
 for (const n of SIZES) {
@@ -198,7 +199,7 @@ OUT.forEach(([name], k) => {
 });
 
 // ---- 2b. segment()'s outside time by parts, with its floor: segment() returns owned copies of two per-point arrays
-// (labels, indices: 8 bytes a point) in a new ArrayBuffer, so no call can spend less outside than allocating and
+// (labels, indices: 8 bytes a point) in new ArrayBuffers, so no call can spend less outside than allocating and
 // filling 8 bytes a point. Interleaved rounds; the page faults are the kernel's count per call (median): on this
 // class of virtual machine a fault costs ~10 us, and a fresh ArrayBuffer's 200 pages at 100k points cost ~2 ms
 // whenever the allocator hands out new pages instead of freed ones.
@@ -215,7 +216,7 @@ console.log(`${'part'.padEnd(58)} ${'median'.padStart(9)} ${'min'.padStart(9)} $
   let sink = 0;
   const PARTS = [
     ['segment(): whole call - library', () => { const a = performance.now(); rtl.segment(ring2, opts); return performance.now() - a - rtl.lastComputeMs; }],
-    ['floor: new ArrayBuffer of 8 B/point + copy into it', () => { const a = performance.now(); const b = new Uint8Array(8 * N2); b.set(perPoint); sink += b[1]; return performance.now() - a; }],
+    ['floor: two new ArrayBuffers of 4 B/point, filled', () => { const [ms, , v] = floorMs(8 * N2, perPoint); sink += v; return ms; }],
     ['part: copy in (16 B/point into an existing array)', () => { const a = performance.now(); copyIn.set(ring2); return performance.now() - a; }],
     ['part: cluster objects and subarrays', () => {
       const a = performance.now(), clusters = [];

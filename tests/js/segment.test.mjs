@@ -39,22 +39,6 @@ test('segment: six arcs -> six clusters with their index ranges; a gap stays unl
   for (let i = 0; i < 360; i++) if (i !== 10) assert.equal(s.labels[i], Math.floor(i / 60), `label ${i}`);
 });
 
-test('segment: labels and every cluster\'s indices and ranges are views on one ArrayBuffer of their own', () => {
-  const s = rtl.segment(arcs([5, 3, 5, 3, 5, 3]), { step: 3, lowerBound: 0.1, upperBound: 0.5 });
-  const buf = s.labels.buffer;
-  assert.ok(buf instanceof ArrayBuffer);
-  for (const c of s.clusters) {
-    assert.equal(c.indices.buffer, buf);
-    assert.equal(c.ranges.buffer, buf);
-  }
-  // labels, indices (360 each), offsets (7), runs (12), run offsets (7), each padded to 8 bytes
-  assert.equal(buf.byteLength, 4 * (360 + 360 + 8 + 12 + 8));
-  const labels = Array.from(s.labels), indices = s.clusters.map((c) => Array.from(c.indices));
-  rtl.segment(arcs([4, 4, 4, 4, 4, 4]), { step: 2 });  // the module's result block is reused: the copies stay
-  assert.deepEqual(Array.from(s.labels), labels);
-  assert.deepEqual(s.clusters.map((c) => Array.from(c.indices)), indices);
-});
-
 test('segment: +-Infinity in any coordinate is refused and NaN is a gap, at every position of short inputs', () => {
   // the check runs while the numbers are copied, four a step then one by one: every position of the step and of
   // the tail is covered
