@@ -10,17 +10,26 @@
 //     caches, against the native side's warm median, e.g. DP at 100k 1.63x native that way, 1.2x with both warm.) Two ratios per case (issue 17 item 4's goals):
 //     wasm library / native (<= 1.25) and time outside the library / library (< 10 % at 100k), the outside time
 //     being the whole JS call minus its library time, per round. The kept counts (segments, clusters) of both
-//     sides are checked equal.
+//     sides are checked equal. The native tool is one process for the whole run (see native() below). "faults":
+//     the minor page faults of a wasm call (median). CAR returns its per-point arrays (8 bytes a point) in new
+//     ArrayBuffers, whose pages fault in whenever the C allocator under it hands out fresh memory (a fresh mmap, or
+//     the heap grown again after freed buffers were trimmed off its top), ~10 us a page on this VM: 200 pages at
+//     100k points, ~2-7 ms. Calls in a row (this section) meet that state, interleaved calls (section 2) mostly
+//     reuse pages. "floor": new ArrayBuffers of the same sizes, filled, timed after each round's calls: it meets
+//     the same state, so outside - floor is the package's own share.
 //  2. time outside the library (argument checks, copy in, the C++ input check, results out) per function at
 //     100,000 points, as a share of the library's time (the goal: under 10 %); ", pointBuffer" rows: the input is
 //     an rtl.pointBuffer() view, read in place (no copy in).
+//  2b. segment()'s outside time by parts at 100,000 points, against its floor (two new ArrayBuffers of 4 bytes a
+//     point, filled: the two per-point arrays segment() returns as owned copies).
 //  3. gzipped size of the .wasm and the JS.
 // RTL_PACKAGE=dir: a package folder built by wasm/build.mjs with RTL_DIST_DIR, instead of dist/.
-import { execFileSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { cpus, loadavg, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { createInterface } from 'node:readline';
 import { gzipSync } from 'node:zlib';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
@@ -64,50 +73,80 @@ function scan(n) {
   return xy;
 }
 
-function native(op, file, params) {
-  const out = JSON.parse(execFileSync(TOOL, [op, file, '2', ...params.map(String), `--reps=${REPS}`], { encoding: 'utf8', maxBuffer: 1 << 30 }));
-  return { ms: out.seconds * 1e3, count: op === 'segment' ? out.offsets.length - 1 : out.count };
+// The native tool: one process for the whole run (--serve: a command a line, an answer a line), started before
+// the first wasm call. A process started per round forks this one each time, and a fork write-protects all of
+// its memory: every page the following wasm calls wrote faulted once more. --summary: only the time and the
+// count, not the results (1.4 MB of JSON for CAR at 100k points, parsed between the timed calls).
+let server = null, answers = null;
+function startNative() {
+  server = spawn(TOOL, ['--serve'], { stdio: ['pipe', 'pipe', 'inherit'] });
+  answers = createInterface({ input: server.stdout })[Symbol.asyncIterator]();
 }
+async function native(op, file, params) {
+  server.stdin.write(`${[op, file, '2', ...params.map(String), `--reps=${REPS}`, '--summary'].join(' ')}\n`);
+  const { value, done } = await answers.next();
+  const out = done ? { error: true } : JSON.parse(value);
+  if (out.error) throw new Error(`rtl_native failed on ${op} ${file}`);
+  return { ms: out.seconds * 1e3, count: out.count };
+}
+// Minor page faults of this process so far (the kernel's count): a fresh ArrayBuffer's pages fault on first write.
+const faults = () => process.resourceUsage().minorPageFault;
 
+const haveNative = existsSync(TOOL);
+if (haveNative) startNative();
 const rtl = await init();
 console.log(`rtl-wasm ${rtl.version} benchmarks (${PKG}): ${rounds} interleaved rounds, medians, Node ${process.versions.node}${smoke ? ' (smoke)' : ''}`);
 
 // ---- 1. wasm vs native
-const haveNative = existsSync(TOOL);
 console.log(`\n1. wasm vs native (library call; native ${haveNative ? TOOL : 'tool not built: column skipped'}) (${load()})`);
-console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)}  (ms; ratios: medians, then minima)`);
+console.log(`${'case'.padEnd(36)} ${'native'.padStart(8)} ${'wasm lib'.padStart(8)} ${'lib/nat'.padStart(8)} ${'min l/n'.padStart(8)} ${'outside'.padStart(8)} ${'out/lib'.padStart(8)} ${'min o/l'.padStart(8)} ${'whole'.padStart(8)} ${'faults'.padStart(7)} ${'floor'.padStart(8)} ${'faults'.padStart(7)}  (ms; ratios: medians, then minima; faults: minor page faults per call, median; floor: new ArrayBuffers of the call's per-point results, filled)`);
 const CASES = [
   ['FTLS (sigma 0.03, delta 3)', semicircle, (p) => rtl.vectorize(p, { method: 'ftls', sigma: 0.03, delta: 3 }), 'vectorize', [0, 0, 0.03, 3, 0.09, 1, 10000, '--split-corners']],
   ['Douglas-Peucker (epsilon 0.09)', semicircle, (p) => rtl.vectorize(p, { method: 'dp', epsilon: 0.09 }), 'vectorize', [3, 0, 0.03, 3, 0.09, 1, 10000]],
-  ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5]],
+  ['CAR (step 3, 0.1-0.5)', scan, (p) => rtl.segment(p, { step: 3, lowerBound: 0.1, upperBound: 0.5 }), 'segment', [3, 0.1, 0.5], 8],
 ];
+// The floor of a call's time outside the library when it returns per-point arrays as owned copies (CAR: labels and
+// indices, 4 + 4 bytes a point): two new ArrayBuffers of those sizes, filled. Timed after each round's wasm calls, the same
+// number of times: it meets the allocator in the state they left (fresh pages or reused ones).
+function floorMs(bytes, src) {
+  const f0 = faults(), a = performance.now();
+  const b = new Uint8Array(bytes / 2), c = new Uint8Array(bytes / 2);  // two arrays, as segment() returns
+  b.set(src.subarray(0, bytes / 2));
+  c.set(src.subarray(bytes / 2));
+  return [performance.now() - a, faults() - f0, b[0] + c[0]];
+}
 const pct = (v, w = 8) => (Number.isFinite(v) ? `${(100 * v).toFixed(1)}%` : '-').padStart(w);
 for (const n of SIZES) {
-  for (const [name, make, f, op, params] of CASES) {
+  for (const [name, make, f, op, params, bytesPerPoint = 0] of CASES) {
     const xy = make(n), file = join(dir, `${op}-${n}.f64`);
+    const floorSrc = new Uint8Array(bytesPerPoint * n).fill(1);
     writeFileSync(file, xy);
     const first = f(xy);  // warm-up: tier-up, memory growth, the kept objects
     const count = op === 'segment' ? first.clusters.length : first.count;
-    const t = { nat: [], lib: [], whole: [], out: [] };
+    const t = { nat: [], lib: [], whole: [], out: [], faults: [], floor: [], floorFaults: [] };
     for (let r = 0; r < rounds; r++) {
       if (haveNative) {
-        const nat = native(op, file, params);
+        const nat = await native(op, file, params);
         if (nat.count !== count) throw new Error(`${name} ${n}: native kept ${nat.count}, wasm ${count}`);
         t.nat.push(nat.ms);
       }
       // The wasm side under the native side's protocol: REPS calls in a row, their median (the first call after
       // the native process ran starts on cold caches, as the native tool's first call does).
-      const c = { whole: [], lib: [], out: [] };
+      const c = { whole: [], lib: [], out: [], faults: [] };
       for (let k = 0; k < REPS; k++) {
-        const a = performance.now(); f(xy); const w = performance.now() - a;
-        c.whole.push(w); c.lib.push(rtl.lastComputeMs); c.out.push(w - rtl.lastComputeMs);
+        const f0 = faults(), a = performance.now(); f(xy); const w = performance.now() - a;
+        c.whole.push(w); c.lib.push(rtl.lastComputeMs); c.out.push(w - rtl.lastComputeMs); c.faults.push(faults() - f0);
       }
-      t.whole.push(median(c.whole)); t.lib.push(median(c.lib)); t.out.push(median(c.out));
+      t.whole.push(median(c.whole)); t.lib.push(median(c.lib)); t.out.push(median(c.out)); t.faults.push(median(c.faults));
+      if (bytesPerPoint) {
+        const fl = Array.from({ length: REPS }, () => floorMs(bytesPerPoint * n, floorSrc));
+        t.floor.push(median(fl.map((x) => x[0]))); t.floorFaults.push(median(fl.map((x) => x[1])));
+      }
     }
     const nat = haveNative ? median(t.nat) : NaN, lib = median(t.lib), out = median(t.out);
     // minima: the least disturbed call of each kind on a loaded machine
     const minNat = haveNative ? Math.min(...t.nat) : NaN, minLib = Math.min(...t.lib), minOut = Math.min(...t.out);
-    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(36)} ${fmt(nat, 8)} ${fmt(lib, 8)} ${fmt(lib / nat, 8)} ${fmt(minLib / minNat, 8)} ${fmt(out, 8)} ${pct(out / lib)} ${pct(minOut / minLib)} ${fmt(median(t.whole), 8)}`);
+    console.log(`${`${name} ${n.toLocaleString('en')}`.padEnd(36)} ${fmt(nat, 8)} ${fmt(lib, 8)} ${fmt(lib / nat, 8)} ${fmt(minLib / minNat, 8)} ${fmt(out, 8)} ${pct(out / lib)} ${pct(minOut / minLib)} ${fmt(median(t.whole), 8)} ${String(median(t.faults)).padStart(7)} ${fmt(bytesPerPoint ? median(t.floor) : NaN, 8)} ${(bytesPerPoint ? String(median(t.floorFaults)) : '-').padStart(7)}`);
   }
 }
 
@@ -159,9 +198,46 @@ OUT.forEach(([name], k) => {
   console.log(`${name.padEnd(40)} ${fmt(median(T[k].whole))} ${fmt(lib)} ${fmt(outside)} ${(100 * outside / lib).toFixed(1).padStart(9)} ${fmt(Math.min(...outs))} ${fmt(Math.min(...T[k].lib))}`);
 });
 
+// ---- 2b. segment()'s outside time by parts, with its floor: segment() returns owned copies of two per-point arrays
+// (labels, indices: 8 bytes a point) in new ArrayBuffers, so no call can spend less outside than allocating and
+// filling 8 bytes a point. Interleaved rounds; the page faults are the kernel's count per call (median): on this
+// class of virtual machine a fault costs ~10 us, and a fresh ArrayBuffer's 200 pages at 100k points cost ~2 ms
+// whenever the allocator hands out new pages instead of freed ones.
+console.log(`\n2b. segment() (CAR, step 3) outside the library by parts, ${N2.toLocaleString('en')} points (${load()})`);
+console.log(`${'part'.padEnd(58)} ${'median'.padStart(9)} ${'min'.padStart(9)} ${'% of lib'.padStart(9)} ${'faults'.padStart(7)}  (ms)`);
+{
+  const opts = { step: 3, lowerBound: 0.1, upperBound: 0.5 };
+  const ref = rtl.segment(ring2, opts);
+  const perPoint = new Uint8Array(8 * N2).fill(1), copyIn = new Float64Array(2 * N2);
+  const labels = ref.labels, indices = new Uint32Array(N2);
+  const offsets = [0], runs = [], runOffsets = [0];
+  for (const c of ref.clusters) { offsets.push(offsets.at(-1) + c.indices.length); runs.push(...c.ranges); runOffsets.push(runs.length); }
+  const offs = Uint32Array.from(offsets), rns = Uint32Array.from(runs), roffs = Uint32Array.from(runOffsets);
+  let sink = 0;
+  const PARTS = [
+    ['segment(): whole call - library', () => { const a = performance.now(); rtl.segment(ring2, opts); return performance.now() - a - rtl.lastComputeMs; }],
+    ['floor: two new ArrayBuffers of 4 B/point, filled', () => { const [ms, , v] = floorMs(8 * N2, perPoint); sink += v; return ms; }],
+    ['part: copy in (16 B/point into an existing array)', () => { const a = performance.now(); copyIn.set(ring2); return performance.now() - a; }],
+    ['part: cluster objects and subarrays', () => {
+      const a = performance.now(), clusters = [];
+      for (let k = 0; k + 1 < offs.length; k++) clusters.push({ indices: indices.subarray(offs[k], offs[k + 1]), ranges: rns.subarray(roffs[k], roffs[k + 1]) });
+      sink += clusters.length + labels[0];
+      return performance.now() - a;
+    }],
+  ];
+  const P = PARTS.map(() => ({ t: [], f: [] })), libs = [];
+  for (let r = 0; r < 3 * rounds; r++) {
+    PARTS.forEach(([, f], k) => { const f0 = faults(); P[k].t.push(f()); P[k].f.push(faults() - f0); if (k === 0) libs.push(rtl.lastComputeMs); });
+  }
+  const lib = median(libs);
+  PARTS.forEach(([name], k) => console.log(`${name.padEnd(58)} ${fmt(median(P[k].t))} ${fmt(Math.min(...P[k].t))} ${(100 * median(P[k].t) / lib).toFixed(1).padStart(9)} ${String(median(P[k].f)).padStart(7)}`));
+  console.log(`${'(library time of those segment() calls, median)'.padEnd(58)} ${fmt(lib)}${sink < 0 ? ' ' : ''}`);
+}
+
 // ---- 3. size
 console.log('\n3. package size (gzip -9)');
 const gz = (f) => gzipSync(readFileSync(join(PKG, f)), { level: 9 }).length;
 const wasmGz = gz('rtl.wasm'), jsGz = gz('rtl.mjs') + gz('api.mjs') + gz('index.mjs');
 console.log(`   rtl.wasm ${readFileSync(join(PKG, 'rtl.wasm')).length} B -> ${wasmGz} B gz; browser JS (rtl.mjs + api.mjs + index.mjs) ${jsGz} B gz; together ${((wasmGz + jsGz) / 1024).toFixed(1)} KiB`);
 console.log(`\n${load()}`);
+if (server) server.stdin.end();

@@ -39,6 +39,29 @@ test('segment: six arcs -> six clusters with their index ranges; a gap stays unl
   for (let i = 0; i < 360; i++) if (i !== 10) assert.equal(s.labels[i], Math.floor(i / 60), `label ${i}`);
 });
 
+test('segment: +-Infinity in any coordinate is refused and NaN is a gap, at every position of short inputs', () => {
+  // the check runs while the numbers are copied, four a step then one by one: every position of the step and of
+  // the tail is covered
+  for (const dim of [2, 3]) {
+    for (let n = 1; n <= 7; n++) {
+      const base = new Float64Array(dim * n).map((_, i) => 0.01 * i);
+      for (let i = 0; i < dim * n; i++) {
+        for (const bad of [Infinity, -Infinity]) {
+          const xy = base.slice();
+          xy[i] = bad;
+          assert.throws(() => rtl.segment(xy, { dim }), (e) => e instanceof RangeError && e.message.includes(`at index ${i}`), `dim ${dim} n ${n} index ${i} ${bad}`);
+        }
+        const xy = base.slice();
+        xy[i] = NaN;
+        const s = rtl.segment(xy, { dim, lowerBound: 1, upperBound: 1 });
+        const p = Math.floor(i / dim);
+        assert.equal(s.labels[p], -1, `dim ${dim} n ${n} index ${i}: NaN makes point ${p} a gap`);
+        for (let q = 0; q < n; q++) if (q !== p) assert.ok(s.labels[q] >= 0, `dim ${dim} n ${n}: point ${q} kept`);
+      }
+    }
+  }
+});
+
 test('segment: a cluster across the seam starts with its end-of-scan part; 3D works the same', () => {
   for (const dim of [2, 3]) {
     const s = rtl.segment(arcs([5, 3, 5, 3, 5, 5], dim), { dim });

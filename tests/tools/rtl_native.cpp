@@ -1,13 +1,16 @@
 // Native twin of the wasm module for the JavaScript tests and benchmarks: runs the same adapter code
 // (wasm/src/seg_ops.h, vect_ops.h) on the same numbers, natively, and prints JSON.
 //
-//   rtl_native segment   <points.f64> <dim> <step> <lower> <upper> [--split=<counts.u32>] [--reps=N]
+//   rtl_native segment   <points.f64> <dim> <step> <lower> <upper> [--split=<counts.u32>] [--reps=N] [--summary]
 //   rtl_native vectorize <points.f64> <dim> <method 0-4> <plane 0|1> <sigma> <delta> <epsilon> <simplexShift>
-//                        <maxIterations> [--split=<counts.u32>] [--split-corners] [--reps=N]
+//                        <maxIterations> [--split=<counts.u32>] [--split-corners] [--reps=N] [--summary]
 // points.f64: interleaved little-endian doubles. Output: the result as JSON (numbers with 17 significant digits),
 // plus "seconds": the median time of one call over N repetitions (default 1), for the wasm-vs-native benchmarks.
 // With --split, points.f64 holds several inputs one after the other, counts.u32 their point counts (uint32), and
 // the output is a JSON array with one result per input. --split-corners: FTLS/AFTLS 2D in split mode (the JS default).
+//   rtl_native --serve: reads such commands from stdin, one a line, and answers each with one line.
+// --summary: only "seconds" and "count" (clusters or segments), for the benchmarks: the full JSON of a 100k-point
+// segmentation is ~1.4 MB, and parsing it in the benchmark's process disturbed the wasm calls timed right after.
 // Eigen's explicit SIMD is off, like in the wasm build, so that both do the same arithmetic in the same order.
 #define EIGEN_DONT_VECTORIZE
 #include "../../wasm/src/seg_ops.h"
@@ -21,10 +24,13 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace {
+
+bool summaryOnly = false;  // --summary
 
 std::vector<double> readDoubles(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
@@ -65,9 +71,9 @@ double medianSeconds(int reps, F&& f) {
 }
 
 int usage() {
-  std::cerr << "usage: rtl_native segment <points.f64> <dim> <step> <lower> <upper> [--reps=N]\n"
+  std::cerr << "usage: rtl_native segment <points.f64> <dim> <step> <lower> <upper> [--reps=N] [--summary]\n"
                "       rtl_native vectorize <points.f64> <dim> <method> <plane> <sigma> <delta> <epsilon> <simplexShift> "
-               "<maxIterations> [--reps=N]\n";
+               "<maxIterations> [--reps=N] [--summary]\n";
   return 2;
 }
 
@@ -76,6 +82,10 @@ void segmentOne(std::ostream& os, const double* pts, std::size_t n, int dim, con
   const double s = medianSeconds(reps, [&] {
     o = dim == 3 ? rtl_ops::segment<3>(pts, n, p) : rtl_ops::segment<2>(pts, n, p);
   });
+  if (summaryOnly) {
+    os << "{\"seconds\":" << s << ",\"count\":" << (o.offsets.empty() ? 0 : o.offsets.size() - 1) << '}';
+    return;
+  }
   os << "{\"seconds\":" << s << ',';
   array(os, "labels", o.labels);
   os << ',';
@@ -90,6 +100,10 @@ void vectorizeOne(std::ostream& os, const double* pts, std::size_t n, const rtl_
   const double s = medianSeconds(reps, [&] {
     o = p.dim == 3 ? rtl_ops::vectorize<3>(pts, n, p) : rtl_ops::vectorize<2>(pts, n, p);
   });
+  if (summaryOnly) {
+    os << "{\"seconds\":" << s << ",\"ok\":" << (o.ok ? "true" : "false") << ",\"count\":" << o.count << '}';
+    return;
+  }
   std::vector<double> polys;
   std::vector<std::uint32_t> polyOffsets{0};
   for (const auto& poly : o.polygons) {
@@ -124,16 +138,20 @@ void vectorizeOne(std::ostream& os, const double* pts, std::size_t n, const rtl_
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+// One command (the arguments of the usage lines): the exit code (0, 1 with the message on stderr, 2 for usage).
+int runCommand(const std::vector<std::string>& all) {
   std::vector<std::string> args;
   int reps = 1;
   std::string split;
   bool splitCorners = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
+  summaryOnly = false;
+  for (const std::string& a : all) {
     if (a.rfind("--reps=", 0) == 0) reps = std::max(1, std::atoi(a.c_str() + 7));
     else if (a.rfind("--split=", 0) == 0) split = a.substr(8);
     else if (a == "--split-corners") splitCorners = true;
+    else if (a == "--summary") summaryOnly = true;
     else args.push_back(a);
   }
   try {
@@ -183,4 +201,24 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 2 && std::string(argv[1]) == "--serve") {
+    // One command per input line (the arguments above, separated by spaces), one output line each ({"error": true}
+    // when it fails). The benchmarks start the tool once instead of once per round: forking a child process
+    // write-protects all of the parent's memory, so that each page it writes next faults once (~10 us each on a
+    // VM), and those faults landed in the wasm calls timed after each native run.
+    for (std::string line; std::getline(std::cin, line);) {
+      std::istringstream words(line);
+      std::vector<std::string> args;
+      for (std::string w; words >> w;) args.push_back(w);
+      if (runCommand(args) != 0) std::cout << "{\"error\":true}\n";
+      std::cout.flush();
+    }
+    return 0;
+  }
+  return runCommand(std::vector<std::string>(argv + 1, argv + argc));
 }

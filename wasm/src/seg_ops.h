@@ -47,6 +47,40 @@ struct SegmentWorkspace {
   rtl::CAR_Segmenter<rtl::VectorND<D, double>> seg;
 };
 
+// The clusters of a loaded segmenter as labels, indices and runs (see SegmentOutput). A function of its own, not
+// inlined into the binding: V8's TurboFan allocates registers per wasm function, and inside the one large function
+// it kept the fill loops' counters in stack slots.
+template <class Segmenter>
+[[gnu::noinline]] void collectClusters(Segmenter& seg, std::size_t n, std::vector<std::size_t>& ranges, SegmentOutput& out) {
+  out.labels.assign(n, -1);
+  out.indices.resize(n);  // at most n points in clusters; trimmed below
+  std::int32_t* labels = out.labels.data();
+  std::uint32_t* idx = out.indices.data();
+  std::size_t filled = 0;
+  out.offsets.push_back(0);
+  out.runOffsets.push_back(0);
+  for (;;) {
+    ranges.clear();
+    if (seg.grabClusterRanges(ranges) == 0) break;
+    const auto label = static_cast<std::int32_t>(out.offsets.size() - 1);
+    for (std::size_t r = 0; r < ranges.size(); r += 2) {
+      const auto b = static_cast<std::uint32_t>(ranges[r]), e = static_cast<std::uint32_t>(ranges[r + 1]);
+      std::uint32_t* at = idx + filled - b;
+      for (std::uint32_t i = b; i < e; ++i) {
+        labels[i] = label;
+        at[i] = i;
+      }
+      filled += e - b;
+      // adjacent ranges of one cluster form one run
+      if (r > 0 && b == out.runs.back()) out.runs.back() = e;
+      else out.runs.insert(out.runs.end(), {b, e});
+    }
+    out.offsets.push_back(static_cast<std::uint32_t>(filled));
+    out.runOffsets.push_back(static_cast<std::uint32_t>(out.runs.size()));
+  }
+  out.indices.resize(filled);
+}
+
 template <int D, class Observer>
 SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams& p, Observer* observer) {
   if (n > 0xffffffffu) throw std::length_error("segment: more than 2^32 - 1 points");
@@ -54,13 +88,12 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   auto& work = kept<SegmentWorkspace<D>>();
   auto& pts = work.pts;
   using Point = rtl::VectorND<D, double>;
-  using Eig = typename Point::EigenType;
+  static_assert(sizeof(Point) == D * sizeof(double), "the points are copied as one array of coordinates");
   SegmentOutput out;
-  out.badInput = anyBeyond(xyz, D * n, DBL_MAX, false);  // +-Infinity; NaN is a gap
-  if (out.badInput) return out;
   pts.resize(n);  // zero-fills only beyond the last call's size; every point is assigned below
-  Point* dst = pts.data();
-  for (std::size_t i = 0; i < n; ++i) dst[i] = Point(Eig(Eigen::Map<const Eig>(xyz + D * i)));
+  // +-Infinity is refused; NaN is a gap
+  out.badInput = copyBeyond(xyz, D * n, n ? pts[0].data().data() : nullptr, DBL_MAX);
+  if (out.badInput) return out;
   Point origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
   // Traced: a fresh segmenter of the traced type (a one-off); untraced: the kept one, given this call's settings.
@@ -75,30 +108,7 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   if constexpr (Observer::enabled) seg.setObserver(observer);
   seg.setMaxSize(n);
   seg.loadData(pts, origin);
-
-  out.labels.assign(n, -1);
-  out.indices.resize(n);  // at most n points in clusters; trimmed below
-  std::uint32_t* idx = out.indices.data();
-  std::size_t filled = 0;
-  out.offsets.push_back(0);
-  out.runOffsets.push_back(0);
-  auto& ranges = work.ranges;
-  for (;;) {
-    ranges.clear();
-    if (seg.grabClusterRanges(ranges) == 0) break;
-    const auto label = static_cast<std::int32_t>(out.offsets.size() - 1);
-    for (std::size_t r = 0; r < ranges.size(); r += 2) {
-      const auto b = static_cast<std::uint32_t>(ranges[r]), e = static_cast<std::uint32_t>(ranges[r + 1]);
-      std::fill(out.labels.begin() + b, out.labels.begin() + e, label);
-      for (std::uint32_t i = b; i < e; ++i) idx[filled++] = i;
-      // adjacent ranges of one cluster form one run
-      if (r > 0 && b == out.runs.back()) out.runs.back() = e;
-      else out.runs.insert(out.runs.end(), {b, e});
-    }
-    out.offsets.push_back(static_cast<std::uint32_t>(filled));
-    out.runOffsets.push_back(static_cast<std::uint32_t>(out.runs.size()));
-  }
-  out.indices.resize(filled);
+  collectClusters(seg, n, work.ranges, out);
   return out;
 }
 
