@@ -65,10 +65,10 @@ template <class Segmenter>
     const auto label = static_cast<std::int32_t>(out.offsets.size() - 1);
     for (std::size_t r = 0; r < ranges.size(); r += 2) {
       const auto b = static_cast<std::uint32_t>(ranges[r]), e = static_cast<std::uint32_t>(ranges[r + 1]);
-      std::uint32_t* at = idx + filled - b;
+      std::uint32_t* at = idx + filled;
       for (std::uint32_t i = b; i < e; ++i) {
         labels[i] = label;
-        at[i] = i;
+        at[i - b] = i;
       }
       filled += e - b;
       // adjacent ranges of one cluster form one run
@@ -91,7 +91,7 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   static_assert(sizeof(Point) == D * sizeof(double), "the points are copied as one array of coordinates");
   SegmentOutput out;
   pts.resize(n);  // zero-fills only beyond the last call's size; every point is assigned below
-  // +-Infinity is refused; NaN is a gap
+  // +-Infinity is refused; NaN is a gap. The points' storage is D * n contiguous doubles (the static_assert above).
   out.badInput = copyBeyond(xyz, D * n, n ? pts[0].data().data() : nullptr, DBL_MAX);
   if (out.badInput) return out;
   Point origin;
