@@ -299,7 +299,7 @@ namespace rtl
         //! part 4 eps G of the bound at most 1/64 of the tolerance, else the band of candidates is too wide to
         //! gain), the shortest range filtered.
         constexpr double filter_eps = 0x1p-24, filter_abs = 1e-15, filter_max_g = 1e9, filter_min_dd = 1e-12;
-        constexpr std::size_t filter_min_points = 24;
+        constexpr std::size_t filter_min_points = 16;
 
         //! farthest() for a 2D range, without a division per point and four points per vector: a filter in
         //! float on the points' float copies (AxisPoints::f), then the library's exact double distances J of
@@ -315,8 +315,8 @@ namespace rtl
         //!  - the library's own J is within ~60 2^-53 G of the exact distance squared's root;
         //! so rho = 4 eps G + 16 eps (top + |d|) + 2^-46 G + filter_abs covers all with a margin. A point can hold
         //! the largest J, or a J > best, only if sqrt(S) >= max(sqrt(max S) - 2 rho |d|, (sqrt(best) - rho) |d|).
-        //! Pass 1 keeps the largest S of each block of 16 points (no branch); pass 2 computes J for the blocks
-        //! that pass, in order, with the library's `>`: the first maximum
+        //! Pass 1 keeps the largest S of each block of 16 points (no branch); pass 2 computes J for the points
+        //! that pass (in the blocks that pass), in order, with the library's `>`: the first maximum
         //! and its value are simplify-js's, whatever the filter's roundings.
         inline std::size_t farthestFiltered(const AxisPoints<2> &pts, std::size_t first, std::size_t last,
                                             const Chord<2> &chord, double &best)
@@ -331,50 +331,47 @@ namespace rtl
                          vdd = Float4{} + (dx * dx + dy * dy), zero = Float4{};
             float *bm = const_cast<std::vector<float> &>(pts.blocks).data();
             const auto start = [&](std::size_t b) { return b + 1 < blocks ? begin + b * block : last - block; };
+            const auto filter = [&](std::size_t i) {   // S of points i .. i + 3
+                Float4 px, py;
+                std::memcpy(&px, xf + i, sizeof px);
+                std::memcpy(&py, yf + i, sizeof py);
+                const Float4 ux = px - vax, uy = py - vay;
+                const Float4 num = ux * vdx + uy * vdy, cross = ux * vdy - uy * vdx;
+                const Float4 w = num - minKeep(maxKeep(zero, num), vdd);
+                return cross * cross + w * w;
+            };
             Float4 mx = zero;
             for (std::size_t b = 0; b < blocks; ++b)
             {
-                Float4 m0 = zero, m1 = zero;
-                for (std::size_t q = 0; q < block; q += 4)
-                {
-                    const std::size_t i = start(b) + q;
-                    Float4 px, py;
-                    std::memcpy(&px, xf + i, sizeof px);
-                    std::memcpy(&py, yf + i, sizeof py);
-                    const Float4 ux = px - vax, uy = py - vay;
-                    const Float4 num = ux * vdx + uy * vdy, cross = ux * vdy - uy * vdx;
-                    const Float4 w = num - minKeep(maxKeep(zero, num), vdd);
-                    const Float4 v = cross * cross + w * w;
-                    if (q & 4) m1 = maxKeep(m1, v);
-                    else m0 = maxKeep(m0, v);
-                }
-                Float4 m = maxKeep(m0, m1);
-                m = maxKeep(m, Float4{m[2], m[3], m[0], m[1]});
-                m = maxKeep(m, Float4{m[1], m[0], m[3], m[2]});
-                bm[b] = m[0];
+                const std::size_t s0 = start(b);
+                const Float4 m = maxKeep(maxKeep(filter(s0), filter(s0 + 4)), maxKeep(filter(s0 + 8), filter(s0 + 12)));
+                const Float4 h = maxKeep(m, Float4{m[2], m[3], m[0], m[1]});
+                bm[b] = maxKeep(h, Float4{h[1], h[0], h[3], h[2]})[0];
                 mx = maxKeep(mx, m);
             }
             const double len = std::sqrt(double(dx) * dx + double(dy) * dy);   // exact square and sum
-            const double top = std::sqrt(double(mx[0]));
+            const double top = std::sqrt(double(std::fmax(std::fmax(mx[0], mx[1]), std::fmax(mx[2], mx[3]))));
             const double rho = filter_eps * (4 * pts.g + 16 * (top / len * (1 + 0x1p-10) + len)) + 0x1p-46 * pts.g + filter_abs;
             const double low = std::fmax(top - 2 * rho * len, (std::sqrt(best) - rho) * len) * (1 - 0x1p-20);
             // S >= low^2, less a relative margin for the roundings of sqrt, *, - and the conversion to float
             const float thr = low > 0 ? static_cast<float>(low * low * (1 - 0x1p-20)) : -1.0f;
+            // Pass 2: in a block that passes, S again, and J of the points whose S passes (the others cannot win).
             std::size_t index = 0;
             double p[2];
-            const double *x = pts.axis(0), *y = pts.axis(1);
-            const auto exact = [&](std::size_t from, std::size_t to) {
-                for (std::size_t i = from; i < to; ++i)
-                {
-                    p[0] = x[i];
-                    p[1] = y[i];
-                    const double d2 = segmentDistance2<2>(p, chord);
-                    if (d2 > best) { best = d2; index = i; }
-                }
-            };
             for (std::size_t b = 0; b < blocks; ++b)
                 if (bm[b] >= thr)
-                    exact(start(b), start(b) + block);
+                    for (std::size_t i = start(b), e = i + block; i < e; i += 4)
+                    {
+                        const Float4 v = filter(i);
+                        for (int l = 0; l < 4; ++l)
+                            if (v[l] >= thr)
+                            {
+                                p[0] = pts.axis(0)[i + l];
+                                p[1] = pts.axis(1)[i + l];
+                                const double d2 = segmentDistance2<2>(p, chord);
+                                if (d2 > best) { best = d2; index = i + l; }
+                            }
+                    }
             return index;
         }
 #endif
