@@ -9,19 +9,8 @@
 function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
   const fn = 'simplify';
 
-  function kept(len, dim, fill, tolerance, highQuality, src, twins = null) {
-    const call = (p) => {
-      if (twins === null || twins.length === 0) return m.simplify(p, len, dim, tolerance, highQuality, 0, 0);
-      const q = m._malloc(8 * twins.length);  // rare: only when the last object occurs more than once
-      if (!q) throw new RangeError(`${fn}: out of wasm memory allocating ${8 * twins.length} bytes`);
-      try {
-        m.HEAPF64.set(twins, q / 8);
-        return m.simplify(p, len, dim, tolerance, highQuality, q, twins.length);
-      } finally {
-        m._free(q);
-      }
-    };
-    const r = takeResults(withInputOf(fn, len, fill, call, src), [Uint32Array]);
+  function kept(len, dim, fill, tolerance, highQuality, src) {
+    const r = takeResults(withInputOf(fn, len, fill, (p) => m.simplify(p, len, dim, tolerance, highQuality), src), [Uint32Array]);
     setComputeMs(r.scalars[0]);
     return r.arrays[0];
   }
@@ -33,13 +22,12 @@ function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
       : new TypeError(`${fn}: points[${i}].z must be a number (dim 3), got ${describe(q.z)}`));
 
   // Objects {x, y} (or {x, y, z} with dim 3) go straight into wasm memory, x and y of each point in one loop; the
-  // core does the rest (radial pre-pass included). twins (fast mode only, else null) receives the indices below
-  // the last that hold the last point's object: simplify-js's pre-pass compares the last point with the last kept
-  // one by identity, which the core is told through them (usually there are none).
-  function fillObjects(points, dim, twins) {
+  // core does the rest, radial pre-pass included. (simplify-js's pre-pass appends the last point unless it is the
+  // same object as the last kept one; the core compares indices, which can append a copy of the last kept point,
+  // and that changes no other decision: the same objects come out.)
+  function fillObjects(points, dim) {
     return (heap, at) => {
-      const n = points.length, last = points[n - 1];
-      for (let i = 0; i < n; i++) {
+      for (let i = 0; i < points.length; i++) {
         const q = points[i];
         if (q === null || typeof q !== 'object') throw pointError(q, i, dim);
         const x = q.x, y = q.y;
@@ -51,7 +39,6 @@ function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
           if (typeof z !== 'number') throw pointError(q, i, dim);
           heap[at++] = z;
         }
-        if (q === last && twins !== null && i < n - 1) twins.push(i);
       }
     };
   }
@@ -83,11 +70,8 @@ function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
     // dim 3 when asked for, or when the first point has a numeric z (simplify-js's 3D variant); every point must then have one.
     const first = points[0];
     const dim = o.dim ?? (first !== null && typeof first === 'object' && typeof first.z === 'number' ? 3 : 2);
-    const twins = hq ? null : [];
-    const idx = kept(dim * points.length, dim, fillObjects(points, dim, twins), t, hq, undefined, twins);
+    const idx = kept(dim * points.length, dim, fillObjects(points, dim), t, hq);
     if (points.length <= 2) return points;  // checked all the same; simplify-js returns such arrays as they are
-    // One point kept (every point the same object as the first): simplify-js's Douglas-Peucker returns it twice.
-    if (idx.length === 1) return [points[0], points[0]];
     const out = new Array(idx.length);
     for (let k = 0; k < idx.length; k++) out[k] = points[idx[k]];  // the caller's own objects, as simplify-js returns
     return out;

@@ -7,10 +7,7 @@
 namespace rtl_wasm {
 namespace {
 
-// twinsPtr/twinsCount: doubles, the ascending indices below the last that hold the last point's object (JS object
-// identity, which simplify-js's radial pre-pass tests; see simplifyCompatibleIndices); none for typed arrays.
-val simplify(std::uintptr_t ptr, std::size_t len, int dim, double tolerance, bool highQuality, std::uintptr_t twinsPtr,
-             std::size_t twinsCount) {
+val simplify(std::uintptr_t ptr, std::size_t len, int dim, double tolerance, bool highQuality) {
   return guarded([&] {
     if (dim != 2 && dim != 3) throw std::invalid_argument("simplify: dim must be 2 or 3, got " + std::to_string(dim));
     const double* xyz = doubles(ptr);
@@ -18,13 +15,11 @@ val simplify(std::uintptr_t ptr, std::size_t len, int dim, double tolerance, boo
     // core checks them in its first pass over the input; the message naming the point is made only on failure.
     checkPoints("simplify", xyz, len, static_cast<std::size_t>(dim), 0, false, HUGE_VAL, false);
     if (len / static_cast<std::size_t>(dim) > 0xffffffffu) throw std::length_error("simplify: more than 2^32 - 1 points");
-    std::vector<std::size_t> twins(twinsCount);
-    for (std::size_t i = 0; i < twinsCount; ++i) twins[i] = static_cast<std::size_t>(doubles(twinsPtr)[i]);
     const double t0 = nowMs();
     std::vector<std::size_t> kept;
     try {
       kept = rtl::simplifyCompatibleIndices(xyz, len / static_cast<std::size_t>(dim), static_cast<std::size_t>(dim),
-                                            tolerance, highQuality, twins.data(), twinsCount);
+                                            tolerance, highQuality);
     } catch (const std::invalid_argument&) {
       checkPoints("simplify", xyz, len, static_cast<std::size_t>(dim), 0, false);  // throws with the point's index
       throw;

@@ -6,10 +6,11 @@
 // product passes an empty asm barrier that prevents fusing (elsewhere, e.g. wasm, there is no FMA to contract to;
 // MSVC does not contract unless /fp:contract or /fp:fast is given). With GCC and clang (SSE2, NEON, wasm simd128)
 // Douglas-Peucker's scan computes two points per vector instruction, each lane with the scalar operations in the
-// scalar order (so the same doubles), and finds the first maximum without a branch per point.
+// scalar order (so the same doubles), and finds the first maximum without a branch per point; in 2D, ranges of
+// more than 16 points are first filtered in float, four points per vector and without a division, and only the
+// points within a proven rounding bound of the largest value get the exact double distance (farthestFiltered).
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -457,11 +458,8 @@ namespace rtl
             return a <= 1.7976931348623157e308;
         }
 
-        //! same_as_last (sorted, may be null when count is 0): indices of points that are the same object as the
-        //! last one in the caller's terms (see simplifyCompatibleIndices).
         template<int dim, typename T>
-        std::vector<std::size_t> simplifyIndices(const T *xyz, std::size_t n, double sq_tolerance, bool high_quality,
-                                                 const std::size_t *same_as_last, std::size_t same_count)
+        std::vector<std::size_t> simplifyIndices(const T *xyz, std::size_t n, double sq_tolerance, bool high_quality)
         {
             // The points DP runs on, as doubles, and (radial pre-pass) their indices in the input. The copy checks
             // that every coordinate is finite and finds the largest magnitude (the filter's bound).
@@ -537,9 +535,10 @@ namespace rtl
                         from.push_back(i);
                     }
                 }
-                // The last point is appended unless it is the last one kept (in the caller's terms: the same object).
-                const std::size_t at = from.back();
-                if (at != n - 1 && !std::binary_search(same_as_last, same_as_last + same_count, at))
+                // The last point is appended unless it is the last one kept. (simplify-js compares objects: when
+                // the last object is also the last kept one, at an earlier index, it is not appended; appended, a
+                // copy of the last kept point changes no other decision and the same object comes out.)
+                if (from.back() != n - 1)
                 {
                     for (int k = 0; k < dim; ++k)
                         axis[k][from.size()] = p[k];
@@ -580,23 +579,7 @@ namespace rtl
     //! finite, tolerance is not NaN. Finite coordinates whose differences overflow give the library's inf/NaN
     //! comparisons, so the result still matches it.
     template<typename T>
-    std::vector<std::size_t> simplifyCompatibleIndices(const T *xyz, std::size_t n, std::size_t dim, T tolerance, bool high_quality,
-                                                       const std::size_t *same_as_last, std::size_t same_count);
-    template<typename T>
     std::vector<std::size_t> simplifyCompatibleIndices(const T *xyz, std::size_t n, std::size_t dim, T tolerance, bool high_quality)
-    {
-        return simplifyCompatibleIndices<T>(xyz, n, dim, tolerance, high_quality, nullptr, 0);
-    }
-
-    //! The same, for a caller whose points are objects that may occur more than once (simplify-js's input array
-    //! may hold one object at several places): the radial pre-pass appends the last point unless the last point
-    //! it kept *is* the last point, which simplify-js tests by object identity (`prevPoint !== point`).
-    //! same_as_last lists, ascending, the indices below n - 1 that hold the same object as index n - 1 (count
-    //! same_count; null when 0). A last point kept at one of them is not appended again; then only one point may
-    //! remain (every point the same object), and the result is {0} (simplify-js returns that object twice).
-    template<typename T>
-    std::vector<std::size_t> simplifyCompatibleIndices(const T *xyz, std::size_t n, std::size_t dim, T tolerance, bool high_quality,
-                                                       const std::size_t *same_as_last, std::size_t same_count)
     {
         static_assert(std::is_floating_point_v<T>, "simplifyCompatibleIndices: T must be a floating-point type");
         if (dim != 2 && dim != 3)
@@ -605,8 +588,6 @@ namespace rtl
             throw std::invalid_argument("simplifyCompatibleIndices: xyz is null");
         if (std::isnan(tolerance))
             throw std::invalid_argument("simplifyCompatibleIndices: tolerance is NaN");
-        if (same_count > 0 && same_as_last == nullptr)
-            throw std::invalid_argument("simplifyCompatibleIndices: same_as_last is null");
         std::vector<std::size_t> kept;
         if (n <= 2)
         {
@@ -619,7 +600,7 @@ namespace rtl
         }
         const double tol = static_cast<double>(tolerance);
         const double sq_tolerance = tol * tol;
-        return dim == 2 ? simplify_detail::simplifyIndices<2>(xyz, n, sq_tolerance, high_quality, same_as_last, same_count)
-                        : simplify_detail::simplifyIndices<3>(xyz, n, sq_tolerance, high_quality, same_as_last, same_count);
+        return dim == 2 ? simplify_detail::simplifyIndices<2>(xyz, n, sq_tolerance, high_quality)
+                        : simplify_detail::simplifyIndices<3>(xyz, n, sq_tolerance, high_quality);
     }
 }
