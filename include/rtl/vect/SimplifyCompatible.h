@@ -217,6 +217,22 @@ namespace rtl
             typedef long long Index2 __attribute__((vector_size(16)));
             constexpr std::size_t block = 16;
             const std::size_t begin = first + 1;
+            if (last - begin <= block)
+            {
+                // One block at most (most ranges at the bottom of the recursion): each distance once, then the
+                // library's scan, rather than the scan below and a second pass over the winning block.
+                alignas(16) double d2[block];
+                const std::size_t n = last - begin;
+                for (std::size_t q = 0; q < n; q += 2)   // an odd count's last pair reads point `last`: not used
+                {
+                    const Double2 v = segmentDistance2Pair<dim>(pts, begin + q, c);
+                    std::memcpy(d2 + q, &v, sizeof v);
+                }
+                std::size_t index = 0;
+                for (std::size_t q = 0; q < n; ++q)
+                    if (d2[q] > best) { best = d2[q]; index = begin + q; }
+                return index;
+            }
             // Whole blocks, then one partial block of pairs; an odd point left over is compared last.
             const std::size_t pairs_end = begin + ((last - begin) & ~std::size_t(1));
             Double2 mx = Double2{} + best;
