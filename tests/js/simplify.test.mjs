@@ -144,6 +144,12 @@ test('simplify fast mode: repeated objects and a non-finite point the pre-pass w
     }
   }
   assert.deepEqual(rtl.simplify([a, a, a], 1), [a, a], 'one object throughout: simplify-js returns it twice');
+  // Long arrays ending with an object met before (the core's pre-pass learns which indices hold it), kept last or not.
+  for (const k of [0, 1, 2, 17, 4990, 4997, 4998]) {
+    const w = walk(5000, 11);
+    w.push(w[k], w[k]);
+    for (const tol of [0.1, 1, 3]) sameObjects(rtl.simplify(w, tol), simplifyJs(w, tol), `walk ending with point ${k} twice, tol ${tol}`);
+  }
   // 0.001 from its predecessor: the pre-pass would drop it, the check still sees it (all modes, 2D and 3D)
   const near = [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1.001, y: NaN }, { x: 2, y: 0 }];
   for (const hq of [false, true]) {

@@ -401,3 +401,119 @@ TEST(SimplifyCompatible, GridWalksWithManyTies)
     EXPECT_GT(tied_scans, 1000u);
     EXPECT_GT(differ, 50u);
 }
+
+// The 2D scan of ranges longer than 64 points filters without a division (farthestFiltered: S = cross^2 + w^2,
+// d.d times the squared segment distance, and a proven rounding margin around its maximum), then takes the exact
+// distances of the blocks that pass. These cases put every point of a range within a few ulps of the same
+// distance h from the chord segment: on the "stadium" around it (two parallel lines for 0 <= t <= 1, half circles
+// around a and b beyond), in random order, so that the first maximum is decided by the roundings of the
+// library's arithmetic, which the filter's own roundings do not follow. Scales from 1e-40 to 1e50 and offsets
+// up to 7e6 chord lengths (the filter runs for |coordinates| <= 1e9, |d|^2 >= 1e-12 and 2^-24 G at most 1/256 of
+// the tolerance, else the exact scan; offset 5e4 makes the bound's 4 eps G part, for float rounding of the
+// coordinates, the largest). A filter without margin, without that part, or one that clamps w on one side only,
+// keeps other points.
+namespace
+{
+    std::vector<P> stadium(size_t n, double scale, double offset, double h, unsigned seed)
+    {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> u(0, 1);
+        const double ax = offset, ay = offset * 0.75, bx = offset + 1000.3 * scale, by = offset * 0.75 + 377.7 * scale;
+        const double len = std::hypot(bx - ax, by - ay), nx = -(by - ay) / len, ny = (bx - ax) / len;
+        std::vector<P> pts{{ax, ay, 0}};
+        for (size_t k = 0; k + 2 < n; ++k)
+        {
+            const double side = u(rng) < 0.5 ? -1 : 1, where = u(rng);
+            if (where < 0.6)   // along the chord, at distance h
+            {
+                const double t = u(rng);
+                pts.push_back({ax + t * (bx - ax) + side * h * scale * nx, ay + t * (by - ay) + side * h * scale * ny, 0});
+            }
+            else   // beyond an end, at distance h from it
+            {
+                const bool at_a = where < 0.8;
+                const double phi = M_PI * u(rng), cx = at_a ? ax : bx, cy = at_a ? ay : by;
+                const double along = (at_a ? -1 : 1) * std::sin(phi), across = std::cos(phi);
+                pts.push_back({cx + h * scale * (along * (bx - ax) / len + across * nx),
+                               cy + h * scale * (along * (by - ay) / len + across * ny), 0});
+            }
+        }
+        pts.push_back({bx, by, 0});
+        return pts;
+    }
+}
+
+TEST(SimplifyCompatible, FilterMarginOnNearTiesAtAllScales)
+{
+    size_t cases = 0, ties_decided_by_rounding = 0;
+    for (double scale : {1e-40, 1e-6, 1.0, 3e4, 1e50})
+        for (double offset_units : {0.0, 1e3, 5e4, -7e6})
+            for (unsigned seed = 1; seed <= 8; ++seed)
+                for (size_t n : {66, 200, 1500})
+                {
+                    const double offset = offset_units * scale;
+                    const auto pts = stadium(n, scale, offset, 2.0, seed);
+                    // The distances of the first scan: how many are equal to their maximum, how many within 1e-12.
+                    double top = 0;
+                    for (size_t i = 1; i + 1 < n; ++i) top = std::max(top, sqSegDist(pts[i], pts.front(), pts.back(), false));
+                    size_t near = 0;
+                    for (size_t i = 1; i + 1 < n; ++i) near += sqSegDist(pts[i], pts.front(), pts.back(), false) >= top * (1 - 1e-12);
+                    ties_decided_by_rounding += near > 1;
+                    for (double tol : {1.0, 1.9})
+                    {
+                        ASSERT_EQ(run<double>(pts, false, tol * scale, true), reference(pts, tol * scale, true, false))
+                            << "scale " << scale << " offset " << offset << " seed " << seed << " n " << n << " tol " << tol;
+                        ++cases;
+                    }
+                }
+    EXPECT_EQ(cases, 5u * 4 * 8 * 3 * 2);
+    EXPECT_GT(ties_decided_by_rounding, 300u);
+}
+
+// Exact ties and one-ulp near-ties at every position of a 100-point range (filtered: blocks of 16 from index 1,
+// then a partial block): two peaks at distance 1 from the chord (0,0)-(1000,0), the second one 1, 1 + ulp or 1 - ulp
+// high; and peaks straight above a and b (t exactly 0 and 1), where the segment distance is the distance to the end.
+TEST(SimplifyCompatible, FilterTiesAtEveryPosition)
+{
+    size_t cases = 0;
+    const size_t n = 100;
+    for (size_t i = 1; i + 2 < n; ++i)
+        for (size_t j : {i + 1, i + 2, i + 15, i + 16, i + 17, n - 2})
+        {
+            if (j <= i || j >= n - 1) continue;
+            for (double h : {1.0, std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0)})
+            {
+                const auto pts = twoPeaks(n, i, j, h);
+                ASSERT_EQ(run<double>(pts, false, 0.3, true), reference(pts, 0.3, true, false)) << i << " " << j << " " << h;
+                ++cases;
+            }
+        }
+    // t exactly 0 and 1: points (0, +-1) and (1000, +-1) among points at height 0.5 along the chord.
+    for (size_t i = 1; i + 2 < n; i += 3)
+    {
+        std::vector<P> pts(n, P{500, 0.5, 0});
+        pts.front() = {0, 0, 0};
+        pts.back() = {1000, 0, 0};
+        pts[i] = {0, -1, 0};
+        pts[n - 1 - i] = {1000, (i % 2) ? 1.0 : -1.0, 0};
+        for (size_t k = 1; k + 1 < n; ++k)
+            if (k != i && k != n - 1 - i) pts[k].x = static_cast<double>(k) * 10;
+        ASSERT_EQ(sqSegDist(pts[i], pts.front(), pts.back(), false), 1.0);
+        ASSERT_EQ(sqSegDist(pts[n - 1 - i], pts.front(), pts.back(), false), 1.0);
+        ASSERT_EQ(run<double>(pts, false, 0.1, true), reference(pts, 0.1, true, false)) << i;
+        ++cases;
+    }
+    EXPECT_GT(cases, 1500u);
+}
+
+// The radial pre-pass appends the last point unless it is the last one kept. simplify-js compares objects: for
+// [a, b, a, c, a] (c within the tolerance of a) it keeps a, b, a and does not append the last a (the same object);
+// by index the copy at 4 is appended, 2 is then on the chord's end and dropped: the same coordinates (objects) come
+// out.
+TEST(SimplifyCompatible, RadialPrePassRepeatedLastPoint)
+{
+    const double xy[10] = {0, 0, 5, 0, 0, 0, 0.1, 0, 0, 0};
+    EXPECT_EQ(rtl::simplifyCompatibleIndices(xy, 5, 2, 1.0, false), (std::vector<size_t>{0, 1, 4}));
+    const double same[6] = {1, 1, 1, 1, 1, 1};
+    EXPECT_EQ(rtl::simplifyCompatibleIndices(same, 3, 2, 1.0, false), (std::vector<size_t>{0, 2}));
+}

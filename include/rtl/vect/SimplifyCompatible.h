@@ -6,12 +6,15 @@
 // product passes an empty asm barrier that prevents fusing (elsewhere, e.g. wasm, there is no FMA to contract to;
 // MSVC does not contract unless /fp:contract or /fp:fast is given). With GCC and clang (SSE2, NEON, wasm simd128)
 // Douglas-Peucker's scan computes two points per vector instruction, each lane with the scalar operations in the
-// scalar order (so the same doubles), and finds the first maximum without a branch per point.
+// scalar order (so the same doubles), and finds the first maximum without a branch per point; in 2D, ranges of
+// more than 16 points are first filtered in float, four points per vector and without a division, and only the
+// points within a proven rounding bound of the largest value get the exact double distance (farthestFiltered).
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -106,12 +109,18 @@ namespace rtl
 
         //! The m points Douglas-Peucker runs on, in double, one array per axis (axis k starts at k * stride), so
         //! that two consecutive points' coordinates load as one vector.
+        //! g: the largest |coordinate| of the points (bounds the filter's rounding errors, farthestFiltered);
+        //! blocks: that filter's scratch (one float per block of 16 points). c is not zero-filled: every value
+        //! read is written first (filling 16 MB at 1M points cost ~1.5 ms).
         template<int dim>
         struct AxisPoints
         {
             std::size_t m = 0, stride = 0;
-            std::vector<double> c;
-            const double *axis(int k) const { return c.data() + static_cast<std::size_t>(k) * stride; }
+            double g = 0;
+            std::unique_ptr<double[]> c;
+            std::unique_ptr<float[]> f;   // 2D: x then y as floats (stride apart) for the filter, when |coords| <= 1e9
+            std::vector<float> blocks;
+            const double *axis(int k) const { return c.get() + static_cast<std::size_t>(k) * stride; }
         };
 
 #if defined(__GNUC__)
@@ -149,18 +158,6 @@ namespace rtl
 #endif
         }
 
-        //! `v > h ? h : v` lane-wise for v not NaN (SSE2 minpd, wasm f64x2.pmin).
-        inline Double2 minKeep(Double2 v, Double2 h)
-        {
-#if defined(__SSE2__)
-            return _mm_min_pd(v, h);   // v < h ? v : h
-#elif defined(__wasm_simd128__)
-            return (Double2)wasm_f64x2_pmin((v128_t)v, (v128_t)h);
-#else
-            return h < v ? h : v;
-#endif
-        }
-
         //! The chord in vector lanes, both lanes alike.
         template<int dim>
         struct ChordPair
@@ -181,9 +178,8 @@ namespace rtl
         //! segmentDistance2 of points i and i + 1 (read from the axis arrays) from the chord, one per lane, for a
         //! chord whose differences d are finite. The scalar projection `t > 1 ? b : (t > 0 ? a + d t : a)` is
         //! computed as `t > 1 ? b : a + d max(t, 0)`: for t <= 0 or NaN, d * 0 is a zero and a + 0 is a (a -0
-        //! may become +0, which changes no square). `clamped`, for chords where a + d == b on every axis: as
-        //! a + d min(max(t, 0), 1), which is b for t > 1; no selection at all.
-        template<int dim, bool clamped>
+        //! may become +0, which changes no square).
+        template<int dim>
         inline Double2 segmentDistance2Pair(const AxisPoints<dim> &pts, std::size_t i, const ChordPair<dim> &c)
         {
 #ifdef __clang__
@@ -197,13 +193,12 @@ namespace rtl
                 num = num + product(p[k] - c.a[k], c.d[k]);
             const Double2 t = num / c.dd;
             const Double2 zero = Double2{}, one = zero + 1.0;
-            const Double2 tc = clamped ? minKeep(maxKeep(zero, t), one) : maxKeep(zero, t);
+            const Double2 tc = maxKeep(zero, t);
             Double2 s = zero;
             for (int k = 0; k < dim; ++k)
             {
                 Double2 q = c.a[k] + product(c.d[k], tc);
-                if (!clamped)
-                    q = t > one ? c.b[k] : q;
+                q = t > one ? c.b[k] : q;
                 const Double2 e = p[k] - q;
                 s = k == 0 ? product(e, e) : s + product(e, e);
             }
@@ -215,13 +210,29 @@ namespace rtl
         //! each lane remembers the first block where it raised its maximum (strict `>`), all without branches.
         //! At the end the largest lane value v wins; the first block where a lane reached v is the first block
         //! holding v, and a walk of that one block finds the first index of v: the scan's first maximum.
-        template<int dim, bool clamped>
+        template<int dim>
         std::size_t farthestPairs(const AxisPoints<dim> &pts, std::size_t first, std::size_t last,
                                   const ChordPair<dim> &c, double &best)
         {
             typedef long long Index2 __attribute__((vector_size(16)));
             constexpr std::size_t block = 16;
             const std::size_t begin = first + 1;
+            if (last - begin <= block)
+            {
+                // One block at most (most ranges at the bottom of the recursion): each distance once, then the
+                // library's scan, rather than the scan below and a second pass over the winning block.
+                alignas(16) double d2[block];
+                const std::size_t n = last - begin;
+                for (std::size_t q = 0; q < n; q += 2)   // an odd count's last pair reads point `last`: not used
+                {
+                    const Double2 v = segmentDistance2Pair<dim>(pts, begin + q, c);
+                    std::memcpy(d2 + q, &v, sizeof v);
+                }
+                std::size_t index = 0;
+                for (std::size_t q = 0; q < n; ++q)
+                    if (d2[q] > best) { best = d2[q]; index = begin + q; }
+                return index;
+            }
             // Whole blocks, then one partial block of pairs; an odd point left over is compared last.
             const std::size_t pairs_end = begin + ((last - begin) & ~std::size_t(1));
             Double2 mx = Double2{} + best;
@@ -235,12 +246,12 @@ namespace rtl
                 if (n == block)
                     for (std::size_t q = 0; q < block; q += 4)
                     {
-                        m0 = maxKeep(m0, segmentDistance2Pair<dim, clamped>(pts, i + q, c));
-                        m1 = maxKeep(m1, segmentDistance2Pair<dim, clamped>(pts, i + q + 2, c));
+                        m0 = maxKeep(m0, segmentDistance2Pair<dim>(pts, i + q, c));
+                        m1 = maxKeep(m1, segmentDistance2Pair<dim>(pts, i + q + 2, c));
                     }
                 else
                     for (std::size_t q = 0; q < n; q += 2)
-                        m0 = maxKeep(m0, segmentDistance2Pair<dim, clamped>(pts, i + q, c));
+                        m0 = maxKeep(m0, segmentDistance2Pair<dim>(pts, i + q, c));
                 const Double2 m = maxKeep(m0, m1);
                 const Index2 raised = m > mx;
                 at = raised ? Index2{} + number : at;
@@ -257,7 +268,7 @@ namespace rtl
                 alignas(16) double d2[block];
                 for (std::size_t q = 0; q < n; q += 2)
                 {
-                    const Double2 s = segmentDistance2Pair<dim, clamped>(pts, start + q, c);
+                    const Double2 s = segmentDistance2Pair<dim>(pts, start + q, c);
                     std::memcpy(d2 + q, &s, sizeof(Double2));
                 }
                 std::size_t q = 0;
@@ -271,9 +282,113 @@ namespace rtl
             if (i < last)
             {
                 // The odd point left over: after all the others, so it wins only by a larger value.
-                const Double2 s = segmentDistance2Pair<dim, clamped>(pts, last - 1, c);
+                const Double2 s = segmentDistance2Pair<dim>(pts, last - 1, c);
                 if (s[0] > best) { best = s[0]; index = last - 1; }
             }
+            return index;
+        }
+
+        //! Four floats in one SSE / wasm simd128 register, for the filter of farthestFiltered.
+        typedef float Float4 __attribute__((vector_size(16)));
+        inline Float4 maxKeep(Float4 m, Float4 v)
+        {
+#if defined(__SSE2__)
+            return _mm_max_ps(v, m);
+#elif defined(__wasm_simd128__)
+            return (Float4)wasm_f32x4_pmax((v128_t)m, (v128_t)v);
+#else
+            return m < v ? v : m;
+#endif
+        }
+        inline Float4 minKeep(Float4 v, Float4 h)
+        {
+#if defined(__SSE2__)
+            return _mm_min_ps(v, h);
+#elif defined(__wasm_simd128__)
+            return (Float4)wasm_f32x4_pmin((v128_t)v, (v128_t)h);
+#else
+            return h < v ? h : v;
+#endif
+        }
+
+        //! The filter of farthestFiltered: the error bound's factors (see there), its limits (G <= 1e9, so that no
+        //! square overflows a float; |d|^2 >= 1e-12, so that underflow costs less than filter_abs in distance; the
+        //! part 4 eps G of the bound at most 1/64 of the tolerance, else the band of candidates is too wide to
+        //! gain), the shortest range filtered.
+        constexpr double filter_eps = 0x1p-24, filter_abs = 1e-15, filter_max_g = 1e9, filter_min_dd = 1e-12;
+        constexpr std::size_t filter_min_points = 16;
+
+        //! farthest() for a 2D range, without a division per point and four points per vector: a filter in
+        //! float on the points' float copies (AxisPoints::f), then the library's exact double distances J of
+        //! the few points that can be the farthest. The filter's value of a point p is S = cross^2 + w^2 (u = p - a,
+        //! d = b - a, cross = u x d, w = u.d minus u.d clamped to [0, d.d]), in real numbers d.d times the squared
+        //! distance from the segment: w is 0 where p projects inside it, u.d (t < 0) or (p - b).d (t > 1) outside,
+        //! where |u|^2 d.d = (u.d)^2 + cross^2. Error bound rho on sqrt(S) / |d| against sqrt(J), eps = 2^-24, G the
+        //! largest |coordinate|, |d| the float chord's length (exact in double):
+        //!  - rounding p, a, b to float moves a point's distance from the segment by <= 2 sqrt(2) eps G;
+        //!  - float arithmetic: u, d, their products and sums each err by eps relative, so cross and u.d by
+        //!    <= 4 eps |u||d|, w by <= 9 eps |u||d|, sqrt(S) by <= 11.4 eps |u||d|, and |u| <= D + |d| (D: the
+        //!    point's distance, at most the largest one, top, to within rho);
+        //!  - the library's own J is within ~60 2^-53 G of the exact distance squared's root;
+        //! so rho = 4 eps G + 16 eps (top + |d|) + 2^-46 G + filter_abs covers all with a margin. A point can hold
+        //! the largest J, or a J > best, only if sqrt(S) >= max(sqrt(max S) - 2 rho |d|, (sqrt(best) - rho) |d|).
+        //! Pass 1 keeps the largest S of each block of 16 points (no branch); pass 2 computes J for the points
+        //! that pass (in the blocks that pass), in order, with the library's `>`: the first maximum
+        //! and its value are simplify-js's, whatever the filter's roundings.
+        inline std::size_t farthestFiltered(const AxisPoints<2> &pts, std::size_t first, std::size_t last,
+                                            const Chord<2> &chord, double &best)
+        {
+            constexpr std::size_t block = 16;
+            // Whole blocks from first + 1; the points left over are the end of one more block that overlaps the
+            // one before (its points rescanned by pass 2 cannot win there: their values are equal, not greater).
+            const std::size_t begin = first + 1, blocks = (last - begin + block - 1) / block;
+            const float *xf = pts.f.get(), *yf = xf + pts.stride;
+            const float ax = xf[first], ay = yf[first], dx = xf[last] - ax, dy = yf[last] - ay;
+            const Float4 vax = Float4{} + ax, vay = Float4{} + ay, vdx = Float4{} + dx, vdy = Float4{} + dy,
+                         vdd = Float4{} + (dx * dx + dy * dy), zero = Float4{};
+            float *bm = const_cast<std::vector<float> &>(pts.blocks).data();
+            const auto start = [&](std::size_t b) { return b + 1 < blocks ? begin + b * block : last - block; };
+            const auto filter = [&](std::size_t i) {   // S of points i .. i + 3
+                Float4 px, py;
+                std::memcpy(&px, xf + i, sizeof px);
+                std::memcpy(&py, yf + i, sizeof py);
+                const Float4 ux = px - vax, uy = py - vay;
+                const Float4 num = ux * vdx + uy * vdy, cross = ux * vdy - uy * vdx;
+                const Float4 w = num - minKeep(maxKeep(zero, num), vdd);
+                return cross * cross + w * w;
+            };
+            Float4 mx = zero;
+            for (std::size_t b = 0; b < blocks; ++b)
+            {
+                const std::size_t s0 = start(b);
+                const Float4 m = maxKeep(maxKeep(filter(s0), filter(s0 + 4)), maxKeep(filter(s0 + 8), filter(s0 + 12)));
+                const Float4 h = maxKeep(m, Float4{m[2], m[3], m[0], m[1]});
+                bm[b] = maxKeep(h, Float4{h[1], h[0], h[3], h[2]})[0];
+                mx = maxKeep(mx, m);
+            }
+            const double len = std::sqrt(double(dx) * dx + double(dy) * dy);   // exact square and sum
+            const double top = std::sqrt(double(std::fmax(std::fmax(mx[0], mx[1]), std::fmax(mx[2], mx[3]))));
+            const double rho = filter_eps * (4 * pts.g + 16 * (top / len * (1 + 0x1p-10) + len)) + 0x1p-46 * pts.g + filter_abs;
+            const double low = std::fmax(top - 2 * rho * len, (std::sqrt(best) - rho) * len) * (1 - 0x1p-20);
+            // S >= low^2, less a relative margin for the roundings of sqrt, *, - and the conversion to float
+            const float thr = low > 0 ? static_cast<float>(low * low * (1 - 0x1p-20)) : -1.0f;
+            // Pass 2: in a block that passes, S again, and J of the points whose S passes (the others cannot win).
+            std::size_t index = 0;
+            double p[2];
+            for (std::size_t b = 0; b < blocks; ++b)
+                if (bm[b] >= thr)
+                    for (std::size_t i = start(b), e = i + block; i < e; i += 4)
+                    {
+                        const Float4 v = filter(i);
+                        for (int l = 0; l < 4; ++l)
+                            if (v[l] >= thr)
+                            {
+                                p[0] = pts.axis(0)[i + l];
+                                p[1] = pts.axis(1)[i + l];
+                                const double d2 = segmentDistance2<2>(p, chord);
+                                if (d2 > best) { best = d2; index = i + l; }
+                            }
+                    }
             return index;
         }
 #endif
@@ -296,12 +411,15 @@ namespace rtl
 #if defined(__GNUC__)
             if (finite_d)
             {
-                bool exact_end = true;
-                for (int k = 0; k < dim; ++k)
-                    exact_end = exact_end && pa[k] + chord.d[k] == pb[k];
-                const ChordPair<dim> c(chord);
-                return exact_end ? farthestPairs<dim, true>(pts, first, last, c, best)
-                                 : farthestPairs<dim, false>(pts, first, last, c, best);
+                if constexpr (dim == 2)
+                    if (pts.f && last - first > filter_min_points)
+                    {
+                        const float *xf = pts.f.get(), *yf = xf + pts.stride;
+                        const double dx = xf[last] - xf[first], dy = yf[last] - yf[first];
+                        if (dx * dx + dy * dy >= filter_min_dd && 4 * filter_eps * pts.g * 64 <= std::sqrt(best))
+                            return farthestFiltered(pts, first, last, chord, best);
+                    }
+                return farthestPairs<dim>(pts, first, last, ChordPair<dim>(chord), best);
             }
 #else
             (void)finite_d;
@@ -348,54 +466,114 @@ namespace rtl
             return kept;
         }
 
+        //! simplifyIndices' input check and working copy: x's magnitude into g, false if x is not finite.
+        inline bool magnitude(double x, double &g)
+        {
+            const double a = std::fabs(x);
+            g = a > g ? a : g;
+            return a <= 1.7976931348623157e308;
+        }
+
         template<int dim, typename T>
         std::vector<std::size_t> simplifyIndices(const T *xyz, std::size_t n, double sq_tolerance, bool high_quality)
         {
-            // The points DP runs on, as doubles, and (radial pre-pass) their indices in the input.
+            // The points DP runs on, as doubles, and (radial pre-pass) their indices in the input. The copy checks
+            // that every coordinate is finite and finds the largest magnitude (the filter's bound).
             std::vector<std::size_t> from;
             AxisPoints<dim> pts;
             pts.stride = n;
-            pts.c.assign(dim * pts.stride, 0.0);
+            pts.c.reset(new double[dim * n]);
             double *axis[dim];
             for (int k = 0; k < dim; ++k)
-                axis[k] = pts.c.data() + static_cast<std::size_t>(k) * pts.stride;
+                axis[k] = pts.c.get() + static_cast<std::size_t>(k) * pts.stride;
+            bool finite = true, checked = false;
+            double g = 0;
+#if defined(__GNUC__)
+            if constexpr (std::is_same_v<T, double>)
+            {
+                // Two numbers per vector: the largest magnitude, and v - v (0, or NaN when v is not finite) summed
+                // into a NaN detector (the scalar loop does not vectorize); high quality copies them on the way.
+                typedef long long Bits2 __attribute__((vector_size(16)));
+                const Bits2 abs_mask = Bits2{} + 0x7fffffffffffffffLL;
+                Double2 top = Double2{}, nan = Double2{};
+                const std::size_t end = n * dim & ~std::size_t(1);
+                for (std::size_t j = 0; j < end; j += 2)
+                {
+                    Double2 v;
+                    std::memcpy(&v, xyz + j, sizeof v);
+                    top = maxKeep(top, (Double2)((Bits2)v & abs_mask));
+                    nan = nan + (v - v);
+                    if (high_quality)
+                    {
+                        axis[j % dim][j / dim] = v[0];
+                        axis[(j + 1) % dim][(j + 1) / dim] = v[1];
+                    }
+                }
+                if (end < n * dim)
+                {
+                    finite &= magnitude(xyz[end], g);
+                    axis[dim - 1][n - 1] = xyz[end];
+                }
+                const double m = top[0] < top[1] ? top[1] : top[0];
+                g = m > g ? m : g;
+                finite &= nan[0] == 0 && nan[1] == 0;
+                checked = true;
+            }
+#endif
+            for (std::size_t j = 0; !checked && j < n * dim; ++j)
+                finite &= magnitude(static_cast<double>(xyz[j]), g);
+            if (!finite)
+                throw std::invalid_argument("simplifyCompatibleIndices: non-finite coordinate");
             if (high_quality)
             {
-                for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t i = 0; !checked && i < n; ++i)
                     for (int k = 0; k < dim; ++k)
                         axis[k][i] = static_cast<double>(xyz[i * dim + k]);
                 pts.m = n;
             }
             else
             {
+                // simplify-js's radial pass: a point is kept when its squared distance to the last kept one exceeds
+                // the tolerance's square (its getSqDist, in its order).
                 from.reserve(n);
-                double prev[dim], p[dim] = {};
-                const auto load = [&](std::size_t i, double *out) {
-                    for (int k = 0; k < dim; ++k)
-                        out[k] = static_cast<double>(xyz[i * dim + k]);
-                };
-                const auto push = [&](std::size_t i, const double *q) {
-                    for (int k = 0; k < dim; ++k)
-                        axis[k][from.size()] = q[k];
-                    from.push_back(i);
-                };
-                load(0, prev);
-                push(0, prev);
+                from.push_back(0);
+                double prev[dim], p[dim];
+                for (int k = 0; k < dim; ++k)
+                    axis[k][0] = prev[k] = p[k] = static_cast<double>(xyz[k]);
                 for (std::size_t i = 1; i < n; ++i)
                 {
-                    load(i, p);
+                    for (int k = 0; k < dim; ++k)
+                        p[k] = static_cast<double>(xyz[i * dim + k]);
                     if (pointDistance2<dim>(p, prev) > sq_tolerance)
                     {
-                        push(i, p);
                         for (int k = 0; k < dim; ++k)
-                            prev[k] = p[k];
+                            axis[k][from.size()] = prev[k] = p[k];
+                        from.push_back(i);
                     }
                 }
+                // The last point is appended unless it is the last one kept. (simplify-js compares objects: when
+                // the last object is also the last kept one, at an earlier index, it is not appended; appended, a
+                // copy of the last kept point changes no other decision and the same object comes out.)
                 if (from.back() != n - 1)
-                    push(n - 1, p);
+                {
+                    for (int k = 0; k < dim; ++k)
+                        axis[k][from.size()] = p[k];
+                    from.push_back(n - 1);
+                }
                 pts.m = from.size();
             }
+            pts.g = g;
             const std::size_t m = pts.m;
+#if defined(__GNUC__)
+            if (dim == 2 && m > filter_min_points && g <= filter_max_g)
+            {
+                pts.f.reset(new float[2 * n]);
+                for (std::size_t k = 0; k < 2; ++k)
+                    for (std::size_t i = 0; i < m; ++i)
+                        pts.f[k * n + i] = static_cast<float>(axis[k][i]);
+                pts.blocks.resize(m / 16 + 1);
+            }
+#endif
             std::vector<std::size_t> kept = m <= 2 ? std::vector<std::size_t>{} : simplify<dim>(pts, sq_tolerance);
             if (m <= 2)
                 for (std::size_t i = 0; i < m; ++i)
@@ -426,12 +604,12 @@ namespace rtl
             throw std::invalid_argument("simplifyCompatibleIndices: xyz is null");
         if (std::isnan(tolerance))
             throw std::invalid_argument("simplifyCompatibleIndices: tolerance is NaN");
-        for (std::size_t i = 0; i < n * dim; ++i)
-            if (!std::isfinite(xyz[i]))
-                throw std::invalid_argument("simplifyCompatibleIndices: non-finite coordinate");
         std::vector<std::size_t> kept;
         if (n <= 2)
         {
+            for (std::size_t i = 0; i < n * dim; ++i)
+                if (!std::isfinite(xyz[i]))
+                    throw std::invalid_argument("simplifyCompatibleIndices: non-finite coordinate");
             for (std::size_t i = 0; i < n; ++i)
                 kept.push_back(i);
             return kept;
