@@ -322,6 +322,7 @@ namespace rtl
         static constexpr size_t state_cap = 1;   // states per point (+ 1024) of the first, unbounded round
         static constexpr size_t rest_cap = 4;   // states per point (+ 1024) of a round on the backward pass's bound
         bool prune_{true};
+        VectorND<2, ComputeType> corner_mid;   // midpoint of the boundary points of the current choosePredecessors call
         bool exact_rest{false};   // the round's budget test uses to_end[] (backward pass) instead of remaining[]
         bool reversed_{false};   // choosePredecessors for the backward pass: candidates start at the corner, queries end there
         // Backward pass: the fitting ranges by start (r_start, r_end; ends ascending in r_off[x] .. r_off[x + 1]),
@@ -653,12 +654,18 @@ namespace rtl
             state_lines.push_back(line);
         }
 
-        bool meets(const std::vector<VectorType> &pts, size_t k, size_t j, size_t x)
+        //! The corner test at the boundary of the current choosePredecessors call: crossingDistanceSquared's
+        //! arithmetic, with the boundary midpoint computed once per boundary (corner_mid) rather than per pair.
+        bool meets(size_t k, size_t j)
         {
             ++work_.corners;
             // The backward pass has the ranges after the corner as candidates (k) and those before it as queries (j).
-            return reversed_ ? vect_detail::crossingDistanceSquared(pts, out_lines[j], in_lines[k], x) <= delta2
-                             : vect_detail::crossingDistanceSquared(pts, in_lines[k], out_lines[j], x) <= delta2;
+            const Approximation &first = reversed_ ? out_lines[j] : in_lines[k];
+            const Approximation &second = reversed_ ? in_lines[k] : out_lines[j];
+            VectorND<2, ComputeType> c;
+            if (!Approximation::getCrossingCompute(first, second, c))
+                return std::numeric_limits<ComputeType>::infinity() <= delta2;
+            return (c - corner_mid).lengthSquared() <= delta2;
         }
 
         //! picks[j] = the first incoming line (in cost order) before limits[j] that meets outgoing line j within
@@ -667,6 +674,7 @@ namespace rtl
         void choosePredecessors(const std::vector<VectorType> &pts, size_t x)
         {
             const size_t ni = in_lines.size(), no = out_lines.size();
+            corner_mid = (pts[x - 1].template cast<ComputeType>() + pts[x].template cast<ComputeType>()) * ComputeType(0.5);
             picks = limits;   // no line at or beyond limits[j] is wanted for outgoing line j
             // The cheapest few first (they usually meet); the rest one by one only while that stays cheap.
             const size_t first = std::min(ni, scan_first);
@@ -675,7 +683,7 @@ namespace rtl
             {
                 const size_t f = std::min(first, limits[j]);
                 size_t k = 0;
-                while (k < f && !meets(pts, k, j, x))
+                while (k < f && !meets(k, j))
                     ++k;
                 if (k < f)
                     picks[j] = k;
@@ -688,7 +696,7 @@ namespace rtl
             {
                 for (size_t j : open_)
                     for (size_t k = first; k < limits[j]; ++k)
-                        if (meets(pts, k, j, x)) { picks[j] = k; break; }
+                        if (meets(k, j)) { picks[j] = k; break; }
                 return;
             }
             typedef VectorND<2, ComputeType> CV;
@@ -717,14 +725,14 @@ namespace rtl
                 for (size_t j : open_)
                     if (out_chords[j].kind == regular)
                         queries.push_back(Item{c2 ? -out_chords[j].q : out_chords[j].p, 0, j});
-                sweep(pts, x, eta);
+                sweep(eta);
             }
             for (size_t j : open_)
             {
                 if (out_chords[j].kind == misses)
                     continue;
                 for (size_t k = first; k < std::min(picks[j], ni); ++k)
-                    if ((out_chords[j].kind == tangent ? in_chords[k].kind != misses : in_chords[k].kind == tangent) && meets(pts, k, j, x))
+                    if ((out_chords[j].kind == tangent ? in_chords[k].kind != misses : in_chords[k].kind == tangent) && meets(k, j))
                     {
                         picks[j] = k;
                         break;
@@ -780,7 +788,7 @@ namespace rtl
 
         //! One case of the chord test: queries in increasing key; every item with key < query key + eta is in a
         //! min-tree of ranks ordered by val; the cheapest one with val in (u - eta, v + eta) that meets exactly wins.
-        void sweep(const std::vector<VectorType> &pts, size_t x, ComputeType eta)
+        void sweep(ComputeType eta)
         {
             if (items.empty() || queries.empty())
                 return;
@@ -820,7 +828,7 @@ namespace rtl
                     const size_t k = query(size, lo, hi);
                     if (k == none_rank || k >= picks[qu.index])
                         break;
-                    if (meets(pts, k, qu.index, x))
+                    if (meets(k, qu.index))
                     {
                         picks[qu.index] = k;
                         break;
