@@ -533,7 +533,7 @@ function wrap(m) {
   }
 
   const simplifier = makeSimplify(m, withInputOf, (ms) => { lastComputeMs = ms; }, takeResults);
-  const release = () => { simplifier.release(); m.releaseBuffers(); m.viewBlock(-1); viewAt = 0; };
+  const release = () => { m.releaseBuffers(); m.viewBlock(-1); viewAt = 0; };
   const api = {
     version: VERSION,
     fitLine,

@@ -76,6 +76,5 @@ function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
     for (let k = 0; k < idx.length; k++) out[k] = points[idx[k]];  // the caller's own objects, as simplify-js returns
     return out;
   }
-  // Nothing is kept between calls any more (api.js still calls release() from releaseBuffers()).
-  return { simplify, release: () => {} };
+  return { simplify };
 }
