@@ -346,19 +346,23 @@ namespace
                     require(idx[r].second <= n && idx[r].second >= idx[r].first + 2);
                     if (r > 0) require(idx[r].first == prev_end);
                     prev_end = idx[r].second;
-                    // mean squared residual from the covariance, in long double
+                    // mean squared residual from the covariance, in long double, of the points divided by the
+                    // chain's extent: in units of the extent the eigenvalues neither underflow nor overflow a double
+                    // (raw coordinates near 1e-159 have squares below the smallest double: the solver's rounding
+                    // then exceeded a tolerance that had underflowed to 0, for a 2-point range that fits exactly)
                     const size_t m = idx[r].second - idx[r].first;
+                    const LD unit = extent > 0 ? extent : 1;
                     LD c[d] = {};
-                    for (size_t i = idx[r].first; i < idx[r].second; ++i) for (int k = 0; k < d; ++k) c[k] += pts[i][k];
+                    for (size_t i = idx[r].first; i < idx[r].second; ++i) for (int k = 0; k < d; ++k) c[k] += pts[i][k] / unit;
                     for (int k = 0; k < d; ++k) c[k] /= m;
                     Eigen::Matrix<double, d, d> cov = Eigen::Matrix<double, d, d>::Zero();
                     for (size_t i = idx[r].first; i < idx[r].second; ++i)
                         for (int a = 0; a < d; ++a) for (int b = 0; b < d; ++b)
-                            cov(a, b) += static_cast<double>(((LD)pts[i][a] - c[a]) * ((LD)pts[i][b] - c[b]) / m);
+                            cov(a, b) += static_cast<double>(((LD)pts[i][a] / unit - c[a]) * ((LD)pts[i][b] / unit - c[b]) / m);
                     Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, d, d>> es(cov);
                     const double err = d == 2 ? es.eigenvalues()(0) : es.eigenvalues()(0) + es.eigenvalues()(1);
-                    const double s2 = static_cast<double>(sigma) * sigma;
-                    require(err <= s2 * (1 + 1e-3) + 1e-9 * static_cast<double>(extent * extent));
+                    const double s2 = static_cast<double>((LD)sigma / unit * ((LD)sigma / unit));
+                    require(err <= s2 * (1 + 1e-3) + 1e-9);
                 }
                 for (const auto &s : itls.lineSegments()) require(finite(s.beg()) && finite(s.end()));
             }
