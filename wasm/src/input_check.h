@@ -10,8 +10,9 @@
 
 namespace rtl_ops {
 
-// True if some x[i], i < count, is NaN (when nanIsBad) or has |x[i]| > limit.
-inline bool anyBeyond(const double* x, std::size_t count, double limit, bool nanIsBad) {
+// True if some x[i], i < count, is NaN or has |x[i]| > limit (vectorize's check; segment's, where NaN is a gap, is
+// copyBeyond below).
+inline bool anyBeyond(const double* x, std::size_t count, double limit) {
   std::size_t i = 0;
   bool bad = false;
 #if defined(__GNUC__)
@@ -26,17 +27,12 @@ inline bool anyBeyond(const double* x, std::size_t count, double limit, bool nan
     std::memcpy(&b, x + i + 2, sizeof b);
     a = (V)((M)a & absMask);
     b = (V)((M)b & absMask);
-    if (nanIsBad) {
-      acc0 |= ~(a <= lim);  // NaN compares false: bad
-      acc1 |= ~(b <= lim);
-    } else {
-      acc0 |= a > lim;  // NaN compares false: not bad
-      acc1 |= b > lim;
-    }
+    acc0 |= ~(a <= lim);  // NaN compares false: bad
+    acc1 |= ~(b <= lim);
   }
   bad = (acc0[0] | acc0[1] | acc1[0] | acc1[1]) != 0;
 #endif
-  for (; i < count; ++i) bad |= nanIsBad ? !(std::fabs(x[i]) <= limit) : std::fabs(x[i]) > limit;
+  for (; i < count; ++i) bad |= !(std::fabs(x[i]) <= limit);
   return bad;
 }
 

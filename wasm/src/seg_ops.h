@@ -32,8 +32,8 @@ struct SegmentOutput {
   std::vector<std::uint32_t> offsets;      // cluster k = indices[offsets[k] .. offsets[k+1])
   std::vector<std::uint32_t> runs;         // contiguous half-open index runs [b, e) of all clusters, flattened
   std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
-  // A coordinate is +-Infinity (NaN is a gap), checked before the copy into the segmenter's point vector
-  // (input_check.h); the rest of the output is then empty.
+  // A coordinate is +-Infinity (NaN is a gap), found while copying into the segmenter's point vector
+  // (input_check.h copyBeyond); the rest of the output is then empty.
   bool badInput = false;
 };
 

@@ -69,7 +69,7 @@ using Vec = rtl::VectorND<D, double>;
 template <int D>
 const std::vector<Vec<D>>& points(const double* xyz, std::size_t n, double limit, bool& bad) {
   auto& v = kept<std::vector<Vec<D>>>();
-  bad |= anyBeyond(xyz, D * n, limit, true);
+  bad |= anyBeyond(xyz, D * n, limit);
   v.resize(bad ? 0 : n);
   Vec<D>* out = v.data();
   for (std::size_t i = 0; i < v.size(); ++i)

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <type_traits>
@@ -119,7 +120,7 @@ namespace rtl
             double g = 0;
             std::unique_ptr<double[]> c;
             std::unique_ptr<float[]> f;   // 2D: x then y as floats (stride apart) for the filter, when |coords| <= 1e9
-            std::vector<float> blocks;
+            mutable std::vector<float> blocks;   // scratch of a const search
             const double *axis(int k) const { return c.get() + static_cast<std::size_t>(k) * stride; }
         };
 
@@ -346,7 +347,7 @@ namespace rtl
             const float ax = xf[first], ay = yf[first], dx = xf[last] - ax, dy = yf[last] - ay;
             const Float4 vax = Float4{} + ax, vay = Float4{} + ay, vdx = Float4{} + dx, vdy = Float4{} + dy,
                          vdd = Float4{} + (dx * dx + dy * dy), zero = Float4{};
-            float *bm = const_cast<std::vector<float> &>(pts.blocks).data();
+            float *bm = pts.blocks.data();
             const auto start = [&](std::size_t b) { return b + 1 < blocks ? begin + b * block : last - block; };
             const auto filter = [&](std::size_t i) {   // S of points i .. i + 3
                 Float4 px, py;
@@ -471,7 +472,7 @@ namespace rtl
         {
             const double a = std::fabs(x);
             g = a > g ? a : g;
-            return a <= 1.7976931348623157e308;
+            return a <= std::numeric_limits<double>::max();
         }
 
         template<int dim, typename T>
