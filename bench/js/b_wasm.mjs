@@ -19,7 +19,8 @@
 //     the same state, so outside - floor is the package's own share.
 //  2. time outside the library (argument checks, copy in, the C++ input check, results out) per function at
 //     100,000 points, as a share of the library's time (the goal: under 10 %); ", pointBuffer" rows: the input is
-//     an rtl.pointBuffer() view, read in place (no copy in).
+//     an rtl.pointBuffer() view, read in place (no copy in); ", pointBuffer + view" rows: also { view: true }, the
+//     results as views on the module's result block (no copy out).
 //  2b. segment()'s outside time by parts at 100,000 points, against its floor (two new ArrayBuffers of 4 bytes a
 //     point, filled: the two per-point arrays segment() returns as owned copies).
 //  3. gzipped size of the .wasm and the JS.
@@ -167,7 +168,7 @@ const OUT = [
 // The same calls on rtl.pointBuffer() views (zero-copy input: the numbers are read in place, not copied in): one
 // block holds both inputs, each function gets the subarray it reads.
 for (const [, f] of OUT) f();  // warm-up first: memory growth now would detach the views
-let views;
+let views, hasView = false;
 const takeViews = () => {
   const b = rtl.pointBuffer(2 * N2, 2);
   b.set(line2); b.set(ring2, 2 * N2);
@@ -181,6 +182,15 @@ if (rtl.pointBuffer) {
     ['segment (CAR, step 3), pointBuffer', () => rtl.segment(views.ring, { step: 3, lowerBound: 0.1, upperBound: 0.5 })],
     ['simplify (Float64Array), pointBuffer', () => rtl.simplify(views.line, 0.09, true)],
   ]);
+  // ... and their results as views on the module's result block ({ view: true }: no copy out), if the package has it.
+  try { rtl.segment(new Float64Array(4), { view: true }); hasView = true; } catch { /* an older package */ }
+  if (hasView) {
+    OUT.push(...[
+      ['vectorize ftls, pointBuffer + view', () => rtl.vectorize(views.line, { method: 'ftls', sigma: 0.03, delta: 3, view: true })],
+      ['vectorize dp, pointBuffer + view', () => rtl.vectorize(views.line, { method: 'dp', epsilon: 0.09, view: true })],
+      ['segment (CAR, step 3), pointBuffer + view', () => rtl.segment(views.ring, { step: 3, lowerBound: 0.1, upperBound: 0.5, view: true })],
+    ]);
+  }
   // Warm-up again until no call grows memory (growth detaches the views: the next call on them throws).
   for (let t = 0; t < 4; t++) {
     try { for (const [, f] of OUT) f(); } catch { /* detached */ }
@@ -217,6 +227,9 @@ console.log(`${'part'.padEnd(58)} ${'median'.padStart(9)} ${'min'.padStart(9)} $
   const PARTS = [
     ['segment(): whole call - library', () => { const a = performance.now(); rtl.segment(ring2, opts); return performance.now() - a - rtl.lastComputeMs; }],
     ['floor: two new ArrayBuffers of 4 B/point, filled', () => { const [ms, , v] = floorMs(8 * N2, perPoint); sink += v; return ms; }],
+    ...(hasView ? [['segment(), pointBuffer + view: whole call - library', () => {
+      const a = performance.now(); rtl.segment(views.ring, { ...opts, view: true }); return performance.now() - a - rtl.lastComputeMs;
+    }]] : []),
     ['part: copy in (16 B/point into an existing array)', () => { const a = performance.now(); copyIn.set(ring2); return performance.now() - a; }],
     ['part: cluster objects and subarrays', () => {
       const a = performance.now(), clusters = [];

@@ -204,18 +204,23 @@ function wrap(m) {
   const withInput = (fn, a, f) => withInputOf(fn, a.length, (heap, at) => heap.set(a, at), f, a);
 
   // The results of a binding that returns a ResultBlock (wasm/src/adapter.h: one number, the block's address; when
-  // traced, {out: address, trace}): {scalars, arrays, trace}, each array copied out of wasm memory as types[i].
-  // Read right after the call: the next call reuses the block. One ArrayBuffer per array: segment()'s labels and
-  // indices in one buffer (8 MB at 1M points) made its outside time 1 -> 23 ms (Node 20 on glibc: the one large
-  // allocation faulted its pages in on every call, the two of half the size reused freed ones).
-  function takeResults(r, types) {
+  // traced, {out: address, trace}): {scalars, arrays, trace}, each array copied out of wasm memory as types[i], or,
+  // with view (segment/vectorize { view: true }), the types[i] view on the block itself: no copy, valid until the
+  // next call that fills the block (segment, vectorize, simplify) or frees it (releaseBuffers), detached by memory
+  // growth. Read right after the call: the next call reuses the block. One ArrayBuffer per copied array:
+  // segment()'s labels and indices in one buffer (8 MB at 1M points) made its outside time 1 -> 23 ms (Node 20 on
+  // glibc: the one large allocation faulted its pages in on every call, the two of half the size reused freed ones).
+  function takeResults(r, types, view = false) {
     const traced = typeof r === 'object';
     const H = m.HEAPF64, buf = H.buffer;
     let k = (traced ? r.out : r) / 8;
     const S = H[k++], scalars = H.slice(k, k + S);
     k += S;
     const A = H[k++], arrays = new Array(A);
-    for (let i = 0; i < A; i++, k += 2) arrays[i] = new types[i](buf, H[k], H[k + 1]).slice();
+    for (let i = 0; i < A; i++, k += 2) {
+      const a = new types[i](buf, H[k], H[k + 1]);
+      arrays[i] = view ? a : a.slice();
+    }
     return { scalars, arrays, trace: traced ? r.trace : undefined };
   }
 
@@ -234,21 +239,28 @@ function wrap(m) {
 
   function segment(points, opts) {
     const fn = 'segment';
-    const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin', 'trace']);
+    const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin', 'trace', 'view']);
     const dim = dimOption(o, fn);
     const trace = boolOption(o, 'trace', fn, false);
+    const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (takeResults)
     // Default 2: CAR compares each point with up to step - 1 previous points, so 2 links consecutive points.
     const step = num(o, 'step', fn, 2, { min: 1, integer: true, max: 2 ** 31 });
     const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
     const res = takeResults(withInput(fn, xyz, (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1],
-      origin[2], trace)), SEGMENT_ARRAYS);
+      origin[2], trace)), SEGMENT_ARRAYS, view);
     lastComputeMs = res.scalars[0];
     const [labels, indices, offsets, runs, runOffsets] = res.arrays;
-    const clusters = [];
-    for (let k = 0; k + 1 < offsets.length; k++) {
-      clusters.push({ indices: indices.subarray(offsets[k], offsets[k + 1]), ranges: runs.subarray(runOffsets[k], runOffsets[k + 1]) });
+    // Each cluster's arrays are views on `indices` and `runs` (copies or, with view, the result block), made with
+    // the constructor: subarray() looks up the species constructor each time, ~2x slower (200 clusters: 10 -> 5 us).
+    const count = Math.max(0, offsets.length - 1), clusters = new Array(count);
+    const ib = indices.buffer, io = indices.byteOffset, rb = runs.buffer, ro = runs.byteOffset;
+    for (let k = 0; k < count; k++) {
+      clusters[k] = {
+        indices: new Uint32Array(ib, io + 4 * offsets[k], offsets[k + 1] - offsets[k]),
+        ranges: new Uint32Array(rb, ro + 4 * runOffsets[k], runOffsets[k + 1] - runOffsets[k]),
+      };
     }
     return trace ? { labels, clusters, trace: traceEvents(res.trace) } : { labels, clusters };
   }
@@ -258,7 +270,7 @@ function wrap(m) {
     const fn = 'vectorize';
     if (opts === undefined) throw new TypeError(`${fn}: options {method} are required (method: ${METHODS.join(', ')})`);
     const o = options(opts, fn, ['dim', 'method', 'primitive', 'sigma', 'delta', 'epsilon', 'maxSize', 'simplexShift',
-      'maxIterations', 'split', 'trace', 'distance']);
+      'maxIterations', 'split', 'trace', 'distance', 'view']);
     const dim = dimOption(o, fn);
     if (o.method === undefined) throw new TypeError(`${fn}: option method is required (${METHODS.join(', ')})`);
     if (typeof o.method !== 'string') throw new TypeError(`${fn}: option method must be a string, got ${describe(o.method)}`);
@@ -281,6 +293,7 @@ function wrap(m) {
     // strict behaviour (false: no result then, and `failure` says why).
     const split = boolOption(o, 'split', fn, true);
     const trace = boolOption(o, 'trace', fn, false);
+    const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (takeResults)
     if (trace && dim === 3 && (method === 'ftls' || method === 'aftls'))
       throw new RangeError(`${fn}: option trace is not available for method '${method}' in 3D (only itls, dp and rw trace in 3D)`);
     // distance (dp): to the chord's line (RTL's, default) or to the chord segment (simplify-js's).
@@ -292,7 +305,7 @@ function wrap(m) {
     const n = xyz.length / dim;  // before the call: growth during it detaches a pointBuffer() view
     const res = takeResults(withInput(fn, xyz, (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method),
       primitive === 'plane', sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace, segmentDistance)),
-    VECTORIZE_ARRAYS);
+    VECTORIZE_ARRAYS, view);
     const [ok, count, stride, computeMs, failed, ...failureTriple] = res.scalars;
     const [segments, polygonPoints, polygonOffsets, indices, params, rms, polylineOffsets, breakTriples] = res.arrays;
     lastComputeMs = computeMs;
@@ -311,12 +324,14 @@ function wrap(m) {
       failure = f;
     }
     const polygons = [];
-    for (let k = 0; k + 1 < polygonOffsets.length; k++) polygons.push(polygonPoints.slice(polygonOffsets[k], polygonOffsets[k + 1]));
-    return {
+    const part = view ? (b, e) => polygonPoints.subarray(b, e) : (b, e) => polygonPoints.slice(b, e);
+    for (let k = 0; k + 1 < polygonOffsets.length; k++) polygons.push(part(polygonOffsets[k], polygonOffsets[k + 1]));
+    const out = {
       method, dim, primitive, ok: ok === 1, count, segments, polygons, indices, params, stride, rms,
       polylineOffsets, breaks, failure,
-      ...(trace ? { trace: traceEvents(res.trace) } : {}),
     };
+    if (trace) out.trace = traceEvents(res.trace);  // not a spread of {} when untraced: that copied on every call
+    return out;
   }
 
   // Stateful objects own a C++ object behind an integer handle: dispose() frees it, and if the caller forgets,

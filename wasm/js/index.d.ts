@@ -70,6 +70,10 @@ export interface SegmentOptions {
   origin?: ArrayLike<number>;
   /** record the segmenter's steps (CarEvent[] in the result's `trace`); default false (the untraced C++ path) */
   trace?: boolean;
+  /** return `labels` and every cluster's `indices` and `ranges` as views on the module's result block in wasm memory
+   *  instead of copies (no copy out: the output counterpart of pointBuffer()); default false. Same numbers as the
+   *  copies; with trace too. See RTL.pointBuffer for how long such views are valid. */
+  view?: boolean;
 }
 export interface Cluster {
   /** point indices in the cluster's order (increasing; a cluster wrapping the seam lists its end-of-scan part first) */
@@ -119,6 +123,10 @@ export interface VectorizeOptions {
    *  (to the chord segment, as simplify-js and Boost.Geometry: the same kept points as simplify(points, epsilon,
    *  true)). Checked and ignored by the other methods; not with trace (RangeError). */
   distance?: 'line' | 'segment';
+  /** return the result's typed arrays (segments, polygons, indices, params, rms, polylineOffsets) as views on the
+   *  module's result block in wasm memory instead of copies (no copy out); default false. Same numbers as the copies;
+   *  with trace too. See RTL.pointBuffer for how long such views are valid. */
+  view?: boolean;
 }
 /** A point of simplify-js's kind: {x, y}, or {x, y, z} for 3D. Other properties are kept (the objects are returned). */
 export interface SimplifyPoint {
@@ -606,7 +614,15 @@ export interface RTL {
    *  vectorize, segment or simplify: they read it in place instead of copying it in. Calls never move the block;
    *  a later pointBuffer() may (same or smaller size: same block), releaseBuffers() and heapInUse() free it, and
    *  wasm memory growth detaches the view (length 0): check `view.length` and take a new one. A view on the module's
-   *  memory outside the current block, or a detached one, is rejected with a TypeError. */
+   *  memory outside the current block, or a detached one, is rejected with a TypeError.
+   *
+   *  Zero-copy output, its counterpart: segment() and vectorize() with { view: true } return their typed arrays as
+   *  views on the module's result block. Such a view is valid until the next segment(), vectorize() or simplify()
+   *  call, releaseBuffers() or heapInUse(): these refill or free the block, after which the view may show another
+   *  call's numbers or freed memory, and must be neither read nor written (writing can corrupt the module's heap).
+   *  Until then, writing into it changes nothing the module uses. Other calls leave it as it is, unless they grow
+   *  wasm memory, which detaches it (length 0) as it does pointBuffer()'s views. Keep a result with `.slice()`; a
+   *  view passed back as points is rejected with a TypeError (the call would overwrite it). */
   pointBuffer(n: number, dim?: Dim): Float64Array;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
   /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0, not
