@@ -214,8 +214,8 @@ function wrap(m) {
     const traced = typeof r === 'object';
     const H = m.HEAPF64, buf = H.buffer;
     let k = (traced ? r.out : r) / 8;
-    const S = H[k++], scalars = H.slice(k, k + S);
-    k += S;
+    const S = H[k++], scalars = new Array(S);  // a plain array: H.slice() would allocate an ArrayBuffer per call
+    for (let i = 0; i < S; i++) scalars[i] = H[k++];
     const A = H[k++], arrays = new Array(A);
     for (let i = 0; i < A; i++, k += 2) {
       const a = new types[i](buf, H[k], H[k + 1]);
