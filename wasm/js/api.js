@@ -99,6 +99,12 @@ function traceEvents(t) {
   return out;
 }
 
+// A corner of an FTLS polyline from the triple boundary, crossingDistance, delta at b[k]. Here, not a closure in
+// vectorize(): the build's keepNames gives every named closure its name with Object.defineProperty, per call.
+function corner(b, k) {
+  return { boundary: b[k], crossingDistance: b[k + 1], delta: b[k + 2] };
+}
+
 // Proximity bounds of the segmenters: 0 <= lowerBound <= upperBound (upperBound may be Infinity).
 function boundsOptions(o, fn, lowerDefault, upperDefault) {
   const lower = num(o, 'lowerBound', fn, lowerDefault, { min: 0 });
@@ -309,7 +315,6 @@ function wrap(m) {
     const [ok, count, stride, computeMs, failed, ...failureTriple] = res.scalars;
     const [segments, polygonPoints, polygonOffsets, indices, params, rms, polylineOffsets, breakTriples] = res.arrays;
     lastComputeMs = computeMs;
-    const corner = (b, k) => ({ boundary: b[k], crossingDistance: b[k + 1], delta: b[k + 2] });
     const breaks = [];
     for (let k = 0; k < breakTriples.length; k += 3) breaks.push(corner(breakTriples, k));
     let failure = null;
