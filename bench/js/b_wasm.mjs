@@ -22,7 +22,8 @@
 //     an rtl.pointBuffer() view, read in place (no copy in); ", pointBuffer + view" rows: also { view: true }, the
 //     results as views on the module's result block (no copy out).
 //  2b. segment()'s outside time by parts at 100,000 points, against its floor (two new ArrayBuffers of 4 bytes a
-//     point, filled: the two per-point arrays segment() returns as owned copies).
+//     point, filled: the two per-point arrays segment() returns as owned copies), and the same call with a pointBuffer()
+//     input and { view: true }, which has neither the copy in nor that floor.
 //  3. gzipped size of the .wasm and the JS.
 // RTL_PACKAGE=dir: a package folder built by wasm/build.mjs with RTL_DIST_DIR, instead of dist/.
 import { spawn } from 'node:child_process';
