@@ -622,7 +622,7 @@ export interface RTL {
    *  call's numbers or freed memory, and must be neither read nor written (writing can corrupt the module's heap).
    *  Until then, writing into it changes nothing the module uses. Other calls leave it as it is, unless they grow
    *  wasm memory, which detaches it (length 0) as it does pointBuffer()'s views. Keep a result with `.slice()`; a
-   *  view passed back as points is rejected with a TypeError (the call would overwrite it). */
+   *  Float64Array view passed back as points is rejected with a TypeError (the call would overwrite it). */
   pointBuffer(n: number, dim?: Dim): Float64Array;
   toSvg(drawing: Drawing, options?: SvgOptions): string;
   /** every FLASER scan of a CARMEN log (the text, or the file's bytes); beams without a return (range <= 0, not
