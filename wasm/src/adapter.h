@@ -6,7 +6,9 @@
 //  * large arrays come in as (pointer, count) into the wasm heap, written by JS with HEAPF64.set, or read in place
 //    from the block the caller filled through pointBuffer() (viewBlock);
 //  * results leave as JS typed arrays: copied in C++, or laid out in one kept block (ResultBlock) that the JS layer
-//    copies out right after the call, so JS never keeps a view that memory growth could detach.
+//    copies out right after the call, so that JS keeps no view that memory growth could detach; with
+//    segment()/vectorize()'s { view: true } it hands out views on the block instead (valid until the next call that
+//    fills or frees it: documented in wasm/js/index.d.ts).
 #pragma once
 
 #include <emscripten/bind.h>
@@ -149,7 +151,7 @@ inline val i32(const std::vector<std::int32_t>& v) { return typedArray("Int32Arr
 inline std::string str(std::size_t v) { return std::to_string(v); }
 
 // A call's results handed to JS as one number: the address of a kept block holding the scalars and arrays, which
-// wasm/js/api.js (takeResults) copies out right after the call. Building a result object field by field through
+// wasm/js/api.js (takeResults) copies out right after the call (or hands out as views: { view: true }). Building a result object field by field through
 // embind costs ~4 JS calls per array (the constructor looked up by name, a memory view, the copy, the key string):
 // 15-30 us per vectorize() call, as much as FTLS's own time on a few thousand points. Layout, in doubles:
 //   [scalar count S, scalars..., array count A, (byte address, element count) per array..., array bytes...]
@@ -164,8 +166,8 @@ class ResultBlock {
   }
   template <class T>
   ResultBlock& array(const std::vector<T>& v) { return bytes(v.data(), v.size(), sizeof(T)); }
-  // A per-point array moved into the block's keeping instead of copied (one copy less: JS copies it out anyway);
-  // the block holds it until the next call's take().
+  // A per-point array moved into the block's keeping instead of copied (one copy less: JS copies it out, or views
+  // it); the block holds it until the next call's take() or releaseKept().
   ResultBlock& take(std::vector<std::int32_t>&& v) {
     taken32_ = std::move(v);
     return bytes(taken32_.data(), taken32_.size(), 0);
