@@ -27,10 +27,28 @@
 #include <wasm_simd128.h>
 #endif
 
+// Loops over many points live in functions of their own (never inlined into simplifyIndices): inside that huge
+// function V8's TurboFan kept the loops' accumulators in stack slots. noinline keeps the compiler from inlining
+// them; Binaryen (wasm-opt, which emcc runs at link) still inlines a function that has one caller, so the callers
+// call them through opaque() below.
+#if defined(__GNUC__)
+#define RTL_SIMPLIFY_NOINLINE __attribute__((noinline))
+#else
+#define RTL_SIMPLIFY_NOINLINE
+#endif
+
 namespace rtl
 {
     namespace simplify_detail
     {
+        //! f, through a volatile pointer that no optimizer sees through: the call stays a call (see above).
+        template<typename F>
+        F *opaque(F *f)
+        {
+            F *volatile p = f;
+            return p;
+        }
+
         //! a * b, never fused with a following addition.
         inline double product(double a, double b)
         {
@@ -236,7 +254,7 @@ namespace rtl
         //! At the end the largest lane value v wins; the first block where a lane reached v is the first block
         //! holding v, and a walk of that one block finds the first index of v: the scan's first maximum.
         template<int dim>
-        std::size_t farthestPairs(const AxisPoints<dim> &pts, std::size_t first, std::size_t last,
+        RTL_SIMPLIFY_NOINLINE std::size_t farthestPairs(const AxisPoints<dim> &pts, std::size_t first, std::size_t last,
                                   const ChordPair<dim> &c, double &best)
         {
             constexpr std::size_t block = 16;
@@ -359,7 +377,7 @@ namespace rtl
         //! Pass 1 keeps the largest S of each block of 16 points (no branch); pass 2 computes J for the points
         //! that pass (in the blocks that pass), in order, with the library's `>`: the first maximum
         //! and its value are simplify-js's, whatever the filter's roundings.
-        inline std::size_t farthestFiltered(const AxisPoints<2> &pts, std::size_t first, std::size_t last,
+        RTL_SIMPLIFY_NOINLINE inline std::size_t farthestFiltered(const AxisPoints<2> &pts, std::size_t first, std::size_t last,
                                             const Chord<2> &chord, double &best)
         {
             constexpr std::size_t block = 16;
@@ -463,7 +481,7 @@ namespace rtl
 
         //! Indices (ascending) that simplify-js keeps of the points in `pts`.
         template<int dim>
-        std::vector<std::size_t> simplify(const AxisPoints<dim> &pts, double sq_tolerance)
+        RTL_SIMPLIFY_NOINLINE std::vector<std::size_t> simplify(const AxisPoints<dim> &pts, double sq_tolerance)
         {
             const std::size_t m = pts.m;
             std::vector<char> keep(m, 0);
@@ -497,14 +515,6 @@ namespace rtl
             g = a > g ? a : g;
             return a <= std::numeric_limits<double>::max();
         }
-
-// The passes over every input point live in functions of their own: inlined into simplifyIndices, V8's TurboFan
-// kept their loops' accumulators in stack slots (wasm: the radial pass's library time -14 % when it was split out).
-#if defined(__GNUC__)
-#define RTL_SIMPLIFY_NOINLINE __attribute__((noinline))
-#else
-#define RTL_SIMPLIFY_NOINLINE
-#endif
 
         //! High quality: all n points into the axis arrays; their largest |coordinate| into g. False if a
         //! coordinate is not finite.
@@ -650,13 +660,13 @@ namespace rtl
             double g = 0;
             if (high_quality)
             {
-                finite = copyAll<dim>(xyz, n, axis, g);
+                finite = opaque(&copyAll<dim, T>)(xyz, n, axis, g);
                 pts.m = n;
             }
             else
             {
                 from.reset(new std::size_t[n]);
-                std::size_t m = radialPass<dim>(xyz, n, sq_tolerance, axis, from.get(), finite);
+                std::size_t m = opaque(&radialPass<dim, T>)(xyz, n, sq_tolerance, axis, from.get(), finite);
                 // The last point is appended unless it is the last one kept. (simplify-js compares objects: when
                 // the last object is also the last kept one, at an earlier index, it is not appended; appended, a
                 // copy of the last kept point changes no other decision and the same object comes out.)
@@ -685,7 +695,7 @@ namespace rtl
                 pts.blocks.resize(m / 16 + 1);
             }
 #endif
-            std::vector<std::size_t> kept = m <= 2 ? std::vector<std::size_t>{} : simplify<dim>(pts, sq_tolerance);
+            std::vector<std::size_t> kept = m <= 2 ? std::vector<std::size_t>{} : opaque(&simplify<dim>)(pts, sq_tolerance);
             if (m <= 2)
                 for (std::size_t i = 0; i < m; ++i)
                     kept.push_back(i);
