@@ -29,7 +29,7 @@ export function walk(n) {
 }
 
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
-export const WARMUP_MS = 400;
+export const WARMUP_MS = 1000;
 
 let sink = 0;  // keeps the floor loop's result alive
 function readOnce(pts) {
