@@ -201,6 +201,29 @@ test('typed-array form and vectorize distance segment keep the same points; dist
   assert.equal(rtl.vectorize(hook, { method: 'dp', epsilon: 0.5 }).count, 1);
 });
 
+// The radial pre-pass runs in steps of several points and detects a non-finite coordinate by the sum of the step's
+// distances (an exact check follows only if that sum overflows): huge finite coordinates, whose squares and sums
+// overflow, must follow simplify-js; a non-finite one anywhere (first, inside a step, in the tail, last) must throw.
+test('simplify fast mode: huge finite coordinates follow simplify-js; a non-finite one anywhere throws naming it', () => {
+  for (const scale of [1e150, 1e200]) {
+    for (const n of [5, 9, 17, 1000]) {
+      const pts = walk(n, 7).map((p) => ({ x: p.x * scale, y: p.y * scale }));
+      for (const tol of [1, 3 * scale, 1e300]) {
+        for (const hq of [false, true]) sameObjects(rtl.simplify(pts, tol, hq), simplifyJs(pts, tol, hq), `scale ${scale} n=${n} tol=${tol} hq=${hq}`);
+      }
+    }
+  }
+  const pts = walk(1003, 8);
+  for (const at of [0, 1, 4, 8, 500, 999, 1000, 1001, 1002]) {
+    for (const bad of [NaN, Infinity, -Infinity]) {
+      for (const tol of [0.5, Infinity]) {
+        const input = pts.map((p, i) => (i === at ? { x: p.x, y: bad } : p));
+        throwsWith(() => rtl.simplify(input, tol), RangeError, new RegExp(`^simplify: point ${at} has a non-finite coordinate`));
+      }
+    }
+  }
+});
+
 test('simplify argument errors name the function; the module keeps working and the heap does not grow', () => {
   const ok = [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: 0 }];
   throwsWith(() => rtl.simplify('x'), TypeError, /^simplify: points must be an array of \{x, y\} objects or a typed array/);
@@ -208,6 +231,14 @@ test('simplify argument errors name the function; the module keeps working and t
   throwsWith(() => rtl.simplify([{ x: 0, y: 0 }, { x: '1', y: 1 }, { x: 1, y: 1 }]), TypeError, /^simplify: points\[1\]\.x and \.y must be numbers, got a string/);
   throwsWith(() => rtl.simplify([{ x: 0, y: 0, z: 0 }, { x: 1, y: 1 }, { x: 1, y: 1, z: 1 }]), TypeError, /^simplify: points\[1\]\.z must be a number \(dim 3\)/);
   throwsWith(() => rtl.simplify([1, 2, 3, 4]), TypeError, /^simplify: points\[0\] is the number 1, expected an object/);
+  // Checked in the copy loop without an object test per point: null, undefined and primitives anywhere are named,
+  // and an error thrown by a getter of the caller's comes through unchanged.
+  throwsWith(() => rtl.simplify([{ x: 0, y: 0 }, { x: 1, y: 1 }, undefined]), TypeError, /^simplify: points\[2\] is undefined, expected an object \{x, y\}$/);
+  throwsWith(() => rtl.simplify([{ x: 0, y: 0, z: 0 }, { x: 1, y: 1, z: 1 }, null]), TypeError, /^simplify: points\[2\] is null, expected an object \{x, y, z\}$/);
+  throwsWith(() => rtl.simplify([{ x: 0, y: 0 }, 'ab', { x: 1, y: 1 }]), TypeError, /^simplify: points\[1\] is a string/);
+  throwsWith(() => rtl.simplify([{ x: 0, y: 0 }, () => 0, { x: 1, y: 1 }]), TypeError, /^simplify: points\[1\] is a function/);
+  const boom = new Error('boom');
+  assert.throws(() => rtl.simplify([{ x: 0, y: 0 }, { get x() { throw boom; }, y: 1 }, { x: 1, y: 1 }]), (e) => e === boom);
   throwsWith(() => rtl.simplify(ok, '1'), TypeError, /^simplify: tolerance must be a number, got a string/);
   throwsWith(() => rtl.simplify(ok, -1), RangeError, /^simplify: tolerance must be >= 0 \(or Infinity\), got -1$/);
   throwsWith(() => rtl.simplify(ok, NaN), RangeError, /^simplify: tolerance must be >= 0 \(or Infinity\), got NaN$/);

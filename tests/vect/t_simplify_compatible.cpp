@@ -248,6 +248,59 @@ TEST(SimplifyCompatible, HugeCoordinatesFollowTheLibrary)
         EXPECT_EQ(run<double>(pts, false, 1.0, hq), reference(pts, 1.0, hq, false));
 }
 
+// Long inputs of huge finite coordinates: the radial pass's four-point steps sum the squared distances to detect a
+// non-finite coordinate; here that sum (and single squares) overflow to inf, which must neither throw nor change a
+// decision (the coordinates are then checked one by one). Steps of 1e150 (squares ~1e300, their sum overflows) and
+// 1e200 (every square overflows: every point passes the tolerance).
+TEST(SimplifyCompatible, HugeCoordinatesLongInputsFollowTheLibrary)
+{
+    for (double scale : {1e150, 1e200})
+        for (size_t n : {5u, 6u, 7u, 8u, 9u, 40u, 333u})
+            for (bool three : {false, true})
+            {
+                std::vector<P> pts = randomWalk(n, 11, three);
+                for (P &p : pts) { p.x *= scale; p.y *= scale; p.z *= scale; }
+                for (bool hq : {false, true})
+                    for (double tol : {1.0, 3 * scale, 1e300})
+                    {
+                        std::vector<size_t> got;
+                        ASSERT_NO_THROW(got = run<double>(pts, three, tol, hq)) << scale << " " << n;
+                        EXPECT_EQ(got, reference(pts, tol, hq, three)) << scale << " " << n << " " << tol;
+                    }
+            }
+}
+
+// A non-finite coordinate anywhere throws, in both modes, whatever the radial pass decides there: a NaN point
+// passes no tolerance (the pass would drop it), an infinite one passes every finite one (it would be kept), and an
+// infinite tolerance keeps nothing. Every position of short and longer inputs (the four-point steps and the tail).
+TEST(SimplifyCompatible, NonFiniteCoordinateAnywhereThrows)
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    for (size_t n : {3u, 5u, 8u, 9u, 23u})
+        for (bool three : {false, true})
+        {
+            const size_t dim = three ? 3 : 2;
+            const std::vector<P> walk = randomWalk(n, 3, three);
+            std::vector<double> flat;
+            for (const P &p : walk)
+            {
+                flat.push_back(p.x);
+                flat.push_back(p.y);
+                if (three) flat.push_back(p.z);
+            }
+            for (size_t j = 0; j < flat.size(); ++j)
+                for (double bad : {inf, -inf, std::nan("")})
+                    for (bool hq : {false, true})
+                        for (double tol : {0.5, inf})
+                        {
+                            std::vector<double> input = flat;
+                            input[j] = bad;
+                            EXPECT_THROW(rtl::simplifyCompatibleIndices(input.data(), n, dim, tol, hq), std::invalid_argument)
+                                << n << " " << j << " " << bad << " " << hq << " " << tol;
+                        }
+        }
+}
+
 // Inputs where a fused multiply-add (one plausible contraction of the library's expressions) would round the
 // distance differently and the tolerance sits between the two values: the result must follow the unfused
 // arithmetic. Fails if the header's products get contracted (e.g. GCC -march=haswell without its barrier).

@@ -25,23 +25,46 @@ function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
   // core does the rest, radial pre-pass included. (simplify-js's pre-pass appends the last point unless it is the
   // same object as the last kept one; the core compares indices, which can append a copy of the last kept point,
   // and that changes no other decision: the same objects come out.)
-  function fillObjects(points, dim) {
-    return (heap, at) => {
-      for (let i = 0; i < points.length; i++) {
+  // The loop tests only the numbers: reading .x of null or undefined throws, and the catch names the point. A test
+  // `q === null || typeof q !== 'object'` per point made the copy ~1.4x slower (100k points: ~0.29 -> ~0.20 ms
+  // without it, Node 20); a primitive has no numeric .x, so it fails the number test (a function with numeric x
+  // and y passes, as in simplify-js: ruling it out per point cost ~0.08 ms more). One function per dim, taking
+  // everything as parameters: the loop inside fill's closure, reading points from its context, took ~10 % longer.
+  function rethrow(points, i, dim, e) {
+    const q = points[i];
+    if (q === null || typeof q !== 'object') throw pointError(q, i, dim);  // null, undefined or a primitive
+    throw e;  // ours, or thrown by a getter of the caller's
+  }
+  function copyXY(points, heap, at) {
+    let i = 0;
+    try {
+      for (; i < points.length; i++) {
         const q = points[i];
-        if (q === null || typeof q !== 'object') throw pointError(q, i, dim);
         const x = q.x, y = q.y;
-        if (typeof x !== 'number' || typeof y !== 'number') throw pointError(q, i, dim);
+        if (typeof x !== 'number' || typeof y !== 'number') throw pointError(q, i, 2);
         heap[at++] = x;
         heap[at++] = y;
-        if (dim === 3) {
-          const z = q.z;
-          if (typeof z !== 'number') throw pointError(q, i, dim);
-          heap[at++] = z;
-        }
       }
-    };
+    } catch (e) {
+      rethrow(points, i, 2, e);
+    }
   }
+  function copyXYZ(points, heap, at) {
+    let i = 0;
+    try {
+      for (; i < points.length; i++) {
+        const q = points[i];
+        const x = q.x, y = q.y, z = q.z;
+        if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') throw pointError(q, i, 3);
+        heap[at++] = x;
+        heap[at++] = y;
+        heap[at++] = z;
+      }
+    } catch (e) {
+      rethrow(points, i, 3, e);
+    }
+  }
+  const fillObjects = (points, dim) => (dim === 2 ? (heap, at) => copyXY(points, heap, at) : (heap, at) => copyXYZ(points, heap, at));
 
   function simplify(points, tolerance, highQuality, opts) {
     const t = tolerance === undefined ? 1 : tolerance;  // simplify-js's default
