@@ -114,6 +114,11 @@ namespace rtl
         Observer *observer_{nullptr};
         int branch_{0};
         mutable int method_{0};   // the repair being tried, for the events
+        // repartition's scratch, kept between calls (its tables are p^2 for up to ~130 candidates).
+        mutable std::vector<size_t> rp_cand, rp_best, rp_from;
+        mutable std::vector<char> rp_state;
+        mutable std::vector<Approximation> rp_fit;
+        mutable std::vector<std::pair<size_t, size_t>> rp_order;
 
         void reportRepair(size_t first, size_t end, const std::vector<IndexType> &ranges) const
         {
@@ -204,11 +209,23 @@ namespace rtl
 
         //! Replaces ranges [r0, r1) by the fewest ranges with breakpoints within +-k of their current internal
         //! boundaries such that every range fits and every pair passes (including with ranges r0 - 1 and r1).
+        //! The programme, over candidate breakpoints cand[0..p): best(x, y) = fewest ranges covering
+        //! [start, cand[y]) whose last range is [cand[x], cand[y]); from(x, y) = the predecessor w of the smallest
+        //! best(w, x) whose pair with [cand[x], cand[y]) passes, the smallest such w on ties. That is what a scan of
+        //! w = 0, 1, ... keeping the first strict improvement gives; it is found here with fewer tests, the same
+        //! decisions (so the same ranges, bit for bit):
+        //! - the predecessors of x are tried in the order (best(w, x), w) and the first that passes is taken;
+        //! - a row x that no range reaches (every best(w, x) unset) is skipped: none of its cells can be set, so
+        //!   its ranges are never fitted (a range is fitted only when some predecessor may use it).
+        //! The scan of all w (p^3 / 6 steps) and the fits of all p^2 / 2 ranges were 97 % of FTLS's time on inputs
+        //! that never reach the exact search (issue 15 item 7: corpus seed 28, 1,019 points, 5 calls of up to
+        //! p = 127: 6.8M instructions; 4.1M since, now mostly the fits of the ranges that rows reach).
         bool repartition(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
                          std::vector<IndexType> &indices, size_t r0, size_t r1, size_t k) const
         {
             const size_t start = indices[r0].first, end = indices[r1 - 1].second;
-            std::vector<size_t> cand{start};
+            std::vector<size_t> &cand = rp_cand;
+            cand.assign(1, start);
             for (size_t r = r0; r + 1 < r1; ++r)
             {
                 const size_t m = indices[r].second;
@@ -219,43 +236,58 @@ namespace rtl
             std::sort(cand.begin(), cand.end());
             cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
             const size_t p = cand.size();
-            // best[x * p + y]: fewest ranges covering [start, cand[y]) whose last range is [cand[x], cand[y]).
             const size_t none = std::numeric_limits<size_t>::max();
-            std::vector<size_t> best(p * p, none), from(p * p, none);
-            std::vector<Approximation> fit(p * p);
-            std::vector<char> ok(p * p, 0);
-            for (size_t x = 0; x < p; ++x)
-                for (size_t y = x + 1; y < p; ++y)
-                    if (fits(a, cand[x], cand[y]))
-                    {
-                        ok[x * p + y] = 1;
-                        fit[x * p + y] = Approximation(a.sums(cand[x], cand[y]));
-                    }
+            std::vector<size_t> &best = rp_best, &from = rp_from;
+            best.assign(p * p, none);
+            from.assign(p * p, none);
+            // state[x * p + y]: 0 not tested, 1 fits (fit[x * p + y] set), 2 does not fit.
+            std::vector<char> &state = rp_state;
+            state.assign(p * p, 0);
+            if (rp_fit.size() < p * p)
+                rp_fit.resize(p * p);
+            const auto fitted = [&](size_t x, size_t y) -> bool {
+                char &st = state[x * p + y];
+                if (st == 0)
+                {
+                    const auto ps = a.sums(cand[x], cand[y]);   // once for the test and the fit (fits()' test)
+                    const size_t len = cand[y] - cand[x];
+                    st = len >= 2 && (len == 2 || Approximation::errorBelow(ps, sigma2) || sigma2 == std::numeric_limits<ComputeType>::infinity()) ? 1 : 2;
+                    if (st == 1)
+                        rp_fit[x * p + y] = Approximation(ps);
+                }
+                return st == 1;
+            };
             for (size_t y = 1; y < p; ++y)
-                if (ok[y] && (r0 == 0 || crossingOk(pts, lines[r0 - 1], fit[y], start)))
+                if (fitted(0, y) && (r0 == 0 || crossingOk(pts, lines[r0 - 1], rp_fit[y], start)))
                     best[y] = 1;
+            std::vector<std::pair<size_t, size_t>> &order = rp_order;   // (best(w, x), w) of the set cells of column x
             for (size_t x = 1; x < p; ++x)
+            {
+                order.clear();
+                for (size_t w = 0; w < x; ++w)
+                    if (best[w * p + x] != none)
+                        order.emplace_back(best[w * p + x], w);
+                if (order.empty())
+                    continue;
+                std::sort(order.begin(), order.end());
                 for (size_t y = x + 1; y < p; ++y)
                 {
-                    if (!ok[x * p + y])
+                    if (!fitted(x, y))
                         continue;
-                    for (size_t w = 0; w < x; ++w)
-                    {
-                        const size_t prev = best[w * p + x];
-                        if (prev == none || prev + 1 >= best[x * p + y])
-                            continue;
-                        if (crossingOk(pts, fit[w * p + x], fit[x * p + y], cand[x]))
+                    for (const auto &c : order)
+                        if (crossingOk(pts, rp_fit[c.second * p + x], rp_fit[x * p + y], cand[x]))
                         {
-                            best[x * p + y] = prev + 1;
-                            from[x * p + y] = w;
+                            best[x * p + y] = c.first + 1;
+                            from[x * p + y] = c.second;
+                            break;
                         }
-                    }
                 }
+            }
             size_t last = none, count = none;
             for (size_t x = 0; x + 1 < p; ++x)
             {
                 const size_t c = best[x * p + p - 1];
-                if (c != none && c < count && (r1 == indices.size() || crossingOk(pts, fit[x * p + p - 1], lines[r1], end)))
+                if (c != none && c < count && (r1 == indices.size() || crossingOk(pts, rp_fit[x * p + p - 1], lines[r1], end)))
                 {
                     count = c;
                     last = x;

@@ -48,7 +48,8 @@
 // predecessor that meets has at most one more. On the bridge seeds 35, 115, 299, 40, 257, 297, 84, 117
 // (R - remaining[0] = 3, 7, 9, 8, 4, 6, 9, 5) the bound for the chain is R and that round keeps 0.1-1.9 states per
 // point: the optimum's paths are few, the cost is the pass itself, which visits all F fitting ranges (78-95 per
-// point). Callgrind, the search on seeds 35, 117, 297, 115, 84: 0.60, 0.51, 0.72, 0.80, 0.91 x the instructions
+// point; since corner-testing only the ranges whose lower bound can matter, see backward(), it fits them all but
+// tests a fraction). Callgrind, the search on seeds 35, 117, 297, 115, 84: 0.60, 0.51, 0.72, 0.80, 0.91 x the instructions
 // before (an exact count, testing every candidate, was 0.99-1.28 x). It costs more where no strict partition exists
 // and the forward search dies early (seed 213: at corner 301 of 875, 28.7M -> 89.8M instructions): the pass covers the
 // whole chain first. Left: F itself; a bound that certifies the bridges without visiting every fitting range (e.g.
@@ -328,8 +329,15 @@ namespace rtl
         // Backward pass: the fitting ranges by start (r_start, r_end; ends ascending in r_off[x] .. r_off[x + 1]),
         // to_end[r]: a lower bound on the ranges of a valid partition of [x, N) that starts with range r (none: no
         // such partition); by_end: the ranges grouped by end.
+        // to_end[r] is evaluated on demand (unknown until then, see toEnd); v_min[y], v_more[y]: the least count of
+        // the ranges from y and whether another one that is not none exists; cand_lines[cand_off[y] ..
+        // + cand_cnt[y]): the lines of the ranges from y with the least count (the candidates at corner y).
         std::vector<size_t> r_off, e_off, by_end;
-        std::vector<uint32_t> r_start, r_end, to_end;
+        std::vector<uint32_t> r_start, r_end, to_end, v_min;
+        std::vector<char> v_more;
+        std::vector<size_t> cand_off, cand_cnt;
+        std::vector<Approximation> cand_lines;
+        static constexpr uint32_t unknown = none - 1;
         std::vector<size_t> far, remaining, first_within;
         CornerReport failure_;
 
@@ -433,13 +441,25 @@ namespace rtl
                 if (!exact_rest && budget - used_ranges - 1 < first_within.size())
                     y0 = std::max(y0, first_within[budget - used_ranges - 1]);
             }
+            if (exact_rest)
+            {
+                // to_end[r] >= lowerEnd(r) (or none): a range that the bound already excludes is not evaluated.
+                // Evaluated first, as an evaluation may reuse in_lines and out_lines.
+                for (size_t r = r_off[x]; r < r_off[x + 1]; ++r)
+                {
+                    const uint32_t lb = lowerEnd(r, n);
+                    if (lb != none && used_ranges + lb <= budget)
+                        toEnd(pts, a, r);
+                }
+            }
             out_lines.clear();
             if (exact_rest)
             {
                 // The ranges from x whose count to the end fits the budget (the cheapest incoming state's count).
                 for (size_t r = r_off[x]; r < r_off[x + 1]; ++r)
                 {
-                    if (to_end[r] == none || used_ranges + to_end[r] > budget)
+                    const uint32_t lb = lowerEnd(r, n);
+                    if (lb == none || used_ranges + lb > budget || to_end[r] == none || used_ranges + to_end[r] > budget)
                         continue;
                     const size_t y = r_end[r];
                     ++work_.fits;
@@ -526,13 +546,25 @@ namespace rtl
             }
         }
 
-        //! The backward pass (strict mode): to_end[] for every fitting range, by boundaries from the end. Exactly, a
+        //! The backward pass (strict mode): to_end[] for the fitting ranges, by boundaries from the end. Exactly, a
         //! range [x, y) would need 1 + the least to_end of the ranges from y whose line meets its own at y; here
-        //! only the ranges from y with the least count v are tested (the same lines, corner test and chord query as
-        //! the forward search): 1 + v if one of them meets, else 2 + v if any range from y has a larger count
-        //! (assumed to meet), else none. So to_end[] never exceeds the exact count, and a range's predecessor has
-        //! at most one more, which the bounded rounds need. Returns the bound for the whole chain (unbounded if no
-        //! valid partition exists).
+        //! only the ranges from y with the least count v are tested (the candidates at y): 1 + v if one of them
+        //! meets, else 2 + v if any range from y has another count that is not none (assumed to meet), else none.
+        //! So to_end[] never exceeds the exact count, and a range's predecessor has at most one more, which the
+        //! bounded rounds need. Returns the bound for the whole chain (unbounded if no valid partition exists).
+        //! Evaluated on demand (toEnd, boundaryCounts; issue 15 item 7): to_end[r] lies in {1 + v_min[z], 2 + v_min[z],
+        //! none} for r's end z, so lowerEnd(r) = 1 + v_min[z] bounds it from below without a corner test. The least
+        //! count at y only needs the ranges from y whose lowerEnd does not exceed it (the others can neither have
+        //! the least count nor be candidates), and a round only the ranges whose lowerEnd fits its budget; the rest
+        //! are never tested. Before, every fitting range was tested at its end (e.g. corpus seed 84: 92 per point,
+        //! of which 15 have lowerEnd <= v_min of their start).
+        //! The corner test of a range against the candidates is the exact pairwise test (meets(), in candidate
+        //! order) when there are at most scan_first + scan_share of them, else choosePredecessors on all ranges
+        //! ending there at once (the chord query bounds the work, as before). The pass used to run
+        //! choosePredecessors on every boundary's ranges at once, whose chord query gives the same answer (whether
+        //! some candidate meets) except where a near-parallel crossing is not resolved by ComputeType (see the file
+        //! comment); either way to_end stays a valid bound, so the rounds return the same optimum, and on the
+        //! worst-case corpus every result is the same bit for bit (t_fast_corpus_identity).
         size_t backward(const std::vector<VectorType> &pts, const SumArray &a, size_t n)
         {
             r_off.assign(n + 1, 0);
@@ -549,7 +581,7 @@ namespace rtl
             r_off[n - 1] = r_off[n] = r_end.size();
             const size_t nr = r_end.size();
             work_.states += nr;
-            to_end.assign(nr, none);
+            to_end.assign(nr, unknown);
             e_off.assign(n + 2, 0);
             for (size_t r = 0; r < nr; ++r)
                 ++e_off[r_end[r] + 1];
@@ -563,41 +595,114 @@ namespace rtl
                     by_end[fill[r_end[r]]++] = r;
             for (size_t k = e_off[n]; k < e_off[n + 1]; ++k)
                 to_end[by_end[k]] = 1;
-            reversed_ = true;
-            for (size_t y = n - 1; y >= 2; --y)
+            v_min.assign(n + 1, none);
+            v_more.assign(n + 1, 0);
+            cand_off.assign(n + 1, none);
+            cand_cnt.assign(n + 1, 0);
+            cand_lines.clear();
+            // Boundaries from the end: v_min[y], v_more[y] for every boundary that ends a range, and the chain start.
+            for (size_t y = n - 1; ; --y)
             {
-                if (e_off[y] == e_off[y + 1])
-                    continue;
-                // Candidates: the ranges from y with the least count (any other one is assumed to meet).
-                uint32_t vmin = none;
-                for (size_t r = r_off[y]; r < r_off[y + 1]; ++r)
-                    vmin = std::min(vmin, to_end[r]);
-                if (vmin == none)
-                    continue;
-                bool more = false;
-                in_lines.clear();
-                for (size_t r = r_off[y]; r < r_off[y + 1]; ++r)
-                    if (to_end[r] == vmin)
-                        in_lines.emplace_back(a.sums(y, r_end[r]));
-                    else
-                        more = more || to_end[r] != none;
-                out_lines.clear();
-                for (size_t k = e_off[y]; k < e_off[y + 1]; ++k)
-                    out_lines.emplace_back(a.sums(r_start[by_end[k]], y));
-                limits.assign(out_lines.size(), in_lines.size());
-                choosePredecessors(pts, y);
-                for (size_t j = 0; j < out_lines.size(); ++j)
-                    if (picks[j] < in_lines.size())
-                        to_end[by_end[e_off[y] + j]] = 1 + vmin;
-                    else if (more)
-                        to_end[by_end[e_off[y] + j]] = 2 + vmin;
+                if (y == 0 || e_off[y] != e_off[y + 1])
+                    boundaryCounts(pts, a, n, y);
+                if (y == 0)
+                    break;
             }
+            return v_min[0] == none ? unbounded : v_min[0];
+        }
+
+        //! Lower bound of to_end[r] without its corner test: 1 + v_min at its end (1 at the chain's end); none iff
+        //! to_end[r] is none because no valid rest follows its end.
+        uint32_t lowerEnd(size_t r, size_t n) const
+        {
+            const size_t z = r_end[r];
+            if (z == n)
+                return 1;
+            return v_min[z] == none ? none : 1 + v_min[z];
+        }
+
+        //! v_min[y] = the least to_end of the ranges from y, v_more[y] = some range from y has another count that
+        //! is not none. Evaluates (toEnd) only the ranges whose lower bound does not exceed the least count found
+        //! (a range with lowerEnd > v_min[y] cannot have the least count, nor be a candidate at y, whatever its
+        //! corner test says), in rising lowerEnd, then for v_more only as far as needed.
+        void boundaryCounts(const std::vector<VectorType> &pts, const SumArray &a, size_t n, size_t y)
+        {
+            const size_t r0 = r_off[y], r1 = r_off[y + 1];
+            uint32_t lo = none, hi = 0;
+            for (size_t r = r0; r < r1; ++r)
+            {
+                const uint32_t lb = lowerEnd(r, n);
+                if (lb == none)
+                    to_end[r] = none;   // its end has no valid rest: what the corner test's branch gives too
+                else
+                {
+                    lo = std::min(lo, lb);
+                    hi = std::max(hi, lb);
+                }
+            }
+            uint32_t cur = none;
+            for (uint32_t level = lo; lo != none && level <= hi && level <= cur; ++level)
+                for (size_t r = r0; r < r1; ++r)
+                    if (lowerEnd(r, n) == level)
+                        cur = std::min(cur, toEnd(pts, a, r));
+            v_min[y] = cur;
+            if (cur == none)
+                return;
+            // Every range with lowerEnd <= cur is evaluated. Another count: an evaluated one, or an unevaluated one
+            // (lowerEnd > cur) whose end has another count (then it is not none whatever its corner) or that meets.
+            bool more = false;
+            for (size_t r = r0; r < r1 && !more; ++r)
+                more = to_end[r] != unknown ? to_end[r] != none && to_end[r] != cur : v_more[r_end[r]] != 0;
+            for (size_t r = r0; r < r1 && !more; ++r)
+                more = toEnd(pts, a, r) != none && to_end[r] != cur;
+            v_more[y] = more;
+        }
+
+        //! to_end[r] (memoised): 1 + v_min[z] if one of the candidates at r's end z (the ranges from z with the least
+        //! count, in range order) meets r's line there, else 2 + v_min[z] if v_more[z], else none. Boundaries with at
+        //! most scan_first candidates test them in order (choosePredecessors' first loop: the answer does not depend
+        //! on the other queries); others run choosePredecessors on all ranges ending at z at once, as it always did.
+        uint32_t toEnd(const std::vector<VectorType> &pts, const SumArray &a, size_t r)
+        {
+            if (to_end[r] != unknown)
+                return to_end[r];
+            const size_t z = r_end[r];
+            const uint32_t vmin = v_min[z];
+            if (vmin == none)
+                return to_end[r] = none;
+            if (cand_off[z] == none)
+            {
+                cand_off[z] = cand_lines.size();
+                for (size_t q = r_off[z]; q < r_off[z + 1]; ++q)
+                    if (to_end[q] == vmin)
+                        cand_lines.emplace_back(a.sums(z, r_end[q]));
+                cand_cnt[z] = cand_lines.size() - cand_off[z];
+            }
+            const size_t c0 = cand_off[z], ni = cand_cnt[z];
+            const uint32_t miss = v_more[z] ? 2 + vmin : none;
+            corner_mid = (pts[z - 1].template cast<ComputeType>() + pts[z].template cast<ComputeType>()) * ComputeType(0.5);
+            if (ni <= scan_first + scan_share)
+            {
+                const Approximation line(a.sums(r_start[r], z));
+                for (size_t k = 0; k < ni; ++k)
+                {
+                    ++work_.corners;
+                    if (meetsAt(line, cand_lines[c0 + k]))
+                        return to_end[r] = 1 + vmin;
+                }
+                return to_end[r] = miss;
+            }
+            in_lines.assign(cand_lines.begin() + static_cast<std::ptrdiff_t>(c0), cand_lines.begin() + static_cast<std::ptrdiff_t>(c0 + ni));
+            out_lines.clear();
+            for (size_t k = e_off[z]; k < e_off[z + 1]; ++k)
+                out_lines.emplace_back(a.sums(r_start[by_end[k]], z));
+            limits.assign(out_lines.size(), in_lines.size());
+            reversed_ = true;
+            choosePredecessors(pts, z);
             reversed_ = false;
-            size_t best = unbounded;
-            for (size_t r = r_off[0]; r < r_off[1]; ++r)
-                if (to_end[r] != none)
-                    best = std::min<size_t>(best, to_end[r]);
-            return best;
+            for (size_t j = 0; j < out_lines.size(); ++j)
+                to_end[by_end[e_off[z] + j]] = picks[j] < in_lines.size() ? 1 + vmin : miss;
+            return to_end[r];
         }
 
         //! remaining[y]: a lower bound on the number of fitting ranges that partition [y, N) (corners ignored),
@@ -660,8 +765,12 @@ namespace rtl
         {
             ++work_.corners;
             // The backward pass has the ranges after the corner as candidates (k) and those before it as queries (j).
-            const Approximation &first = reversed_ ? out_lines[j] : in_lines[k];
-            const Approximation &second = reversed_ ? in_lines[k] : out_lines[j];
+            return meetsAt(reversed_ ? out_lines[j] : in_lines[k], reversed_ ? in_lines[k] : out_lines[j]);
+        }
+
+        //! meets() on two given lines (first before the corner), uncounted.
+        bool meetsAt(const Approximation &first, const Approximation &second) const
+        {
             VectorND<2, ComputeType> c;
             if (!Approximation::getCrossingCompute(first, second, c))
                 return std::numeric_limits<ComputeType>::infinity() <= delta2;
