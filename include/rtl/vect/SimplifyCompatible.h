@@ -13,6 +13,7 @@
 // getSqDist, and goes point by point only from the first that passes (radialPass).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -39,6 +40,10 @@
 #define RTL_SIMPLIFY_NOINLINE __attribute__((noinline))
 #else
 #define RTL_SIMPLIFY_NOINLINE
+#endif
+
+#ifndef RTL_SIMPLIFY_FILTER_MIN
+#define RTL_SIMPLIFY_FILTER_MIN 16
 #endif
 
 namespace rtl
@@ -141,8 +146,9 @@ namespace rtl
             std::size_t m = 0, stride = 0;
             double g = 0;
             std::unique_ptr<double[]> c;
-            std::unique_ptr<float[]> f;   // 2D: x then y as floats (stride apart) for the filter, when |coords| <= 1e9
-            mutable std::vector<float> blocks;   // scratch of a const search
+            std::size_t fstride = 0;
+            std::unique_ptr<float[]> f;   // 2D: x then y as floats (fstride apart) for the filter, when |coords| <= 1e9
+            mutable std::vector<float> scratch;   // the filter's values, of a const search
             const double *axis(int k) const { return c.get() + static_cast<std::size_t>(k) * stride; }
         };
 
@@ -265,19 +271,35 @@ namespace rtl
             const std::size_t begin = first + 1;
             if (last - begin <= block)
             {
-                // One block at most (most ranges at the bottom of the recursion): each distance once, then the
-                // library's scan, rather than the scan below and a second pass over the winning block.
+                // One block at most (most ranges at the bottom of the recursion): each distance once, their
+                // maximum from `best` on (so NaN never enters), then the first index holding it if it exceeds
+                // best: the library's scan, without its branch per point (mispredicted on ragged data). An odd
+                // count's last pair reads point `last`, whose lane is set to best.
                 alignas(16) double d2[block];
                 const std::size_t n = last - begin;
-                for (std::size_t q = 0; q < n; q += 2)   // an odd count's last pair reads point `last`: not used
+                Double2 mx = Double2{} + best;
+                std::size_t q = 0;
+                for (; q + 2 <= n; q += 2)
                 {
                     const Double2 v = segmentDistance2Pair<dim>(pts, begin + q, c);
                     std::memcpy(d2 + q, &v, sizeof v);
+                    mx = maxKeep(mx, v);
                 }
-                std::size_t index = 0;
-                for (std::size_t q = 0; q < n; ++q)
-                    if (d2[q] > best) { best = d2[q]; index = begin + q; }
-                return index;
+                if (q < n)
+                {
+                    Double2 v = segmentDistance2Pair<dim>(pts, begin + q, c);
+                    v[1] = best;
+                    std::memcpy(d2 + q, &v, sizeof v);
+                    mx = maxKeep(mx, v);
+                }
+                const double top = mx[0] < mx[1] ? mx[1] : mx[0];
+                if (!(top > best))
+                    return 0;
+                q = 0;
+                while (d2[q] != top)
+                    ++q;
+                best = top;
+                return begin + q;
             }
             // Whole blocks, then one partial block of pairs; an odd point left over is compared last.
             const std::size_t pairs_end = begin + ((last - begin) & ~std::size_t(1));
@@ -357,12 +379,25 @@ namespace rtl
 #endif
         }
 
-        //! The filter of farthestFiltered: the error bound's factors (see there), its limits (G <= 1e9, so that no
-        //! square overflows a float; |d|^2 >= 1e-12, so that underflow costs less than filter_abs in distance; the
-        //! part 4 eps G of the bound at most 1/64 of the tolerance, else the band of candidates is too wide to
-        //! gain), the shortest range filtered.
+        //! Lanes of a Float4 comparison as bits (lane 0 the lowest).
+        typedef int Int4 __attribute__((vector_size(16)));
+        inline unsigned laneBits4(Int4 m)
+        {
+#if defined(__SSE2__)
+            return static_cast<unsigned>(_mm_movemask_ps((__m128)m));
+#elif defined(__wasm_simd128__)
+            return static_cast<unsigned>(wasm_i32x4_bitmask((v128_t)m));
+#else
+            return (m[0] ? 1u : 0u) | (m[1] ? 2u : 0u) | (m[2] ? 4u : 0u) | (m[3] ? 8u : 0u);
+#endif
+        }
+
+        //! The filter of farthestFiltered: the error bound's factors (see there) and its limits (G <= 1e9, so that
+        //! no square overflows a float; |d|^2 >= 1e-12, so that underflow costs less than filter_abs in distance;
+        //! the part 4 eps G of the bound at most 1/64 of the tolerance, else the band of candidates is too wide to
+        //! gain); ranges of fewer interior points than filter_min_points are scanned exactly (farthestPairs).
         constexpr double filter_eps = 0x1p-24, filter_abs = 1e-15, filter_max_g = 1e9, filter_min_dd = 1e-12;
-        constexpr std::size_t filter_min_points = 16;
+        constexpr std::size_t filter_min_points = RTL_SIMPLIFY_FILTER_MIN;
 
         //! farthest() for a 2D range, without a division per point and four points per vector: a filter in
         //! float on the points' float copies (AxisPoints::f), then the library's exact double distances J of
@@ -378,64 +413,126 @@ namespace rtl
         //!  - the library's own J is within ~60 2^-53 G of the exact distance squared's root;
         //! so rho = 4 eps G + 16 eps (top + |d|) + 2^-46 G + filter_abs covers all with a margin. A point can hold
         //! the largest J, or a J > best, only if sqrt(S) >= max(sqrt(max S) - 2 rho |d|, (sqrt(best) - rho) |d|).
-        //! Pass 1 keeps the largest S of each block of 16 points (no branch); pass 2 computes J for the points
-        //! that pass (in the blocks that pass), in order, with the library's `>`: the first maximum
-        //! and its value are simplify-js's, whatever the filter's roundings.
+        //! Pass 1 writes every S (the lanes past the range -inf) to the scratch and keeps their maximum; pass 2
+        //! computes J for the points whose S passes, in order, with the library's `>`: the first maximum and its
+        //! value are simplify-js's, whatever the filter's roundings. One pass and one division per candidate
+        //! (usually one per range), whatever the range's length: most ranges at the bottom of the recursion hold
+        //! a few points, and this costs them less than an exact distance per point.
         inline std::size_t farthestFiltered(const AxisPoints<2> &pts, std::size_t first, std::size_t last,
                                             const Chord<2> &chord, double &best)
         {
-            constexpr std::size_t block = 16;
-            // Whole blocks from first + 1; the points left over are the end of one more block that overlaps the
-            // one before (its points rescanned by pass 2 cannot win there: their values are equal, not greater).
-            const std::size_t begin = first + 1, blocks = (last - begin + block - 1) / block;
-            const float *xf = pts.f.get(), *yf = xf + pts.stride;
-            const float ax = xf[first], ay = yf[first], dx = xf[last] - ax, dy = yf[last] - ay;
+            // Groups of four from first + 1; the last group's lanes past the range read the next points or the
+            // zero padding (AxisPoints::f) and are set to -inf, which neither raises the maximum nor passes.
+            const std::size_t begin = first + 1, n = last - begin, full = n & ~std::size_t(3);
+            const float *xf = pts.f.get() + begin, *yf = xf + pts.fstride;
+            const float ax = xf[-1], ay = yf[-1], dx = xf[n] - ax, dy = yf[n] - ay;
             const Float4 vax = Float4{} + ax, vay = Float4{} + ay, vdx = Float4{} + dx, vdy = Float4{} + dy,
                          vdd = Float4{} + (dx * dx + dy * dy), zero = Float4{};
-            float *bm = pts.blocks.data();
-            const auto start = [&](std::size_t b) { return b + 1 < blocks ? begin + b * block : last - block; };
-            const auto filter = [&](std::size_t i) {   // S of points i .. i + 3
+            float *s = pts.scratch.data();
+            const auto filter = [&](std::size_t q) {   // S of points begin + q .. begin + q + 3
                 Float4 px, py;
-                std::memcpy(&px, xf + i, sizeof px);
-                std::memcpy(&py, yf + i, sizeof py);
+                std::memcpy(&px, xf + q, sizeof px);
+                std::memcpy(&py, yf + q, sizeof py);
                 const Float4 ux = px - vax, uy = py - vay;
                 const Float4 num = ux * vdx + uy * vdy, cross = ux * vdy - uy * vdx;
                 const Float4 w = num - minKeep(maxKeep(zero, num), vdd);
                 return cross * cross + w * w;
             };
-            Float4 mx = zero;
-            for (std::size_t b = 0; b < blocks; ++b)
+            Float4 mx = zero - 1.0f;
+            std::size_t q = 0;
+            for (; q < full; q += 4)
             {
-                const std::size_t s0 = start(b);
-                const Float4 m = maxKeep(maxKeep(filter(s0), filter(s0 + 4)), maxKeep(filter(s0 + 8), filter(s0 + 12)));
-                const Float4 h = maxKeep(m, Float4{m[2], m[3], m[0], m[1]});
-                bm[b] = maxKeep(h, Float4{h[1], h[0], h[3], h[2]})[0];
-                mx = maxKeep(mx, m);
+                const Float4 v = filter(q);
+                std::memcpy(s + q, &v, sizeof v);
+                mx = maxKeep(mx, v);
+            }
+            if (q < n)
+            {
+                const Float4 lane = {0, 1, 2, 3};
+                Float4 v = filter(q);
+                v = lane < Float4{} + static_cast<float>(n - q) ? v : Float4{} - __builtin_inff();
+                std::memcpy(s + q, &v, sizeof v);
+                mx = maxKeep(mx, v);
             }
             const double len = std::sqrt(double(dx) * dx + double(dy) * dy);   // exact square and sum
             const double top = std::sqrt(double(std::fmax(std::fmax(mx[0], mx[1]), std::fmax(mx[2], mx[3]))));
             const double rho = filter_eps * (4 * pts.g + 16 * (top / len * (1 + 0x1p-10) + len)) + 0x1p-46 * pts.g + filter_abs;
             const double low = std::fmax(top - 2 * rho * len, (std::sqrt(best) - rho) * len) * (1 - 0x1p-20);
             // S >= low^2, less a relative margin for the roundings of sqrt, *, - and the conversion to float
-            const float thr = low > 0 ? static_cast<float>(low * low * (1 - 0x1p-20)) : -1.0f;
-            // Pass 2: in a block that passes, S again, and J of the points whose S passes (the others cannot win).
+            const Float4 thr = Float4{} + (low > 0 ? static_cast<float>(low * low * (1 - 0x1p-20)) : -1.0f);
+            // Pass 2: J of the points whose S passes (the others cannot win), in order.
             std::size_t index = 0;
             double p[2];
-            for (std::size_t b = 0; b < blocks; ++b)
-                if (bm[b] >= thr)
-                    for (std::size_t i = start(b), e = i + block; i < e; i += 4)
-                    {
-                        const Float4 v = filter(i);
-                        for (int l = 0; l < 4; ++l)
-                            if (v[l] >= thr)
-                            {
-                                p[0] = pts.axis(0)[i + l];
-                                p[1] = pts.axis(1)[i + l];
-                                const double d2 = segmentDistance2<2>(p, chord);
-                                if (d2 > best) { best = d2; index = i + l; }
-                            }
-                    }
+            const auto passing = [&](std::size_t g) {   // S >= thr in the group at g, as lane bits
+                Float4 v;
+                std::memcpy(&v, s + g, sizeof v);
+                return v >= thr;
+            };
+            for (q = 0; q < n; q += 4)
+            {
+                // Sixteen at a time while whole: most fail (one point in a range is the farthest).
+                if ((q & 15) == 0)
+                    while (q + 16 <= n && !laneBits4((passing(q) | passing(q + 4)) | (passing(q + 8) | passing(q + 12))))
+                        q += 16;
+                if (q >= n)
+                    break;
+                for (unsigned bits = laneBits4(passing(q)); bits; bits &= bits - 1)
+                {
+                    const std::size_t i = begin + q + static_cast<std::size_t>(__builtin_ctz(bits));
+                    p[0] = pts.axis(0)[i];
+                    p[1] = pts.axis(1)[i];
+                    const double d2 = segmentDistance2<2>(p, chord);
+                    if (d2 > best) { best = d2; index = i; }
+                }
+            }
             return index;
+        }
+#endif
+
+#if defined(__GNUC__)
+        //! farthest() for a 2D range of 1 to 16 interior points whose chord differences dx, dy are finite: the
+        //! arithmetic of segmentDistance2Pair (so each lane's value is the scalar one), from values held in
+        //! registers, inlined into the Douglas-Peucker loop. Most ranges are this short (on the random walk of
+        //! the benchmark, 80 % of 7,900 ranges hold at most 12 points); the chord and lane set-up of the general
+        //! path cost them more than their distances. The maximum is taken from `best` on (so NaN never enters),
+        //! then the first index holding it if it exceeds best: the library's scan, without its branch per point
+        //! (mispredicted on ragged data). An odd count's last pair reads point `last`, whose lane is set to best.
+        __attribute__((always_inline)) inline std::size_t farthestShort(const double *x, const double *y, std::size_t first,
+                                                                        std::size_t last, double dx, double dy, double &best)
+        {
+#ifdef __clang__
+#pragma clang fp contract(off)
+#endif
+            constexpr std::size_t most = 16;
+            const std::size_t begin = first + 1, n = last - begin;
+            const double dd = product(dx, dx) + product(dy, dy);
+            const Double2 zero = Double2{}, one = zero + 1.0, ax = zero + x[first], ay = zero + y[first],
+                          bx = zero + x[last], by = zero + y[last], vdx = zero + dx, vdy = zero + dy, vdd = zero + dd;
+            alignas(16) double d2[most];
+            Double2 mx = zero + best;
+            for (std::size_t q = 0; q < n; q += 2)
+            {
+                Double2 px, py;
+                std::memcpy(&px, x + begin + q, sizeof px);
+                std::memcpy(&py, y + begin + q, sizeof py);
+                const Double2 t = (product(px - ax, vdx) + product(py - ay, vdy)) / vdd;
+                const Double2 tc = maxKeep(zero, t);
+                const Double2 qx = t > one ? bx : ax + product(vdx, tc), qy = t > one ? by : ay + product(vdy, tc);
+                const Double2 ex = px - qx, ey = py - qy;
+                Double2 v = product(ex, ex) + product(ey, ey);
+                if (q + 1 == n)
+                    v[1] = best;
+                std::memcpy(d2 + q, &v, sizeof v);
+                mx = maxKeep(mx, v);
+            }
+            const double top = mx[0] < mx[1] ? mx[1] : mx[0];
+            if (!(top > best))
+                return 0;
+            std::size_t q = 0;
+            while (d2[q] != top)
+                ++q;
+            best = top;
+            return begin + q;
         }
 #endif
 
@@ -443,8 +540,17 @@ namespace rtl
         //! largest and exceeds `best` (which it then holds), or 0 if none does: simplify-js's scan, whose `>`
         //! lets a later equal distance lose.
         template<int dim>
-        std::size_t farthest(const AxisPoints<dim> &pts, std::size_t first, std::size_t last, double &best)
+        inline std::size_t farthest(const AxisPoints<dim> &pts, std::size_t first, std::size_t last, double &best)
         {
+#if defined(__GNUC__)
+            if constexpr (dim == 2)
+                if (last - first <= 17)
+                {
+                    const double *x = pts.axis(0), *y = pts.axis(1), dx = x[last] - x[first], dy = y[last] - y[first];
+                    if (dx - dx == 0 && dy - dy == 0)
+                        return farthestShort(x, y, first, last, dx, dy, best);
+                }
+#endif
             double pa[dim], pb[dim];
             bool finite_d = true;
             for (int k = 0; k < dim; ++k)
@@ -460,7 +566,7 @@ namespace rtl
                 if constexpr (dim == 2)
                     if (pts.f && last - first > filter_min_points)
                     {
-                        const float *xf = pts.f.get(), *yf = xf + pts.stride;
+                        const float *xf = pts.f.get(), *yf = xf + pts.fstride;
                         const double dx = xf[last] - xf[first], dy = yf[last] - yf[first];
                         if (dx * dx + dy * dy >= filter_min_dd && 4 * filter_eps * pts.g * 64 <= std::sqrt(best))
                             return farthestFiltered(pts, first, last, chord, best);
@@ -491,19 +597,20 @@ namespace rtl
             std::vector<char> keep(m, 0);
             keep[0] = keep[m - 1] = 1;
             // Each range is independent of the others, so the order they are taken in does not change the result.
-            std::vector<std::pair<std::size_t, std::size_t>> stack;
-            stack.emplace_back(0, m - 1);
-            while (!stack.empty())
+            // At most m - 2 ranges wait at once (each holds a point of its own that is not yet decided).
+            std::unique_ptr<std::pair<std::size_t, std::size_t>[]> stack(new std::pair<std::size_t, std::size_t>[m]);
+            std::size_t top = 0;
+            stack[top++] = {0, m - 1};
+            while (top)
             {
-                const auto [first, last] = stack.back();
-                stack.pop_back();
+                const auto [first, last] = stack[--top];
                 double best = sq_tolerance;
                 const std::size_t index = farthest<dim>(pts, first, last, best);
                 if (best > sq_tolerance)
                 {
                     keep[index] = 1;
-                    if (index - first > 1) stack.emplace_back(first, index);
-                    if (last - index > 1) stack.emplace_back(index, last);
+                    if (index - first > 1) stack[top++] = {first, index};
+                    if (last - index > 1) stack[top++] = {index, last};
                 }
             }
             std::vector<std::size_t> kept;
@@ -693,11 +800,17 @@ namespace rtl
 #if defined(__GNUC__)
             if (dim == 2 && m > filter_min_points && g <= filter_max_g)
             {
-                pts.f.reset(new float[2 * n]);
+                // Each axis padded with zeros to a multiple of four past m: the filter's last group reads them.
+                pts.fstride = (m + 7) & ~std::size_t(3);
+                pts.f.reset(new float[2 * pts.fstride]);
                 for (std::size_t k = 0; k < 2; ++k)
+                {
+                    float *f = pts.f.get() + k * pts.fstride;
                     for (std::size_t i = 0; i < m; ++i)
-                        pts.f[k * n + i] = static_cast<float>(axis[k][i]);
-                pts.blocks.resize(m / 16 + 1);
+                        f[i] = static_cast<float>(axis[k][i]);
+                    std::fill(f + m, f + pts.fstride, 0.0f);
+                }
+                pts.scratch.resize(pts.fstride);
             }
 #endif
             std::vector<std::size_t> kept = m <= 2 ? std::vector<std::size_t>{} : opaque(&simplify<dim>)(pts, sq_tolerance);
