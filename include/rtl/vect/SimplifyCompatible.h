@@ -6,9 +6,10 @@
 // product passes an empty asm barrier that prevents fusing (elsewhere, e.g. wasm, there is no FMA to contract to;
 // MSVC does not contract unless /fp:contract or /fp:fast is given). With GCC and clang (SSE2, NEON, wasm simd128)
 // Douglas-Peucker's scan computes two points per vector instruction, each lane with the scalar operations in the
-// scalar order (so the same doubles), and finds the first maximum without a branch per point; in 2D, ranges of
-// more than 16 points are first filtered in float, four points per vector and without a division, and only the
-// points within a proven rounding bound of the largest value get the exact double distance (farthestFiltered).
+// scalar order (so the same doubles), and finds the first maximum without a branch per point (in 2D, ranges of
+// up to 32 points do so inlined into the loop over ranges: farthestShort); in 2D, longer ranges are first filtered
+// in float, four points per vector and without a division, and only the points within a proven rounding bound of
+// the largest value get the exact double distance (farthestFiltered).
 // The 2D radial pre-pass computes eight points' distances to the last kept point per step, each lane the scalar
 // getSqDist, and goes point by point only from the first that passes (radialPass).
 #pragma once
@@ -40,10 +41,6 @@
 #define RTL_SIMPLIFY_NOINLINE __attribute__((noinline))
 #else
 #define RTL_SIMPLIFY_NOINLINE
-#endif
-
-#ifndef RTL_SIMPLIFY_FILTER_MIN
-#define RTL_SIMPLIFY_FILTER_MIN 16
 #endif
 
 namespace rtl
@@ -138,8 +135,9 @@ namespace rtl
         //! The m points Douglas-Peucker runs on, in double, one array per axis (axis k starts at k * stride), so
         //! that two consecutive points' coordinates load as one vector.
         //! g: the largest |coordinate| of the points (bounds the filter's rounding errors, farthestFiltered);
-        //! blocks: that filter's scratch (one float per block of 16 points). c is not zero-filled: every value
-        //! read is written first (filling 16 MB at 1M points cost ~1.5 ms).
+        //! f: the points as floats for that filter, each axis zero-padded to fstride (a multiple of four beyond m);
+        //! scratch: the filter's values. c is not zero-filled: every value read is written first (filling 16 MB at
+        //! 1M points cost ~1.5 ms).
         template<int dim>
         struct AxisPoints
         {
@@ -147,8 +145,8 @@ namespace rtl
             double g = 0;
             std::unique_ptr<double[]> c;
             std::size_t fstride = 0;
-            std::unique_ptr<float[]> f;   // 2D: x then y as floats (fstride apart) for the filter, when |coords| <= 1e9
-            mutable std::vector<float> scratch;   // the filter's values, of a const search
+            std::unique_ptr<float[]> f;   // 2D, when |coordinates| <= 1e9: x then y, fstride apart
+            mutable std::vector<float> scratch;   // of a const search
             const double *axis(int k) const { return c.get() + static_cast<std::size_t>(k) * stride; }
         };
 
@@ -395,9 +393,10 @@ namespace rtl
         //! The filter of farthestFiltered: the error bound's factors (see there) and its limits (G <= 1e9, so that
         //! no square overflows a float; |d|^2 >= 1e-12, so that underflow costs less than filter_abs in distance;
         //! the part 4 eps G of the bound at most 1/64 of the tolerance, else the band of candidates is too wide to
-        //! gain); ranges of fewer interior points than filter_min_points are scanned exactly (farthestPairs).
+        //! gain). Ranges of at most filter_min_points interior points are scanned exactly (farthestShort), longer
+        //! ones filtered (32: walk 100k fast 0.73 -> 0.72 ms, hq 2.03 -> 1.92 against 16 in wasm; 48, 64 no better).
         constexpr double filter_eps = 0x1p-24, filter_abs = 1e-15, filter_max_g = 1e9, filter_min_dd = 1e-12;
-        constexpr std::size_t filter_min_points = RTL_SIMPLIFY_FILTER_MIN;
+        constexpr std::size_t filter_min_points = 32;
 
         //! farthest() for a 2D range, without a division per point and four points per vector: a filter in
         //! float on the points' float copies (AxisPoints::f), then the library's exact double distances J of
@@ -490,11 +489,11 @@ namespace rtl
 #endif
 
 #if defined(__GNUC__)
-        //! farthest() for a 2D range of 1 to 16 interior points whose chord differences dx, dy are finite: the
-        //! arithmetic of segmentDistance2Pair (so each lane's value is the scalar one), from values held in
-        //! registers, inlined into the Douglas-Peucker loop. Most ranges are this short (on the random walk of
-        //! the benchmark, 80 % of 7,900 ranges hold at most 12 points); the chord and lane set-up of the general
-        //! path cost them more than their distances. The maximum is taken from `best` on (so NaN never enters),
+        //! farthest() for a 2D range of 1 to filter_min_points interior points whose chord differences dx, dy are
+        //! finite: the arithmetic of segmentDistance2Pair (so each lane's value is the scalar one), from values
+        //! held in registers, inlined into the Douglas-Peucker loop. Most ranges are this short (after the radial
+        //! pass on the benchmark's random walk of 100k points, 92 % of 7,900 ranges hold at most 32 points, 20 %
+        //! one); the chord and lane set-up of the general path, or the filter's, cost them more than their distances. The maximum is taken from `best` on (so NaN never enters),
         //! then the first index holding it if it exceeds best: the library's scan, without its branch per point
         //! (mispredicted on ragged data). An odd count's last pair reads point `last`, whose lane is set to best.
         __attribute__((always_inline)) inline std::size_t farthestShort(const double *x, const double *y, std::size_t first,
@@ -503,7 +502,7 @@ namespace rtl
 #ifdef __clang__
 #pragma clang fp contract(off)
 #endif
-            constexpr std::size_t most = 16;
+            constexpr std::size_t most = filter_min_points;
             const std::size_t begin = first + 1, n = last - begin;
             const double dd = product(dx, dx) + product(dy, dy);
             const Double2 zero = Double2{}, one = zero + 1.0, ax = zero + x[first], ay = zero + y[first],
@@ -544,7 +543,7 @@ namespace rtl
         {
 #if defined(__GNUC__)
             if constexpr (dim == 2)
-                if (last - first <= 17)
+                if (last - first <= filter_min_points + 1)
                 {
                     const double *x = pts.axis(0), *y = pts.axis(1), dx = x[last] - x[first], dy = y[last] - y[first];
                     if (dx - dx == 0 && dy - dy == 0)
