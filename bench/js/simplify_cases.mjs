@@ -2,7 +2,8 @@
 // the same polylines, the same interleaved rounds, the same table. No Node or DOM APIs here.
 //
 // Per case, one round times, in this order: the floor (reading every {x, y} object of the array once, which any
-// {x, y} input costs), the copy floor (reading them and writing their numbers into a Float64Array), simplify-js,
+// {x, y} input costs), the copy floor (reading them and writing their numbers into a Float64Array), in fast mode
+// simplify-js's radial pass alone (radialPassOfSimplifyJs), simplify-js,
 // rtl-wasm on the {x, y} array, rtl-wasm on a Float64Array of the same coordinates. The table gives medians over the
 // rounds and the ratios. Before them, untimed rounds of the same calls warm up for at least WARMUP_MS: V8 runs wasm
 // in its baseline compiler (Liftoff) first and compiles a function with TurboFan in the background only once it is
@@ -51,6 +52,25 @@ function readWrite(pts, out) {
   sink += out[0];
 }
 
+// simplify-js's first pass alone (fast mode): a point is kept when its squared distance to the last kept one exceeds
+// the squared tolerance, and the last point is appended. Written here only to time that pass next to the copy floor
+// in the same rounds (how much of simplify-js's time a reader of every point costs anyway); the package never runs
+// it in JavaScript (its core does, rtl/vect/SimplifyCompatible.h).
+function radialPassOfSimplifyJs(pts, sqTolerance) {
+  let prev = pts[0], point;
+  const kept = [prev];
+  for (let i = 1; i < pts.length; i++) {
+    point = pts[i];
+    const dx = point.x - prev.x, dy = point.y - prev.y;
+    if (dx * dx + dy * dy > sqTolerance) {
+      kept.push(point);
+      prev = point;
+    }
+  }
+  if (prev !== point) kept.push(point);
+  return kept;
+}
+
 // Runs every case; `clock()` gives milliseconds (wall or CPU). Returns rows of medians (ms) and prints nothing.
 // warmupMs: the untimed warm-up per case (see the top; 0 measures the start-up: round 0 is then dropped instead).
 export function runSimplifyBench({ rtl, simplifyJs, sizes, rounds, clock, warmupMs = WARMUP_MS }) {
@@ -62,19 +82,21 @@ export function runSimplifyBench({ rtl, simplifyJs, sizes, rounds, clock, warmup
       for (const hq of [false, true]) {
         const theirs = simplifyJs(pts, tol, hq), ours = rtl.simplify(pts, tol, hq);
         if (ours.length !== theirs.length || ours.some((p, i) => p !== theirs[i])) throw new Error(`${name} ${n}: kept points differ`);
-        const t = { floor: [], copy: [], js: [], obj: [], lib: [], f64: [] };
+        const t = { floor: [], copy: [], radial: [], js: [], obj: [], lib: [], f64: [] };
         const copyBuf = new Float64Array(2 * n);
         // Warm-up (see the top): the same calls, untimed, for at least warmupMs and 2 rounds (1 round without).
         for (let r = 0, t0 = Date.now(); r < (warmupMs > 0 ? 2 : 1) || Date.now() - t0 < warmupMs; r++) {
-          readOnce(pts); readWrite(pts, copyBuf); simplifyJs(pts, tol, hq); rtl.simplify(pts, tol, hq); rtl.simplify(xy, tol, hq);
+          readOnce(pts); readWrite(pts, copyBuf); if (!hq) sink += radialPassOfSimplifyJs(pts, tol * tol).length;
+          simplifyJs(pts, tol, hq); rtl.simplify(pts, tol, hq); rtl.simplify(xy, tol, hq);
         }
         for (let r = 0; r < rounds; r++) {
           let a = clock(); readOnce(pts); const floor = clock() - a;
           a = clock(); readWrite(pts, copyBuf); const copy = clock() - a;
+          a = clock(); if (!hq) sink += radialPassOfSimplifyJs(pts, tol * tol).length; const radial = hq ? NaN : clock() - a;
           a = clock(); simplifyJs(pts, tol, hq); const js = clock() - a;
           a = clock(); rtl.simplify(pts, tol, hq); const obj = clock() - a; const lib = rtl.lastComputeMs;
           a = clock(); rtl.simplify(xy, tol, hq); const f64 = clock() - a;
-          t.floor.push(floor); t.copy.push(copy); t.js.push(js); t.obj.push(obj); t.lib.push(lib); t.f64.push(f64);
+          t.floor.push(floor); t.copy.push(copy); t.radial.push(radial); t.js.push(js); t.obj.push(obj); t.lib.push(lib); t.f64.push(f64);
         }
         const m = Object.fromEntries(Object.entries(t).map(([k, v]) => [k, median(v)]));
         rows.push({ case: `${name} ${n.toLocaleString('en')}${hq ? ' hq' : ''}`, kept: ours.length, ...m });
@@ -102,6 +124,8 @@ export function formatRows(rows) {
   // same round), against simplify-js / 3. Where it exceeds that, 3x needs a faster core, not a faster adapter.
   const needs = rows.filter((r) => r.js / r.obj < 3).map((r) =>
     `${r.case}: copy floor + library = ${(r.copy + r.lib).toFixed(2)} ms ${r.copy + r.lib > r.js / 3 ? '>' : '<='} simplify-js / 3 = ${(r.js / 3).toFixed(2)} ms (adapter beyond those: ${(r.obj - r.copy - r.lib).toFixed(2)} ms)`);
-  const copyCol = rows.map((r) => `${r.case.padEnd(26)} copy floor ${r.copy.toFixed(2).padStart(7)} ms, js/copy ${(r.js / r.copy).toFixed(1)}, rtl/copy ${(r.obj / r.copy).toFixed(1)}`);
+  // Fast mode: simplify-js's radial pass alone (timed in the same rounds): the copy costs a large part of it.
+  const copyCol = rows.map((r) => `${r.case.padEnd(26)} copy floor ${r.copy.toFixed(2).padStart(7)} ms, js/copy ${(r.js / r.copy).toFixed(1)}, rtl/copy ${(r.obj / r.copy).toFixed(1)}` +
+    (Number.isNaN(r.radial) ? '' : `; simplify-js's radial pass alone ${r.radial.toFixed(2)} ms (copy/radial ${(r.copy / r.radial).toFixed(2)}, js/radial ${(r.js / r.radial).toFixed(1)})`));
   return [head, ...lines, '', ...copyCol, ...bounded, ...copyBounded, ...needs].join('\n');
 }
