@@ -15,8 +15,8 @@
 //   runs at most once per FTLS call and once per AFTLS call (both branches share it), and at moderate coordinates
 //   its states stay within what PartitionSearch2D guarantees: each round pushes every fitting range at most once
 //   (F of them, counted here in long double), the first round stops past 2 N + 1024 states, then at most two
-//   bounded rounds, the backward pass (F ranges), at most three rounds on its bound (each stopping past
-//   5 N + 1024), the unbounded round and one split round, so at most 17 N + 4096 + 5 F. F itself is up to N x the
+//   bounded rounds, the backward pass (F ranges), at most two rounds on its bound (each stopping past
+//   5 N + 1024), the unbounded round (the first one continued) and one split round, so at most 12 N + 3072 + 5 F. F itself is up to N x the
 //   longest range that fits sigma (the cliff that remains, see PartitionSearch2D.h); inputs are capped at 600
 //   points, so that it stays within the time limit under the sanitizers.
 #include <algorithm>
@@ -140,7 +140,7 @@ namespace
         {
             const double s2 = static_cast<double>(sigma) * static_cast<double>(sigma);
             // The search's sums are in double for float points too.
-            require(states <= 17 * n + 4096 + 5 * fittingRanges(pts, s2, 64e-14 * static_cast<double>(extent * extent)));
+            require(states <= 12 * n + 3072 + 5 * fittingRanges(pts, s2, 64e-14 * static_cast<double>(extent * extent)));
         }
         const auto &idx = v.indices();
         const auto &off = v.polylineOffsets();

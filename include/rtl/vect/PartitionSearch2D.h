@@ -29,7 +29,9 @@
 // remaining[x] <= 1 + remaining[y]), and incoming states are ordered by (cost, range start), a total order, so the
 // pick at each corner is the one the unbounded search makes. A search first runs unbounded up to N + 1024 states
 // (most are that small); beyond, rounds with budgets remaining[0] and remaining[0] + 1, then the unbounded one,
-// which alone proves that no partition exists. This removes most states where the optimum needs about as many
+// which alone proves that no partition exists (the first round continued from where its cap stopped it: its states
+// are kept aside meanwhile, and a round stopped and continued does exactly what an uninterrupted one does; on the
+// corpus's infeasible inputs 213, 47, 233, 90, 74 this saves 2-6 % of the call). This removes most states where the optimum needs about as many
 // ranges as the fits alone (a long chain of few long ranges: 13x fewer states); where corners force extra short
 // "bridge" ranges the bound is loose and the search stays N x L (a corner-aware bound would be needed).
 // Measured on the corpus's slowest bridge inputs (tests/vect/t_fast_corpus.h seeds 115, 299, 40, 257, 297, 84): a
@@ -43,7 +45,7 @@
 // Backward pass (issue 15 item 7): when both bounded rounds fail, every fitting range gets a corner-aware lower bound
 // to_end on the ranges of a valid partition of the rest that starts with it (backward(): from the end; at each corner
 // only the ranges with the least count are tested, the others assumed to meet), and rounds keep a state only if its
-// predecessor's ranges + to_end fit the budget, from the bound for the whole chain up (at most 3 budgets, each given
+// predecessor's ranges + to_end fit the budget, from the bound for the whole chain up (at most 2 budgets, each given
 // up past 4 N + 1024 states), before the unbounded round. Exact as above: to_end never exceeds the true count, and a
 // predecessor that meets has at most one more. On the bridge seeds 35, 115, 299, 40, 257, 297, 84, 117
 // (R - remaining[0] = 3, 7, 9, 8, 4, 6, 9, 5) the bound for the chain is R and that round keeps 0.1-1.9 states per
@@ -163,6 +165,14 @@ namespace rtl
             const bool bounded = !allow_breaks && prune_;
             if (!searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded))
             {
+                // Kept aside: the unbounded round, should it be needed, goes on from where this one stopped.
+                std::swap(states, first_states);
+                std::swap(state_lines, first_lines);
+                std::swap(incoming, first_incoming);
+                first_next = stopped_at;
+                incoming.resize(n + 1);
+                for (auto &v : incoming)
+                    v.clear();
                 ++work_.bounded;
                 lowerBounds(a, n);
                 for (size_t budget = remaining[0]; budget <= remaining[0] + 1 && incoming[n].empty(); ++budget)
@@ -173,12 +183,18 @@ namespace rtl
                     // from every fitting range (backward pass), then rounds on it, each given up past the state cap.
                     const size_t r = backward(pts, a, n);
                     exact_rest = true;
-                    for (size_t budget = r; budget != unbounded && budget < r + 3 && incoming[n].empty(); ++budget)
+                    for (size_t budget = r; budget != unbounded && budget < r + rest_budgets && incoming[n].empty(); ++budget)
                         if (!searchRound(pts, a, n, budget, rest_cap * n + 1024))
                             break;
                     exact_rest = false;
                     if (incoming[n].empty())
-                        searchRound(pts, a, n, unbounded, unbounded);   // proves infeasibility (and finds the corner)
+                    {
+                        // Proves infeasibility (and finds the corner): the first round, continued without a cap.
+                        std::swap(states, first_states);
+                        std::swap(state_lines, first_lines);
+                        std::swap(incoming, first_incoming);
+                        continueRound(pts, a, n, unbounded, unbounded, first_next);
+                    }
                 }
             }
             if (incoming[n].empty())
@@ -300,6 +316,11 @@ namespace rtl
         std::vector<Key> keys;   // the incoming states of a boundary, sorted
         std::vector<std::vector<uint32_t>> incoming;   // states ending at each boundary
         std::vector<Approximation> in_lines, out_lines, state_lines;   // state_lines[s]: the line of state s's range
+        // The first (unbounded, capped) round's states while the bounded rounds run, and where it stopped.
+        std::vector<State> first_states;
+        std::vector<Approximation> first_lines;
+        std::vector<std::vector<uint32_t>> first_incoming;
+        size_t first_next{0}, stopped_at{0};
         struct Out
         {
             size_t y;
@@ -322,6 +343,11 @@ namespace rtl
         static constexpr size_t block = 8;   // range starts per end bound (lowerBounds)
         static constexpr size_t state_cap = 1;   // states per point (+ 1024) of the first, unbounded round
         static constexpr size_t rest_cap = 4;   // states per point (+ 1024) of a round on the backward pass's bound
+        // Rounds on the backward pass's bound: r and r + 1. On the corpus (direct strict searches of all 300 inputs)
+        // the optimum was found at r 154 times, at r + 1 7 times, at r + 2 twice (seeds 169, 288), while a third
+        // round cost every input that gets past it the most: higher budgets evaluate more to_end[] (seed 213, infeasible:
+        // 0.4M, 2.4M, 13.4M instructions for r, r + 1, r + 2, each reaching the same furthest corner).
+        static constexpr size_t rest_budgets = 2;
         bool prune_{true};
         VectorND<2, ComputeType> corner_mid;   // midpoint of the boundary points of the current choosePredecessors call
         bool exact_rest{false};   // the round's budget test uses to_end[] (backward pass) instead of remaining[]
@@ -401,12 +427,23 @@ namespace rtl
             incoming.resize(n + 1);
             for (auto &v : incoming)
                 v.clear();
-            for (size_t x = 0; x + 2 <= n; ++x)
+            return continueRound(pts, a, n, budget, cap, 0);
+        }
+
+        //! searchRound from boundary x0 on, the states of boundaries before it already extended. When it stops
+        //! early, stopped_at is the boundary to go on from (an extension depends only on the states it reads, so
+        //! an unbounded round stopped and continued does exactly what one uninterrupted round does).
+        bool continueRound(const std::vector<VectorType> &pts, const SumArray &a, size_t n, size_t budget, size_t cap, size_t x0)
+        {
+            for (size_t x = x0; x + 2 <= n; ++x)
             {
                 if (x == 0 || !incoming[x].empty())
                     extend(pts, a, x, n, budget);
                 if (states.size() > cap)
+                {
+                    stopped_at = x + 1;
                     return false;
+                }
             }
             return true;
         }
