@@ -33,6 +33,7 @@ import { join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { createInterface } from 'node:readline';
 import { gzipSync } from 'node:zlib';
+import { noisySemicircle } from '../../tests/js/helpers.mjs';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const PKG = resolve(ROOT, process.env.RTL_PACKAGE || 'dist');
@@ -51,18 +52,8 @@ const load = () => `load ${loadavg().map((l) => l.toFixed(2)).join(' ')} on ${cp
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 const fmt = (v, w = 9) => (Number.isFinite(v) ? v.toFixed(3) : '-').padStart(w);
 
-// The paper's noisy semicircle (r 8, uniform noise 0.01) of n points, x and y interleaved.
-function semicircle(n, seed = 1) {
-  let s = seed >>> 0;
-  const rnd = () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 4294967296);
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) {
-    const a = (Math.PI * i) / (n - 1);
-    xy[2 * i] = 8 * Math.cos(a) + 0.01 * (rnd() - 0.5);
-    xy[2 * i + 1] = 8 * Math.sin(a) + 0.01 * (rnd() - 0.5);
-  }
-  return xy;
-}
+// The paper's noisy semicircle (tests/js/helpers.mjs), seed 1.
+const semicircle = (n) => noisySemicircle(n, 1);
 // A closed scan of n beams around the origin: walls at 2-12 m broken every 500 beams, 1% gaps.
 function scan(n) {
   const xy = new Float64Array(2 * n);
