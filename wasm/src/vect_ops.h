@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,6 +16,7 @@
 
 #include "input_check.h"
 #include "kept.h"
+#include "point_reader.h"
 #include "trace_ops.h"
 
 namespace rtl_ops {
@@ -64,27 +64,10 @@ namespace detail {
 template <int D>
 using Vec = rtl::VectorND<D, double>;
 
-// Reads point i of an interleaved coordinate array as a Vec<D>: the iterator that fills the kept point vector.
-template <int D>
-struct PointReader {
-  using iterator_category = std::random_access_iterator_tag;
-  using value_type = Vec<D>;
-  using difference_type = std::ptrdiff_t;
-  using pointer = void;
-  using reference = Vec<D>;
-  const double* at;
-  Vec<D> operator*() const { return Vec<D>(typename Vec<D>::EigenType(Eigen::Map<const typename Vec<D>::EigenType>(at))); }
-  PointReader& operator++() { at += D; return *this; }
-  PointReader& operator+=(difference_type k) { at += D * k; return *this; }
-  difference_type operator-(const PointReader& o) const { return (at - o.at) / D; }
-  bool operator==(const PointReader& o) const { return at == o.at; }
-  bool operator!=(const PointReader& o) const { return at != o.at; }
-};
-
 // The input as the vectorizers' point vector, copied into the kept vector after checking every coordinate against
 // `limit` (`bad`: one is NaN or beyond it; then nothing is copied). Up to the previous call's size the points are
-// assigned in place (~5 instructions a point); a larger call assign()s the whole input, which constructs the points
-// beyond that size straight from it. resize() zero-filled them first (VectorND's default constructor zeroes): FTLS at
+// assigned in place (~5 instructions a point); a larger call assign()s the whole input (point_reader.h), which constructs the
+// points beyond that size straight from it. resize() zero-filled them first (VectorND's default constructor zeroes): FTLS at
 // 100k points right after a 50-point call 1.15-1.25x -> 0.9-1.0x of steady. assign() on every call made the steady
 // calls slower (its in-place copy loop: FTLS 0.154 -> 0.175 ms); insert() at the end for the growth cost 700 B gz.
 template <int D>
