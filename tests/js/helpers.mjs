@@ -27,6 +27,20 @@ export function offsetLinePoints(d = 0.05) {
   return { xy: new Float64Array(xy), normal: n, offset: -1 / s, rms: d, centroid: [0, 1] };
 }
 
+// The paper's noisy semicircle (radius 8, uniform noise of width 0.01 per coordinate) of n points, x and y
+// interleaved; the noise comes from a linear congruential generator started at `seed`, so a seed names a data set.
+export function noisySemicircle(n, seed) {
+  let s = seed >>> 0;
+  const rnd = () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 4294967296);
+  const xy = new Float64Array(2 * n);
+  for (let i = 0; i < n; i++) {
+    const a = (Math.PI * i) / (n - 1);
+    xy[2 * i] = 8 * Math.cos(a) + 0.01 * (rnd() - 0.5);
+    xy[2 * i + 1] = 8 * Math.sin(a) + 0.01 * (rnd() - 0.5);
+  }
+  return xy;
+}
+
 // Assert that f() throws an error of class `type` whose message matches `re`.
 export function throwsWith(f, type, re) {
   assert.throws(f, (e) => {

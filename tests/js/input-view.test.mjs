@@ -4,22 +4,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import init from 'rtl-wasm';
-import { throwsWith } from './helpers.mjs';
+import { noisySemicircle, throwsWith } from './helpers.mjs';
 
 const rtl = await init();
 
 // A noisy semicircle (r 8) of n points, and a scan with NaN gaps and steps between walls.
-function semicircle(n, seed = 7) {
-  let s = seed >>> 0;
-  const rnd = () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 4294967296);
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) {
-    const a = (Math.PI * i) / (n - 1);
-    xy[2 * i] = 8 * Math.cos(a) + 0.01 * (rnd() - 0.5);
-    xy[2 * i + 1] = 8 * Math.sin(a) + 0.01 * (rnd() - 0.5);
-  }
-  return xy;
-}
+const semicircle = (n) => noisySemicircle(n, 7);
 function scan(n) {
   const xy = new Float64Array(2 * n);
   for (let i = 0; i < n; i++) {

@@ -16,6 +16,7 @@
 
 #include "input_check.h"
 #include "kept.h"
+#include "opaque.h"
 #include "trace_ops.h"
 
 namespace rtl_ops {
@@ -107,7 +108,9 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   seg.setUpperBound(p.upperBound);
   if constexpr (Observer::enabled) seg.setObserver(observer);
   seg.setMaxSize(n);
-  seg.loadData(pts, origin);
+  // a function of its own (opaque.h): it holds the segmentation's loops, optimized by V8 within a few calls
+  using Segmenter = rtl::CAR_Segmenter<Point, Observer>;
+  (seg.*opaque(static_cast<void (Segmenter::*)(const std::vector<Point>&, const Point&)>(&Segmenter::loadData)))(pts, origin);
   collectClusters(seg, n, work.ranges, out);
   return out;
 }
@@ -116,9 +119,10 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
 // CAR_Segmenter<P, CarTraceLog> are appended to it.
 template <int D>
 SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p, FlatTrace* trace = nullptr) {
-  if (trace == nullptr) return segmentWith<D, rtl::NoTrace>(xyz, n, p, nullptr);
+  // each a function of its own (opaque.h), not inlined into one large binding
+  if (trace == nullptr) return opaque(&segmentWith<D, rtl::NoTrace>)(xyz, n, p, nullptr);
   rtl::CarTraceLog log;
-  SegmentOutput out = segmentWith<D, rtl::CarTraceLog>(xyz, n, p, &log);
+  SegmentOutput out = opaque(&segmentWith<D, rtl::CarTraceLog>)(xyz, n, p, &log);
   trace->append(log);
   return out;
 }
