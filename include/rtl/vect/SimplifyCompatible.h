@@ -185,6 +185,22 @@ namespace rtl
 #endif
         }
 
+        //! The end of a short range's scan (farthestPairs, farthestShort): d2 holds the range's distances, mx
+        //! their lane maxima taken from `best` on. The first index (from begin) holding the largest if it exceeds
+        //! best (which it then holds), else 0.
+        __attribute__((always_inline)) inline std::size_t firstOfMaximum(const double *d2, Double2 mx, std::size_t begin,
+                                                                         double &best)
+        {
+            const double top = mx[0] < mx[1] ? mx[1] : mx[0];
+            if (!(top > best))
+                return 0;
+            std::size_t q = 0;
+            while (d2[q] != top)
+                ++q;
+            best = top;
+            return begin + q;
+        }
+
         //! Lane masks of Double2 comparisons: whether one is set, and the set lanes as bits (lane 0 the lowest),
         //! one instruction each where the target has one.
         typedef long long Index2 __attribute__((vector_size(16)));
@@ -290,14 +306,7 @@ namespace rtl
                     std::memcpy(d2 + q, &v, sizeof v);
                     mx = maxKeep(mx, v);
                 }
-                const double top = mx[0] < mx[1] ? mx[1] : mx[0];
-                if (!(top > best))
-                    return 0;
-                q = 0;
-                while (d2[q] != top)
-                    ++q;
-                best = top;
-                return begin + q;
+                return firstOfMaximum(d2, mx, begin, best);
             }
             // Whole blocks, then one partial block of pairs; an odd point left over is compared last.
             const std::size_t pairs_end = begin + ((last - begin) & ~std::size_t(1));
@@ -524,14 +533,7 @@ namespace rtl
                 std::memcpy(d2 + q, &v, sizeof v);
                 mx = maxKeep(mx, v);
             }
-            const double top = mx[0] < mx[1] ? mx[1] : mx[0];
-            if (!(top > best))
-                return 0;
-            std::size_t q = 0;
-            while (d2[q] != top)
-                ++q;
-            best = top;
-            return begin + q;
+            return firstOfMaximum(d2, mx, begin, best);
         }
 #endif
 
