@@ -10,16 +10,18 @@
 #include <string>
 #include <vector>
 
+#include <rtl/core/Opaque.h>
 #include <rtl/core/VectorND.h>
 #include <rtl/seg/CAR_Segmenter.h>
 #include <rtl/seg/SegTrace.h>
 
 #include "input_check.h"
 #include "kept.h"
-#include "opaque.h"
 #include "trace_ops.h"
 
 namespace rtl_ops {
+
+using rtl::detail::opaque;
 
 struct SegmentParams {
   std::size_t step = 3;
@@ -108,7 +110,7 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   seg.setUpperBound(p.upperBound);
   if constexpr (Observer::enabled) seg.setObserver(observer);
   seg.setMaxSize(n);
-  // a function of its own (opaque.h): it holds the segmentation's loops, optimized by V8 within a few calls
+  // a function of its own (rtl/core/Opaque.h): it holds the segmentation's loops, optimized by V8 within a few calls
   using Segmenter = rtl::CAR_Segmenter<Point, Observer>;
   (seg.*opaque(static_cast<void (Segmenter::*)(const std::vector<Point>&, const Point&)>(&Segmenter::loadData)))(pts, origin);
   collectClusters(seg, n, work.ranges, out);
@@ -119,7 +121,7 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
 // CAR_Segmenter<P, CarTraceLog> are appended to it.
 template <int D>
 SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p, FlatTrace* trace = nullptr) {
-  // each a function of its own (opaque.h), not inlined into one large binding
+  // each a function of its own (rtl/core/Opaque.h), not inlined into one large binding
   if (trace == nullptr) return opaque(&segmentWith<D, rtl::NoTrace>)(xyz, n, p, nullptr);
   rtl::CarTraceLog log;
   SegmentOutput out = opaque(&segmentWith<D, rtl::CarTraceLog>)(xyz, n, p, &log);

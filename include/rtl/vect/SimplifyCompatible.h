@@ -25,6 +25,8 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Opaque.h"
+
 #if defined(__GNUC__) && defined(__SSE2__)
 #include <emmintrin.h>
 #elif defined(__GNUC__) && defined(__wasm_simd128__)
@@ -47,13 +49,7 @@ namespace rtl
 {
     namespace simplify_detail
     {
-        //! f, through a volatile pointer that no optimizer sees through: the call stays a call (see above).
-        template<typename F>
-        F *opaque(F *f)
-        {
-            F *volatile p = f;
-            return p;
-        }
+        using rtl::detail::opaque;   // the call stays a call (see above)
 
         //! a * b, never fused with a following addition.
         inline double product(double a, double b)
