@@ -178,13 +178,12 @@ void keptRanges(VectorizeOutput& o, const std::vector<Vec<D>>& pts, const std::v
 // allocated for good, so the reservation is capped at n.
 inline std::size_t reservation(const VectorizeParams& p, std::size_t n) { return p.maxSize < n ? p.maxSize : n; }
 
-}  // namespace detail
-
-namespace detail {
+// run(observer), as a function of its own for observed() below.
 template <class Observer, class Run>
 void runWith(Run& run, Observer* observer) {
   run(observer);
 }
+
 }  // namespace detail
 
 // Runs run(observer) with an observer of type Log recording into `trace`, or with no observer (NoTrace: the

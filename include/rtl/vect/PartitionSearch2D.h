@@ -166,9 +166,7 @@ namespace rtl
             if (!searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded))
             {
                 // Kept aside: the unbounded round, should it be needed, goes on from where this one stopped.
-                std::swap(states, first_states);
-                std::swap(state_lines, first_lines);
-                std::swap(incoming, first_incoming);
+                swapFirstRound();
                 first_next = stopped_at;
                 incoming.resize(n + 1);
                 for (auto &v : incoming)
@@ -190,9 +188,7 @@ namespace rtl
                     if (incoming[n].empty())
                     {
                         // Proves infeasibility (and finds the corner): the first round, continued without a cap.
-                        std::swap(states, first_states);
-                        std::swap(state_lines, first_lines);
-                        std::swap(incoming, first_incoming);
+                        swapFirstRound();
                         continueRound(pts, a, n, unbounded, unbounded, first_next);
                     }
                 }
@@ -428,6 +424,14 @@ namespace rtl
             for (auto &v : incoming)
                 v.clear();
             return continueRound(pts, a, n, budget, cap, 0);
+        }
+
+        //! Sets the first round's states aside (first_*) or brings them back: the same swap both ways.
+        void swapFirstRound()
+        {
+            std::swap(states, first_states);
+            std::swap(state_lines, first_lines);
+            std::swap(incoming, first_incoming);
         }
 
         //! searchRound from boundary x0 on, the states of boundaries before it already extended. When it stops
