@@ -193,6 +193,25 @@ test('StreamSegmenter: a stream of arcs closes clusters in order; flush closes t
   s.dispose();  // idempotent
 });
 
+test('StreamSegmenter: one call\'s clusters are disjoint views on one array; 3D coordinates exact; later calls leave them intact', () => {
+  const pts = [1, 0, 0, 1, 0.01, 0, 8, 8, 8, 8, 8, 8.01, 20, 0, 1, 20, 0.01, 1, 20, 0.02, 1];
+  const s = new rtl.StreamSegmenter({ dim: 3, step: 2 });
+  s.addPoints(pts);
+  s.flush();
+  const taken = s.takeClosedClusters();
+  assert.deepEqual(taken.map((c) => Array.from(c)), [pts.slice(0, 6), pts.slice(6, 12), pts.slice(12)]);
+  assert.ok(taken.every((c) => c.buffer === taken[0].buffer), 'one buffer per call');
+  assert.deepEqual(taken.map((c) => c.byteOffset), [0, 48, 96], 'consecutive, not overlapping');
+  s.addPoints([5, 5, 5, 5, 5, 5.01, 5, 5, 5.02]);
+  assert.deepEqual(s.aliveClusters().map((c) => Array.from(c)), [[5, 5, 5]], 'the point that left the 2-point window');
+  s.flush();
+  const next = s.takeClosedClusters();
+  assert.deepEqual(next.map((c) => Array.from(c)), [[5, 5, 5, 5, 5, 5.01, 5, 5, 5.02]]);
+  assert.notEqual(next[0].buffer, taken[0].buffer);
+  assert.deepEqual(Array.from(taken[2]), pts.slice(12), 'an earlier call\'s cluster is unchanged');
+  s.dispose();
+});
+
 // IA's window holds `step` points, CAR's step - 1: IA step s is CAR step s + 1 with the threshold scaling of CAR
 // step s + 1, (s + 1) * 2pi / N.
 test('StreamSegmenter: same clusters as segment() at step + 1 on real scans, scaling (step + 1) * 2pi / N (away from the seam)', () => {

@@ -344,9 +344,13 @@ function wrap(m) {
   // the wrapper, so it does not keep it alive).
   const registry = typeof FinalizationRegistry === 'function' ? new FinalizationRegistry((free) => free()) : null;
 
+  // The clusters of a StreamSegmenter as views on the one array of points the call returned, as segment() does:
+  // a slice() per cluster allocated a backing store each (572 clusters of 100k points: 4-9 ms of a 10 ms call).
   function splitClusters(r, dim) {
-    const out = [];
-    for (let k = 0; k + 1 < r.offsets.length; k++) out.push(r.points.slice(dim * r.offsets[k], dim * r.offsets[k + 1]));
+    const { points, offsets } = r, buf = points.buffer, base = points.byteOffset;
+    const count = Math.max(0, offsets.length - 1), out = new Array(count);
+    for (let k = 0; k < count; k++)
+      out[k] = new Float64Array(buf, base + 8 * dim * offsets[k], dim * (offsets[k + 1] - offsets[k]));
     return out;
   }
 

@@ -473,9 +473,11 @@ export interface StreamSegmenter {
   addPoints(points: PointArray, origin?: ArrayLike<number>): void;
   readonly closedClustersAvailable: number;
   readonly aliveClustersAvailable: number;
-  /** removes and returns the closed clusters, in closing order, each as interleaved points in stream order */
+  /** removes and returns the closed clusters, in closing order, each as interleaved points in stream order; the
+   *  clusters of one call are views on one new Float64Array (take `.slice()` of a cluster to keep it apart) */
   takeClosedClusters(): Float64Array[];
-  /** current alive clusters (points that left the window, cluster not closed yet), not removed */
+  /** current alive clusters (points that left the window, cluster not closed yet), not removed; views on one new
+   *  Float64Array per call, as takeClosedClusters() */
   aliveClusters(): Float64Array[];
   /** end of stream: every window point leaves the window, so every cluster closes */
   flush(): void;
