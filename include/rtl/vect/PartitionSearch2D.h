@@ -725,13 +725,7 @@ namespace rtl
             if (ni <= scan_first + scan_share)
             {
                 const Approximation line(a.sums(r_start[r], z));
-                for (size_t k = 0; k < ni; ++k)
-                {
-                    ++work_.corners;
-                    if (meetsAt(line, cand_lines[c0 + k]))
-                        return to_end[r] = 1 + vmin;
-                }
-                return to_end[r] = miss;
+                return to_end[r] = firstMeeting<true>(cand_lines.data() + c0, 0, ni, line) < ni ? 1 + vmin : miss;
             }
             in_lines.assign(cand_lines.begin() + static_cast<std::ptrdiff_t>(c0), cand_lines.begin() + static_cast<std::ptrdiff_t>(c0 + ni));
             out_lines.clear();
@@ -812,10 +806,35 @@ namespace rtl
         //! meets() on two given lines (first before the corner), uncounted.
         bool meetsAt(const Approximation &first, const Approximation &second) const
         {
+            if (delta2 < std::numeric_limits<ComputeType>::infinity())
+                return Approximation::crossingDistanceSquaredUnchecked(first, second, corner_mid) <= delta2;
             VectorND<2, ComputeType> c;
             if (!Approximation::getCrossingCompute(first, second, c))
                 return std::numeric_limits<ComputeType>::infinity() <= delta2;
             return (c - corner_mid).lengthSquared() <= delta2;
+        }
+
+        //! The first k in [k0, k1) whose line cand[k] meets `fixed` at the current corner (fixed_first: `fixed` is the
+        //! line before the corner), or k1; every test counts in work(). The loop of meets() without its per-pair
+        //! selection and counting, and, for a finite delta, without the crossing's checks (see
+        //! crossingDistanceSquaredUnchecked: the same decisions): this loop is most of the search's corner work.
+        template<bool fixed_first>
+        size_t firstMeeting(const Approximation *cand, size_t k0, size_t k1, const Approximation &fixed)
+        {
+            size_t k = k0;
+            if (delta2 < std::numeric_limits<ComputeType>::infinity())
+            {
+                const VectorND<2, ComputeType> m = corner_mid;
+                const ComputeType bound = delta2;
+                for (; k < k1; ++k)
+                    if (Approximation::crossingDistanceSquaredUnchecked(fixed_first ? fixed : cand[k], fixed_first ? cand[k] : fixed, m) <= bound)
+                        break;
+            }
+            else
+                while (k < k1 && !meetsAt(fixed_first ? fixed : cand[k], fixed_first ? cand[k] : fixed))
+                    ++k;
+            work_.corners += (k < k1 ? k + 1 : k1) - k0;
+            return k;
         }
 
         //! picks[j] = the first incoming line (in cost order) before limits[j] that meets outgoing line j within
@@ -832,9 +851,7 @@ namespace rtl
             for (size_t j = 0; j < no; ++j)
             {
                 const size_t f = std::min(first, limits[j]);
-                size_t k = 0;
-                while (k < f && !meets(k, j))
-                    ++k;
+                const size_t k = reversed_ ? firstMeeting<true>(in_lines.data(), 0, f, out_lines[j]) : firstMeeting<false>(in_lines.data(), 0, f, out_lines[j]);
                 if (k < f)
                     picks[j] = k;
                 else if (f < limits[j])
@@ -845,8 +862,12 @@ namespace rtl
             if (open_.size() * (ni - first) <= scan_share * (ni + open_.size()))   // a bounded share of this boundary's lines
             {
                 for (size_t j : open_)
-                    for (size_t k = first; k < limits[j]; ++k)
-                        if (meets(k, j)) { picks[j] = k; break; }
+                {
+                    const size_t k = reversed_ ? firstMeeting<true>(in_lines.data(), first, limits[j], out_lines[j])
+                                               : firstMeeting<false>(in_lines.data(), first, limits[j], out_lines[j]);
+                    if (k < limits[j])
+                        picks[j] = k;
+                }
                 return;
             }
             typedef VectorND<2, ComputeType> CV;
