@@ -56,6 +56,15 @@
 // and the forward search dies early (seed 213: at corner 301 of 875, 28.7M -> 89.8M instructions): the pass covers the
 // whole chain first. Left: F itself; a bound that certifies the bridges without visiting every fitting range (e.g.
 // from a per-corner summary of the lines ending and starting there), and a cheap infeasibility test before the pass.
+// Corner scans (issue 15 item 7): most corner tests run in firstMeeting, one loop over a boundary's candidate lines
+// with the crossing tested unchecked (ApproximationTlsLine2D::crossingDistanceSquaredUnchecked: parallel or non-finite
+// crossings give +inf or NaN, which a finite delta rejects as the checked +inf) and the work counted once per scan.
+// Callgrind, FTLS on the corpus: max/median 61.9 -> 53.9 (seed 254 54.1k -> 47.1k instructions per point). Measured
+// and not kept: leaving a boundary's ranges of its least count unevaluated until a query misses the known candidates
+// (30 % fewer lines built in the pass on seeds 35/25, but the rounds then evaluate them: +5 % in all); two SSE2 lanes
+// per scan step (-2 to -4 % on the backward-pass seeds, +2 % on 47/233: short scans pay the setup); skipping the
+// r + 1 round on the fits-only bound (seed 25 -17 %, seed 254 3.5x: its optimum is found there, the pass is dear).
+// The rest is mostly building lines (two hypot per line, ~13 %) and fits; F itself is the bound.
 // Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
 // crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
 //
