@@ -111,6 +111,17 @@ namespace rtl
             crossing = c;
             return true;
         }
+        //! Squared distance of the crossing of l1 and l2 from `ref`: getCrossingCompute's arithmetic without its
+        //! checks, for hot loops that compare it with a finite bound. Parallel lines or a non-finite crossing give
+        //! +infinity or NaN here (x / 0 is infinite or NaN, and a unit direction has a non-zero component), which no
+        //! finite bound accepts, just as the checked path's +infinity, so every such comparison decides the same.
+        static ComputeType crossingDistanceSquaredUnchecked(const ApproximationTlsLine2D &l1, const ApproximationTlsLine2D &l2, const ComputeVectorType &ref)
+        {
+            const ComputeType den = l1.dx * l2.dy - l1.dy * l2.dx;
+            const ComputeType t = ((l2.mx - l1.mx) * l2.dy - (l2.my - l1.my) * l2.dx) / den;
+            const ComputeVectorType c(l1.mx + t * l1.dx, l1.my + t * l1.dy);
+            return (c - ref).lengthSquared();
+        }
         static bool getCrossing(const ApproximationTlsLine2D &l1, const ApproximationTlsLine2D &l2, VectorType &crossing)
         {
             ComputeVectorType c;
