@@ -4,6 +4,11 @@
 // infinite tolerance, which scans the whole range against one chord once and splits nothing: its time per point
 // is the cost of the Douglas-Peucker kernel (plus the copy into the working arrays), and case / one pass is the
 // number of such passes the case costs. Rounds are interleaved, medians reported.
+// Then, per fast-mode case, the call's phases (interleaved rounds, medians): the radial pass alone, prepare (the
+// radial pass and the set-up of the working arrays, up to simplifyIndices' hook), Douglas-Peucker alone on the
+// prepared points, and its ranges replayed apart by length (short: at most filter_min_points interior points,
+// scanned exactly; long: filtered), each with its count of ranges and of points scanned: where the time of a call
+// goes, and what bounds it.
 // --smoke: 2000 points, one round.
 #include <algorithm>
 #include <chrono>
@@ -12,7 +17,9 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_util.h"
@@ -53,6 +60,40 @@ namespace
         }
         return xy;
     }
+    using namespace rtl::simplify_detail;
+    using Range = std::pair<size_t, size_t>;
+
+    //! farthest() of every range, in order; returns a checksum (keeps the calls).
+    __attribute__((noinline)) size_t replay(const AxisPoints<2> &pts, const std::vector<Range> &ranges, double sq_tolerance)
+    {
+        size_t sum = 0;
+        for (const auto &[first, last] : ranges)
+        {
+            double best = sq_tolerance;
+            sum += farthest<2>(pts, first, last, best);
+        }
+        return sum;
+    }
+
+    //! The ranges Douglas-Peucker scans on pts (as simplify() does), split by length.
+    void ranges(const AxisPoints<2> &pts, double sq_tolerance, std::vector<Range> &short_ranges, std::vector<Range> &long_ranges)
+    {
+        std::vector<Range> stack{{0, pts.m - 1}};
+        while (!stack.empty())
+        {
+            const auto [first, last] = stack.back();
+            stack.pop_back();
+            (last - first - 1 <= filter_min_points ? short_ranges : long_ranges).push_back({first, last});
+            double best = sq_tolerance;
+            const size_t index = farthest<2>(pts, first, last, best);
+            if (best > sq_tolerance)
+            {
+                if (index - first > 1) stack.push_back({first, index});
+                if (last - index > 1) stack.push_back({index, last});
+            }
+        }
+    }
+
     double median(std::vector<double> v)
     {
         std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
@@ -94,5 +135,61 @@ int main(int argc, char **argv)
                         t / pass);
         }
     }
+    // The phases of fast-mode calls.
+    for (size_t n : sizes)
+        for (int which = 0; which < 2; ++which)
+        {
+            const std::vector<double> xy = which ? walk(n) : semicircle(n);
+            const double tol = which ? 1.0 : 0.01, sq = tol * tol;
+            std::vector<Range> short_ranges, long_ranges;
+            size_t m = 0;
+            std::vector<double> t_radial, t_prepare, t_dp, t_short, t_long, t_call;
+            std::vector<double> axes(2 * n);
+            std::unique_ptr<size_t[]> kept_from(new size_t[n]);
+            double *axis[2] = {axes.data(), axes.data() + n};
+            using Clock = std::chrono::steady_clock;
+            const auto seconds = [](auto &&fn) {
+                const auto start = Clock::now();
+                fn();
+                return std::chrono::duration<double>(Clock::now() - start).count();
+            };
+            for (int r = 0; r <= opt.repetitions; ++r)
+            {
+                bool finite = true;
+                const double radial = seconds([&] {
+                    rtl::bench::doNotOptimize(radialPass<2, double>(xy.data(), n, sq, axis, kept_from.get(), finite));
+                });
+                // The core's own call, paused where its points are ready: the time to there, then Douglas-Peucker
+                // and its ranges timed on those points (the call's own Douglas-Peucker then runs, untimed).
+                double prep = 0, dp = 0, sh = 0, lo = 0;
+                const auto start = Clock::now();
+                const auto phases = [&](const AxisPoints<2> &pts) {
+                    prep = std::chrono::duration<double>(Clock::now() - start).count();
+                    if (short_ranges.empty() && long_ranges.empty())
+                        ranges(pts, sq, short_ranges, long_ranges);
+                    m = pts.m;
+                    dp = seconds([&] { rtl::bench::doNotOptimize(simplify<2>(pts, sq).size()); });
+                    sh = seconds([&] { rtl::bench::doNotOptimize(replay(pts, short_ranges, sq)); });
+                    lo = seconds([&] { rtl::bench::doNotOptimize(replay(pts, long_ranges, sq)); });
+                };
+                rtl::bench::doNotOptimize(simplifyIndices<2>(xy.data(), n, sq, false, phases).size());
+                const double call = seconds([&] { rtl::bench::doNotOptimize(rtl::simplifyCompatibleIndices(xy.data(), n, 2, tol, false).size()); });
+                if (r)
+                {
+                    t_radial.push_back(radial); t_prepare.push_back(prep); t_dp.push_back(dp);
+                    t_short.push_back(sh); t_long.push_back(lo); t_call.push_back(call);
+                }
+            }
+            size_t short_points = 0, long_points = 0;
+            for (const auto &r : short_ranges) short_points += r.second - r.first - 1;
+            for (const auto &r : long_ranges) long_points += r.second - r.first - 1;
+            std::printf("\n%s %zu fast (tol %g): %zu points after the radial pass; ms, medians of %d interleaved rounds\n",
+                        which ? "random walk" : "semicircle", n, tol, m, opt.repetitions);
+            std::printf("  call %.3f = prepare %.3f (radial pass alone %.3f) + Douglas-Peucker %.3f\n", 1e3 * median(t_call),
+                        1e3 * median(t_prepare), 1e3 * median(t_radial), 1e3 * median(t_dp));
+            std::printf("  Douglas-Peucker's ranges replayed: %zu short (%zu points) %.3f ms, %zu long (%zu points) %.3f ms\n",
+                        short_ranges.size(), short_points, 1e3 * median(t_short), long_ranges.size(), long_points,
+                        1e3 * median(t_long));
+        }
     return 0;
 }

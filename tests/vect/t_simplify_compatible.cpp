@@ -613,3 +613,29 @@ TEST(SimplifyCompatible, ShortRangesEveryLengthAndPosition)
         ASSERT_EQ(run<double>(pts, false, 0.0, true), (std::vector<size_t>{0, n - 1})) << n;
     }
 }
+
+// largestMagnitude (the filter's bound g over the radial pass's survivors): two lanes of two vectors per step, then
+// a scalar tail. The largest magnitude, positive or negative, at every position of every count up to 13 (each lane,
+// each step, the tail) among smaller values, NaN passed over, infinity taken, and g only raised.
+TEST(SimplifyCompatible, LargestMagnitudeEveryPosition)
+{
+    using rtl::simplify_detail::largestMagnitude;
+    for (size_t count = 0; count <= 13; ++count)
+        for (size_t at = 0; at < count; ++at)
+            for (double top : {7.5, -7.5, std::numeric_limits<double>::infinity()})
+            {
+                std::vector<double> v(count);
+                for (size_t i = 0; i < count; ++i) v[i] = (i % 2 ? -1.0 : 1.0) * (1 + 0.25 * static_cast<double>(i % 5));
+                v[at] = top;
+                if (count > 1) v[(at + 1) % count] = std::numeric_limits<double>::quiet_NaN();
+                double g = 0;
+                largestMagnitude(v.data(), count, g);
+                EXPECT_EQ(g, std::fabs(top)) << "count " << count << " at " << at;
+                g = 100;
+                largestMagnitude(v.data(), count, g);
+                EXPECT_EQ(g, std::isinf(top) ? top : 100.0) << "count " << count << " at " << at;
+            }
+    double g = 3;
+    largestMagnitude(nullptr, 0, g);
+    EXPECT_EQ(g, 3.0);
+}
