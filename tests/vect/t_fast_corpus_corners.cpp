@@ -19,6 +19,15 @@ namespace
     typedef rtl::PrecArrayBlocked<2, double, double> Arr;
     typedef rtl::VectorND<2, double> V;
 
+    //! Two exactly parallel horizontal runs of 10 points, 1 apart: points 0-9 at y = 0, 10-19 at y = 1.
+    std::vector<rtl::Vector2d> parallelRuns()
+    {
+        std::vector<rtl::Vector2d> pts;
+        for (int i = 0; i < 20; ++i)
+            pts.emplace_back(i, i < 10 ? 0.0 : 1.0);
+        return pts;
+    }
+
     //! Both decisions at `bound`; counts the pairs compared. False (with a message) at the first difference.
     ::testing::AssertionResult sameDecision(const std::vector<rtl::Vector2d> &pts, const Line &l1, const Line &l2, size_t b, double bound)
     {
@@ -60,11 +69,7 @@ TEST(FastCorpusCorners, UncheckedDecidesAsCheckedAtTheThreshold)
 
 TEST(FastCorpusCorners, UncheckedRejectsParallelAndNonFinite)
 {
-    std::vector<rtl::Vector2d> pts;
-    for (int i = 0; i < 10; ++i)
-        pts.emplace_back(i, 0.0);
-    for (int i = 10; i < 20; ++i)
-        pts.emplace_back(i, 1.0);
+    const std::vector<rtl::Vector2d> pts = parallelRuns();
     Arr a;
     a.resize(pts.size());
     a.precompute(pts);
@@ -91,11 +96,7 @@ TEST(FastCorpusCorners, InfiniteDeltaAcceptsParallelCorners)
 {
     // Two exactly parallel horizontal runs: with delta = +infinity every corner meets (the checked path's +infinity
     // <= +infinity), so the strict search takes the two long ranges; the unchecked NaN would reject the corner.
-    std::vector<rtl::Vector2d> pts;
-    for (int i = 0; i < 10; ++i)
-        pts.emplace_back(i, 0.0);
-    for (int i = 10; i < 20; ++i)
-        pts.emplace_back(i, 1.0);
+    const std::vector<rtl::Vector2d> pts = parallelRuns();
     Arr a;
     a.resize(pts.size());
     a.precompute(pts);
