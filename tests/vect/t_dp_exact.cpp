@@ -2,6 +2,7 @@
 // (far points dropped when eps^2 |u|^2 and the squared cross product both overflowed), a brute-force long-double
 // reference at scales from 1e-30 to 1e300, farthest points tied in Element rounding, and segment mode against
 // simplifyCompatibleIndices.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -410,4 +411,42 @@ TEST(DouglasPeuckerExact, CopyPassMaximumAtEveryPositionSetsTheRescaling)
                 ++checked;
             }
     EXPECT_EQ(checked, 120);
+}
+
+// Found by fuzz_vect_simplify (2D double, raw coordinates, 900 s run): on the rescaled path the chord 0-19 is 1.3e-157
+// of the chain's extent (5.1e303) and point 15 is 4.3e292 off its line (8e-12 of the extent); the cross product of the
+// two, squared, underflowed to 0, so points 15, 2 and 3 were dropped though far beyond epsilon. The chord is now
+// brought to unit size by a power of two first; chords below ~1.5e-154 of the extent still count as length 0.
+TEST(DouglasPeuckerExact, ShortChordOnTheRescaledPathKeepsFarPoints)
+{
+    using V = rtl::Vector2d;
+    const std::vector<V> pts{
+        V(2.4178516392292583e+24, 1.6264853608840456e-307), V(1.0387856158083526e-13, 1.038785615237598e-13),
+        V(-4.3861548445450414e+274, 1.0603943549172151e-294), V(2.3673056891731088e+241, 1.162222799345901e+188),
+        V(-2.0309363421616846e-232, 2.9299397118705718e-260), V(-1.2726477352034457e-101, -1296298620.1356709),
+        V(-6.3287055505565218e-34, 1.0976485103467615e-202), V(1.554446474734749e+245, -3.2800263486438781e-183),
+        V(5.108448674964567e+303, 1.559899166308373e-280), V(-3.200969516124477e+106, -6.7544774303272707e-304),
+        V(3.426811135596275e-310, 4.5196812751730681e-309), V(1.3580773871654897e-312, 1.4917595460798414e-154),
+        V(-1.8123234264743482e+287, -1.0395309519563413e-269), V(1.7522456638589314e-307, 3.4900464790195377e-310),
+        V(1.8078725116949103e-307, -8.2710427119047849e+116), V(8.1253199682476293e-260, -4.2507645365659048e+292),
+        V(-2.2302733806792358e+123, 8.9840903803242501e-277), V(-4.9085318708800978e+297, -3.1404951670557488e+128),
+        V(2.4667493631885146e-270, -1.8382596283468203e+294), V(-6.4904247898040017e+146, 1.4115455501684414e-320)};
+    const double eps = 1.7049578831297719e-254;
+    rtl::VectorizerDouglasPeucker2d dp(eps);
+    const std::vector<size_t> kept = keptBy(dp, pts);
+    ASSERT_GE(kept.size(), 2u);
+    // Every dropped point within epsilon of the line through its chord, up to the documented resolution (distances
+    // below ~1e-150 of the extent count as 0), in particular 15 (4.3e292 off chord 0-19 before the fix).
+    for (size_t q = 0; q + 1 < kept.size(); ++q)
+        for (size_t i = kept[q] + 1; i < kept[q + 1]; ++i)
+        {
+            // |cross| / |u| in long double: the projection form loses ~1e87 to cancellation at these magnitudes.
+            const V &a = pts[kept[q]], &b = pts[kept[q + 1]], &p = pts[i];
+            const long double ux = (long double)b.x() - a.x(), uy = (long double)b.y() - a.y();
+            const long double vx = (long double)p.x() - a.x(), vy = (long double)p.y() - a.y();
+            const long double dist = std::fabs(vx * uy - vy * ux) / std::sqrt(ux * ux + uy * uy);
+            EXPECT_LE(dist, eps + 1e-150L * 5.108448674964567e+303L)   // documented: below ~1e-150 of the extent counts as 0
+                << "point " << i << " dropped from chord " << kept[q] << "-" << kept[q + 1];
+        }
+    EXPECT_NE(std::find(kept.begin(), kept.end(), size_t(15)), kept.end());
 }

@@ -358,6 +358,26 @@ namespace rtl
                 u[k] -= pa[k];
                 l2 += u[k] * u[k];
             }
+            // A chord whose squared length is below the normal range (|u| < ~1.5e-154 of the extent) counts as
+            // length 0. A longer one is brought to |u| ~ 1 by a power of two (exact: the same values wherever they
+            // did not underflow), so that the cross product of a short chord with a distance above that threshold
+            // does not underflow to 0 and drop the point (found by fuzz_vect_simplify: a chord of 1e-157 of the
+            // extent, a point 1e-11 of it off the line, squared product 1e-337 -> 0).
+            if (l2 < std::numeric_limits<double>::min())
+                l2 = 0;
+            else
+            {
+                double top = 0;
+                for (int k = 0; k < dimensions; ++k)
+                    top = std::max(top, std::fabs(u[k]));
+                const int shift = -std::ilogb(top);
+                l2 = 0;
+                for (int k = 0; k < dimensions; ++k)
+                {
+                    u[k] = std::ldexp(u[k], shift);
+                    l2 += u[k] * u[k];
+                }
+            }
             const double e = epsilon * scale;
             double best_d = e * e;
             size_t best = 0;
