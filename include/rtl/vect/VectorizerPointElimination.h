@@ -363,9 +363,10 @@ namespace rtl
             // did not underflow), so that the cross product of a short chord with a distance above that threshold
             // does not underflow to 0 and drop the point (found by fuzz_vect_simplify: a chord of 1e-157 of the
             // extent, a point 1e-11 of it off the line, squared product 1e-337 -> 0).
-            if (l2 < std::numeric_limits<double>::min())
+            // (A non-finite end point gives l2 NaN, measured from the first end as before, or +inf, left as it is.)
+            if (!(l2 >= std::numeric_limits<double>::min()))
                 l2 = 0;
-            else
+            else if (l2 <= std::numeric_limits<double>::max())
             {
                 double top = 0;
                 for (int k = 0; k < dimensions; ++k)
