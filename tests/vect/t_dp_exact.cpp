@@ -415,7 +415,7 @@ TEST(DouglasPeuckerExact, CopyPassMaximumAtEveryPositionSetsTheRescaling)
 
 // Found by fuzz_vect_simplify (2D double, raw coordinates, 900 s run): on the rescaled path the chord 0-19 is 1.3e-157
 // of the chain's extent (5.1e303) and point 15 is 4.3e292 off its line (8e-12 of the extent); the cross product of the
-// two, squared, underflowed to 0, so points 15, 2 and 3 were dropped though far beyond epsilon. The chord is now
+// two, squared, underflowed to 0, so points 3, 15 and 18 were dropped though far beyond epsilon. The chord is now
 // brought to unit size by a power of two first; chords below ~1.5e-154 of the extent still count as length 0.
 TEST(DouglasPeuckerExact, ShortChordOnTheRescaledPathKeepsFarPoints)
 {
