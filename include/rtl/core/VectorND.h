@@ -1,9 +1,9 @@
 // VectorND: a fixed-size column vector of `dimensions` elements on top of Eigen, with 2D and 3D specialisations
 // (x()/y()/z() accessors, cross products, base vectors).
 //
-// Default construction zero-initialises the elements (rtl-api §8 item 2): the published implementation left them
-// uninitialised, which made `Vector3d()` unusable as "the zero vector". The compiler drops the zero stores whenever
-// they are overwritten before being read (bench/b_core_default_init.cpp).
+// Default construction zero-initialises the elements (docs/reference.md, "VectorND"): the published implementation
+// left them uninitialised, which made `Vector3d()` unusable as "the zero vector". The compiler drops the zero
+// stores whenever they are overwritten before being read (measured in docs/core.md).
 #pragma once
 
 #include <algorithm>

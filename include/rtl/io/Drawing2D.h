@@ -1,4 +1,4 @@
-// The back-end-neutral 2D drawing model behind LaTeXTikz2D and Svg2D: the drawing calls of rtl-api §4.4 record
+// The back-end-neutral 2D drawing model behind LaTeXTikz2D and Svg2D: the drawing calls of LaTeXTikz2D record
 // primitives, registered styles/colours/marks, grids, axes and data bounds; writeTikz (Tikz2DWriter.h) and writeSvg
 // (Svg2D.h) turn the same model into TikZ or SVG.
 #pragma once

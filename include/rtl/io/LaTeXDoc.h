@@ -1,4 +1,5 @@
-// A LaTeX report of figures and tables, compiled with pdflatex when it is installed (rtl-api §4.6).
+// A LaTeX report of figures and tables, compiled with pdflatex when it is installed
+// (docs/reference.md, "LaTeXDoc").
 #pragma once
 
 #include <cstdlib>

@@ -1,4 +1,5 @@
-// Standalone TikZ export of 2D drawings: plots with marks, primitives, grids and axes (rtl-api §4.4).
+// Standalone TikZ export of 2D drawings: plots with marks, primitives, grids and axes
+// (docs/reference.md, "LaTeXTikz2D").
 #pragma once
 
 #include <algorithm>

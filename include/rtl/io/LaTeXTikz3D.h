@@ -1,4 +1,5 @@
-// Standalone TikZ export of 3D scenes: perspective camera, marks, lines and faces in depth order (rtl-api §4.5).
+// Standalone TikZ export of 3D scenes: perspective camera, marks, lines and faces in depth order
+// (docs/reference.md, "LaTeXTikz3D").
 #pragma once
 
 #include <algorithm>
@@ -854,7 +855,7 @@ namespace rtl
                 double v0 = std::ceil((origin + t0) / a.tick - 1e-9), v1 = std::floor((origin + t1) / a.tick + 1e-9);
                 if (!std::isfinite(v0) || !std::isfinite(v1) || !(v1 - v0 < 1000))
                     continue;
-                // Counted with an integer: `v += 1.0` stands still once |v| >= 2^53 (issue 15.2, in 3D too).
+                // Counted with an integer: `v += 1.0` stands still once |v| >= 2^53 (as in 2D).
                 double last_value = -std::numeric_limits<double>::infinity();
                 size_t count = v1 < v0 ? 0 : static_cast<size_t>(v1 - v0) + 1;
                 for (size_t k = 0; k < count; ++k)

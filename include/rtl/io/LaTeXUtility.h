@@ -1,4 +1,5 @@
-// Helpers shared by the LaTeX exporters: escaping of user text and locale-independent number output (rtl-api §4.2).
+// Helpers shared by the LaTeX exporters: escaping of user text and locale-independent number output
+// (docs/reference.md, "LaTeX text").
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,5 @@
-// The TikZ back-end of Drawing2D: the standalone document or only the tikzpicture (rtl-api §4.4 conventions).
+// The TikZ back-end of Drawing2D: the standalone document or only the tikzpicture, with the
+// conventions of RTL's LaTeXTikz2D (docs/reference.md, "LaTeXTikz2D").
 #pragma once
 
 #include <algorithm>

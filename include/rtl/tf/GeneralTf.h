@@ -1,5 +1,5 @@
 // GeneralTf: one transformation object holding any of several transformation types (a std::variant of Tfs...),
-// dispatching at run time on the held alternative (rtl-api §3.6).
+// dispatching at run time on the held alternative (docs/reference.md, "GeneralTf").
 //
 // Applying it to an object returns the plain result type when every alternative able to transform the object yields
 // the same type, otherwise a VariantResultType of the possible results. An alternative that cannot do the requested

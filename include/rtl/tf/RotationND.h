@@ -2,7 +2,8 @@
 //
 // The rotation matrix is the stored representation (rotMat() hands out a reference to it). The 3D specialisation
 // also caches the equivalent angle-axis; every operation that changes the matrix calls the private hook
-// rotMatUpdated() of the child class, so that cache can never go stale (rtl-api §3.2).
+// rotMatUpdated() of the child class, so that cache can never go stale
+// (docs/reference.md, "RotationND").
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // TfChain: a sequence of transformations applied in list order (front first), e.g. the path between two frames of
-// a TfTree (rtl-api §3.7).
+// a TfTree (docs/reference.md, "TfChain").
 #pragma once
 
 #include <list>

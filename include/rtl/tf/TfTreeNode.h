@@ -1,5 +1,6 @@
 // TfTreeNode: one frame of a TfTree. It stores its key, the transformation from its parent's frame to its own
-// (tf()), a pointer to its parent and the set of its children (rtl-api §3.8).
+// (tf()), a pointer to its parent and the set of its children
+// (docs/reference.md, "TfTreeNode").
 //
 // Linking rules: a root (key constructor) is its own parent; a default-constructed node has no parent. A node built
 // with a parent registers itself in the parent's child set. Destroying a linked node unregisters it from its parent and

@@ -1,5 +1,6 @@
 // VariantResultType: the result of an operation whose type depends on which alternative a GeneralTf holds at run
-// time, plus the type-level machinery that computes those result sets (rtl-api §3.5).
+// time, plus the type-level machinery that computes those result sets
+// (docs/reference.md, "VariantResultType").
 //
 // A result set is written as VariantResultType<R...>: distinct types in first-appearance order. Transformations
 // that cannot be applied contribute nothing (they are detected as void and dropped). A set with a single type is
