@@ -25,8 +25,8 @@
 //
 // Bad input: step 0 is treated as 1; an empty scan gives no cluster; loadData throws std::invalid_argument unless
 // 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 2 (each point compared
-// with the previous one, so that a default segmenter links consecutive points, as before the window fix; RTL does
-// not document its default), bounds [0, +inf).
+// with the previous one, so that a default segmenter links consecutive points; RTL does not document its default),
+// bounds [0, +inf).
 #pragma once
 
 #include <algorithm>
@@ -209,9 +209,9 @@ namespace rtl
 #if defined(__GNUC__)
                 // Double points, two per step on vector lanes (de-interleaved by shuffles): the same operations per
                 // point as the loop below, in the same order (rsq and dsq are (0 + t0) + t1 = t0 + t1), so the same
-                // flags. GCC and clang turn the scalar loop into per-point (x, y) vectors with horizontal sums
-                // instead: loadData of a 100k-point ring scan at step 3 took 0.37 ms (GCC 12 -O3) and 0.45 ms (wasm,
-                // V8), now 0.25 and 0.27 ms. Both flag bytes come from one mask vector (two lane reads, not four).
+                // flags. Written out because GCC and clang turn the scalar loop into per-point (x, y) vectors with
+                // horizontal sums instead, which is slower (docs/seg.md, "CAR neighbour flags on vector lanes").
+                // Both flag bytes come from one mask vector (two lane reads, not four).
                 if constexpr (std::is_same_v<ElementType, double> && sizeof(VectorType) == 2 * sizeof(double))
                 {
                     typedef double V __attribute__((vector_size(16)));
