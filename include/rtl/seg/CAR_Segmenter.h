@@ -18,6 +18,13 @@
 // loadData keeps a copy of the scan (reused by the next call); grabCluster copies each cluster out of it, so that a
 // caller that drops each cluster before grabbing the next reuses one block of memory.
 //
+// Complexity: loadData makes at most N * (step - 1) distance comparisons plus near-linear union-find work; on
+// real scans, made of long runs of neighbouring points, it costs about one distance per point whatever the step
+// (only a run's first step - 1 points can reach back past its start). Memory O(N), reused between calls.
+// grabCluster is O(cluster size). Invariant: the clusters partition the valid points of the last scan, and no two
+// points that meet the criterion within the window lie in different clusters (the published merge was incomplete;
+// docs/reference.md, "Segmentation defects fixed here").
+//
 // Tracing (core/Trace.h): CAR_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
 // of loadData as the events of seg/SegTrace.h (use rtl::CarTraceLog to record them). A traced loadData runs the
 // general window algorithm for every step (same clusters); with the default rtl::NoTrace nothing is reported and
