@@ -1,6 +1,12 @@
 // The back-end-neutral 2D drawing model behind LaTeXTikz2D and Svg2D: the drawing calls of LaTeXTikz2D record
 // primitives, registered styles/colours/marks, grids, axes and data bounds; writeTikz (Tikz2DWriter.h) and writeSvg
 // (Svg2D.h) turn the same model into TikZ or SVG.
+//
+// Why a model: RTL's exporter wrote TikZ while it was being called; recording the calls first lets one drawing be
+// written as TikZ, as SVG, or thinned to fit pdflatex's memory, and lets the writers be tested on the model.
+// Complexity: each drawing call is amortised O(1) (plus its point count); a writer is linear in the primitives,
+// marks and polyline points. Invariant: the data bounds cover every finite coordinate recorded (grids and axes
+// extend them by the overrun); non-finite points are skipped and break polylines.
 #pragma once
 
 #include <algorithm>

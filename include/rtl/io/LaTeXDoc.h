@@ -1,5 +1,8 @@
 // A LaTeX report of figures and tables, compiled with pdflatex when it is installed
 // (docs/reference.md, "LaTeXDoc").
+//
+// Every external step (create directories, compile, move the PDF, remove the temporary directory) is a replaceable
+// callable, and a failing step never throws or stops the program: a report is a by-product, not a result.
 #pragma once
 
 #include <cstdlib>

@@ -1,4 +1,5 @@
 // Systematic (low-variance) resampling: the indices picked by evenly spaced thresholds on the cumulative weights.
+// One pass over the weights, O(n + count).
 #pragma once
 
 #include <cmath>
