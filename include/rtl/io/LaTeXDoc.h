@@ -28,7 +28,7 @@ namespace rtl
     //! Work happens in the temporary directory `<out_dir>_tmp_<out_name>`: every figure is written there as
     //! `<out_name>_<k>.tex` and compiled on its own (the main document includes the PDFs), and the destructor (or
     //! finish()) writes the `article` document, compiles it, moves the PDF to out_dir and removes the temporary
-    //! directory. With setInlineFigures(true) the figures are \input into the main document instead (standalone
+    //! directory. With setInlineFigures(true) the figures are `\input` into the main document instead (standalone
     //! package), so the whole report costs a single pdflatex run.
     //!
     //! External steps never throw or abort: if pdflatex is not on PATH the document says so once on std::cerr and
@@ -74,7 +74,7 @@ namespace rtl
         template<typename T> void setMoveFinalDoc(T func) { move_final_doc = func; }
         template<typename T> void setCompileTex(T func) { compile_tex = func; }
 
-        //! true: figures are \input into the main document and compiled with it (one pdflatex run in total).
+        //! true: figures are `\input` into the main document and compiled with it (one pdflatex run in total).
         void setInlineFigures(bool inline_figures) { inline_mode = inline_figures; }
 
         //! Writes `le` as the next figure (full text width) with an optional caption.

@@ -123,7 +123,7 @@ namespace rtl::LaTeX
     }
 
     //! Returns `str` as ASCII LaTeX that compiles in text mode whatever the user wrote: & % $ # _ { } get a
-    //! backslash; ~ ^ \ become \textasciitilde, \textasciicircum and \textbackslash (each followed by a space so
+    //! backslash; ~ ^ \ become `\textasciitilde`, `\textasciicircum` and `\textbackslash` (each followed by a space so
     //! that a following letter does not extend the command name); < > become $<$ / $>$ (the OT1 text font has no
     //! such glyphs). The text is first made valid UTF-8 without control characters (sanitizeUtf8: invalid bytes
     //! become U+FFFD, tab/newline a space, other controls and DEL are dropped); non-ASCII characters are then
