@@ -4,7 +4,7 @@
 //
 // A failing pair is repaired by the first of these that works; every new range keeps >= 2 points and, when a sigma
 // is set, an RMS residual < sigma (the published version let split ranges exceed sigma and gave up on pairs of
-// fewer than 6 points; docs/reference.md, "Vectorization defects fixed here", items 3 and 4):
+// fewer than 6 points; docs/reference.md, "Vectorization defects fixed here", defects 3 and 4):
 //   1. move the boundary by up to 3 points, if both pieces then pass the pair test;
 //   2. merge the pair into one range (the vertex disappears), if it fits and its new neighbour pairs pass;
 //   3. split the combined range into three equal parts (the published repair), if all three fit and pass;
