@@ -1,5 +1,10 @@
 // Standalone TikZ export of 2D drawings: plots with marks, primitives, grids and axes
 // (docs/reference.md, "LaTeXTikz2D").
+//
+// RTL's interface over Drawing2D (the recorded drawing) and Tikz2DWriter.h (its TikZ text); Svg2D.h writes the
+// same drawing as SVG. Complexity: each call amortised O(1) plus its point count; writeTEX linear in what was
+// drawn. Output is deterministic and independent of the locale; drawings beyond pdflatex's memory are thinned
+// (TikzBudget.h).
 #pragma once
 
 #include <algorithm>
