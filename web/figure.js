@@ -128,7 +128,9 @@ export class Figure {
     const scale = Math.min(W / Math.max(e.maxX - e.minX, 1e-9), H / Math.max(e.maxY - e.minY, 1e-9));
     const cx = (e.minX + e.maxX) / 2, cy = (e.minY + e.maxY) / 2;
     const minX = cx - W / scale / 2, maxX = cx + W / scale / 2, minY = cy - H / scale / 2, maxY = cy + H / scale / 2;
-    this.view = { W, H, dpr, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
+    // text size: CSS decides (--figure-text-scale, e.g. larger in lecture mode); t = pixels per CSS px of text
+    const textScale = Number(getComputedStyle(c).getPropertyValue('--figure-text-scale')) || 1;
+    this.view = { W, H, dpr, t: dpr * textScale, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
   }
 
   render() {
@@ -146,7 +148,7 @@ export class Figure {
 
   // The scene's title on top, as in the exported SVG/TikZ (shortened with an ellipsis when it does not fit).
   drawTitle() {
-    const { ctx } = this, v = this.view, d = v.dpr, t = this.scene.title;
+    const { ctx } = this, v = this.view, d = v.t, t = this.scene.title;
     if (!t) return;
     ctx.font = `${12 * d}px system-ui, sans-serif`;
     let text = t;
@@ -219,7 +221,7 @@ export class Figure {
         break;
       }
       case 'label':
-        ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * d}px system-ui, sans-serif`;
+        ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * v.t}px system-ui, sans-serif`;
         ctx.fillStyle = it.colour ?? INK.segment;
         ctx.fillText(it.text, v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d);
         break;
@@ -237,7 +239,7 @@ export class Figure {
     const x = 12 * d, y = v.H - 12 * d;
     ctx.strokeStyle = '#5a6475'; ctx.fillStyle = '#5a6475'; ctx.lineWidth = 2 * d;
     ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + len * v.scale, y); ctx.stroke();
-    ctx.font = `${11 * d}px system-ui, sans-serif`;
+    ctx.font = `${11 * v.t}px system-ui, sans-serif`;
     ctx.fillText(len >= 1 ? `${len} m` : `${Math.round(len * 1000)} mm`, x, y - 5 * d);
   }
 

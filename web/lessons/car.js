@@ -5,8 +5,10 @@ import { INK, Scene } from '../figure.js';
 import { readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, drawClusters, segFields } from './seg-common.js';
 import { m, note } from './ui.js';
+import { compareQuestions } from './predict-questions.js';
 
-const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
+// decisive: the comparison the note is about (the overview links to it)
+export const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36, decisive: { i: 39, j: 38 },
   why: 'The whole scan is segmented (the threshold depends on the beam count); the view shows a wall that, at step 2, breaks between beams 38 and 39: they are 0.132 m apart and the threshold there is the lower bound, 0.100 m. At step 3 the threshold grows with the step (0.135 m) and each point also looks two points back, so the wall stays one cluster (6 clusters of 3+ points become 4).' };
 
 // Labels after events 0..k: start{i} labels i as i, link{i, cluster} gives i j's label, merge{from, into}
@@ -50,6 +52,7 @@ export default {
       if (best >= 0 && first.has(best)) host.goTo?.(first.get(best));
     };
     return {
+      predict: compareQuestions({ get trace() { return trace; } }),
       recompute() {
         params = readParams(fields, (v) => checkBounds(v));
         if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }

@@ -5,6 +5,14 @@ import { note, numberField } from './ui.js';
 // The excerpt: cluster `cluster` of `scan` of `dataset` segmented with `segment` (the package's segment()), or the
 // beams `beams: [first, last]` of that scan. Adds the lesson's note (which excerpt and why) to host.controls.
 export async function loadExcerpt(host, ex) {
+  const { scan, chain, indices, where } = await excerptChain(host, ex);
+  note(host.controls, `<strong>Excerpt:</strong> ${where}. ${ex.why}`);
+  return { scan, chain, indices, where };
+}
+
+// The excerpt's chain of points without the note: { scan, chain, indices, where } (the overview measures the lessons'
+// own excerpts with it to name the step its links land on).
+export async function excerptChain(host, ex) {
   const scan = await host.data.scan(ex.dataset, ex.scan);
   let chain, indices;
   if (ex.beams) {
@@ -23,7 +31,6 @@ export async function loadExcerpt(host, ex) {
   const seg = ex.segment ? `, segmented with step ${ex.segment.step}, bounds ${ex.segment.lowerBound}–${ex.segment.upperBound} m` : '';
   const where = `${host.data.describe(ex.dataset, ex.scan)}, ` +
     (ex.beams ? `beams ${ex.beams[0]}–${ex.beams[1]}` : `cluster ${ex.cluster + 1}${seg}`) + ` (${chain.length / 2} points, beams ${indices[0]}–${indices[indices.length - 1]})`;
-  note(host.controls, `<strong>Excerpt:</strong> ${where}. ${ex.why}`);
   return { scan, chain, indices, where };
 }
 

@@ -3,8 +3,9 @@
 import { INK, Scene } from '../figure.js';
 import { loadExcerpt, pt, vectorizerRun, explainNoSteps } from './common.js';
 import { m } from './ui.js';
+import { dpQuestions } from './predict-questions.js';
 
-const EXCERPT = {
+export const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
   why: 'A room corner with a door frame: ε = 0.02 m keeps 8 segments, 0.05 m 5, 0.2 m only 2, so ε visibly decides which bends are corners.',
 };
@@ -34,6 +35,7 @@ export default {
       field: { label: 'ε: max distance from the chord', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm' } });
     host.figure.fitPoints(chain);
     return {
+      predict: dpQuestions(run, chain),
       recompute: run.recompute,
       show(k) {
         const { params, untraced, trace, missing } = run;

@@ -5,6 +5,7 @@ import { INK, Scene } from '../figure.js';
 import { nonNegative, readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, segFields } from './seg-common.js';
 import { m, note, numberField } from './ui.js';
+import { compareQuestions } from './predict-questions.js';
 
 const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
   why: 'The CAR lesson\'s scan and wall, fed point by point as the sensor delivers it: no seam, and a cluster closes as soon as none of its points is left in the window.' };
@@ -53,6 +54,7 @@ export default {
       } finally { seg.dispose(); }
     };
     return {
+      predict: compareQuestions({ get trace() { return trace; } }),
       recompute() {
         params = readParams(fields, (v) => { const out = checkBounds(v); if (nonNegative(v.scaling)) out.scaling = nonNegative(v.scaling); return out; });
         if (!params) { trace = []; missing = null; untraced = []; return { steps: 0 }; }
