@@ -19,6 +19,8 @@ export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2
 //                                                         both points (bounded: only between them)
 //   { type: 'marker', x, y, colour?, size?, shape? }       a highlighted point (size in CSS px), shape 'ring' | 'dot' | 'x'
 //   { type: 'label', x, y, text, colour?, bold?, offset? }  offset: [dx, dy] CSS px from the point (default 6, -6)
+// Any item may carry `q: name`, the quantity of the explanation it draws (web/text-link.js): the figure draws the
+// items of its highlighted quantity over a halo.
 // and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
 export class Scene {
   constructor(title = '') { this.title = title; this.items = []; this.inset = null; }
@@ -31,6 +33,18 @@ export class Scene {
   marker(x, y, opts = {}) { return this.add({ type: 'marker', x, y, ...opts }); }
   label(x, y, text, opts = {}) { return this.add({ type: 'label', x, y, text, ...opts }); }
   setInset(chart) { this.inset = chart; return this; }
+}
+
+// The same item, wider and in the halo colour, drawn under it when its quantity is highlighted.
+const HALO = '#FFC400';
+function haloOf(it) {
+  const h = { ...it, colour: HALO, dash: false, width: (it.width ?? 1.5) + 6 };
+  if (it.type === 'points') h.radius = (it.radius ?? 2.5) + 3.5;
+  if (it.type === 'marker') { h.size = (it.size ?? 7) + 3; h.shape = it.shape === 'x' ? 'x' : 'dot'; }
+  if (it.type === 'label') h.bold = true;
+  if (it.type === 'strip') h.colour = '#FFC400';
+  if (it.type === 'circle') h.fill = undefined;
+  return h;
 }
 
 // The two ends, far outside any view, of the line through (x0, y0) and (x1, y1) (for strips and unbounded lines).
@@ -47,6 +61,7 @@ export class Figure {
     this.home = { minX: -1, maxX: 1, minY: -1, maxY: 1 };   // the extent the lesson asked for
     this.zoom = null;                                           // the user's extent after zoom/pan, or null
     this.view = null;                                           // world <-> canvas transform of the last draw
+    this.highlighted = null;                                    // the quantity (item.q) drawn with a halo
     this.wire();
     // redraw after layout, not inside the observer (a canvas resize there would re-enter the layout loop)
     this.resizeObserver = new ResizeObserver(() => requestAnimationFrame(() => this.render()));
@@ -120,6 +135,13 @@ export class Figure {
 
   show(scene) { this.scene = scene; this.render(); }
 
+  // Draws the items of quantity `name` (item.q) over a halo; null: none.
+  highlight(name) {
+    if (name === this.highlighted) return;
+    this.highlighted = name;
+    this.render();
+  }
+
   layout() {
     const c = this.canvas, dpr = window.devicePixelRatio || 1;
     const W = Math.max(1, Math.round(c.clientWidth * dpr)), H = Math.max(1, Math.round(c.clientHeight * dpr));
@@ -141,7 +163,10 @@ export class Figure {
     ctx.fillStyle = '#ffffff';
     ctx.fillRect(0, 0, v.W, v.H);
     this.drawScale();
-    for (const item of this.scene.items) this.drawItem(item);
+    for (const item of this.scene.items) {
+      if (this.highlighted && item.q === this.highlighted) this.drawItem(haloOf(item));
+      this.drawItem(item);
+    }
     if (this.scene.inset) this.drawInset(this.scene.inset);
     this.drawTitle();
   }

@@ -9,6 +9,7 @@ import { Player } from './player.js';
 import { download, exportArguments, figureSvg, figureTikz } from './export.js';
 import { wireLecture } from './lecture.js';
 import { Predict } from './predict.js';
+import { wireTextLink } from './text-link.js';
 import { applyControls, formatHash, parseHash, readControls } from './link-state.js';
 import LESSONS from './lessons/index.js';
 
@@ -191,6 +192,8 @@ async function main() {
   $('dl-tikz').addEventListener('click', () => download(`${name()}.tex`, 'text/x-tex', figureTikz(state.rtl, state.figure)));
   $('reset-view').addEventListener('click', () => state.figure?.resetView());
   $('copy-link').addEventListener('click', copyLink);
+  const textLink = wireTextLink($('lesson-text'), () => state.figure);
+  hook.highlighted = () => textLink.current();
   hook.lecture = wireLecture({ player: state.player, button: $('lecture'), onChange: () => state.figure?.render() });
   // a parameter the lesson redraws without a new trace (a selected point) changes the link too
   $('lesson-controls').addEventListener('input', () => queueMicrotask(writeLink));

@@ -78,8 +78,8 @@ export default {
         let thr = null;
         if (e.i !== undefined) for (let q = k; q >= 0; q--) if (trace[q].kind === 'threshold' && trace[q].i === e.i) { thr = trace[q]; break; }
         if (thr && ['threshold', 'compare', 'link', 'merge', 'start', 'seam'].includes(e.kind)) {
-          s.circle(...P(thr.i), thr.threshold, { colour: INK.candidate, dash: true });
-          s.marker(...P(thr.i), { colour: INK.current });
+          s.circle(...P(thr.i), thr.threshold, { colour: INK.candidate, dash: true, q: 'threshold' });
+          s.marker(...P(thr.i), { colour: INK.current, q: 'current' });
           for (let d = 1; d <= w; d++) { const j = (thr.i - d + n) % n; if (Number.isFinite(points[2 * j])) s.marker(...P(j), { colour: INK.muted, size: 5 }); }
         }
         switch (e.kind) {
@@ -92,8 +92,8 @@ export default {
             html = `<p>Point <b>${e.i}</b> at range ${m(e.range, 2)}: ${e.raw < e.threshold ? `scaling · range = ${m(e.raw)} is below the lower bound, so the threshold is ${m(e.threshold)}` : e.raw > e.threshold ? `scaling · range = ${m(e.raw)} is above the upper bound, so the threshold is ${m(e.threshold)}` : `threshold = scaling · range = ${m(e.threshold)}`}.</p><p class="why">The dashed circle has that radius: an earlier point of the window (grey rings) inside it is close.</p>`;
             break;
           case 'compare': case 'seam':
-            s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5 });
-            html = `<p>${e.kind === 'seam' ? 'Seam pass: point' : 'Point'} <b>${e.i}</b> vs point ${e.j}${e.kind === 'seam' ? ' across the end of the scan' : ` (${e.i - e.j} back)`}: distance ${m(e.distance)} ${e.linked ? '≤' : '>'} threshold ${m(e.threshold)}.</p>` +
+            s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5, q: 'distance' });
+            html = `<p>${e.kind === 'seam' ? 'Seam pass: point' : 'Point'} <b data-q="current">${e.i}</b> vs point ${e.j}${e.kind === 'seam' ? ' across the end of the scan' : ` (${e.i - e.j} back)`}: <span data-q="distance">distance ${m(e.distance)}</span> ${e.linked ? '≤' : '>'} <span data-q="threshold">threshold ${m(e.threshold)}</span>.</p>` +
               `<p class="why">${e.linked ? 'Close: they belong to the same cluster.' : 'Too far: no link from this comparison.'}</p>`;
             break;
           case 'link': html = `<p>Point <b>${e.i}</b> joins the cluster of point ${e.j} (label ${e.cluster}).</p>`; break;

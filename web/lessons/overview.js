@@ -71,12 +71,12 @@ export default {
         if (stage === 'beams') {
           const rays = [];
           for (let i = 0; i < one.beams; i++) if (Number.isFinite(one.points[2 * i])) rays.push(0, 0, one.points[2 * i], one.points[2 * i + 1]);
-          s.segments(rays, { colour: '#b8c7dc', width: 0.6 });
+          s.segments(rays, { colour: '#b8c7dc', width: 0.6, q: 'beams' });
           s.marker(0, 0, { colour: INK.current, shape: 'x', size: 6 });
           html = `<p>The laser turns and measures ${q('beams', one.beams)} ranges, one per beam, from −90° to +90°. ${q('returns', one.returns)} hit something; ${q('gaps', one.gaps)} saw nothing within the sensor's range (gaps).</p>` +
             '<p class="why">Each ray is one range reading, drawn from the sensor (the cross) to what it hit.</p>';
         } else if (stage === 'points') {
-          s.points(one.points, { label: -1, colour: INK.segment, radius: 2.4 });
+          s.points(one.points, { label: -1, colour: INK.segment, radius: 2.4, q: 'returns' });
           s.marker(0, 0, { colour: INK.current, shape: 'x', size: 6 });
           html = `<p>Each return becomes a point (r cos a, r sin a) in the robot's frame: ${q('returns', one.returns)} points, in beam order. ` +
             'Nothing says yet which points belong together.</p>';
@@ -88,20 +88,19 @@ export default {
             (run.car ? `<p class="why">Decided in the CAR lesson at ${link('car', { step: params.step, lowerBound: params.lowerBound, upperBound: params.upperBound }, run.car.at, `step ${run.car.at}`)}: ${run.car.what}.</p>` : '<p class="why">Measuring the CAR lesson…</p>');
         } else if (stage === 'segments') {
           drawClusters(s, one.points, one.labels);
-          for (const l of one.lines) s.segments(l.segments, { colour: INK.segment, width: 2.2 });
+          for (const l of one.lines) s.segments(l.segments, { colour: INK.segment, width: 2.2, q: 'segments' });
           html = `<p><code>vectorize</code> (Douglas–Peucker, ε = ${m(params.epsilon)}) turns each cluster of ${MIN_CLUSTER}+ points into a polyline: ${q('segments', one.segmentCount)} line segments stand for ${q('returns', one.returns)} points.</p>` +
             (run.dp ? `<p class="why">Decided in the Douglas–Peucker lesson at ${link('dp', { epsilon: params.epsilon }, run.dp.at, `step ${run.dp.at}`)}: ${run.dp.what}. Other methods fit lines instead: ${link('ftls', {}, null, 'FTLS')}, ${link('compare', { epsilon: params.epsilon }, null, 'compare them')}.</p>` : '<p class="why">Measuring the Douglas–Peucker lesson…</p>');
         } else {
           const upto = run.map.slice(0, k - STAGES.length + 1), cur = upto.at(-1);
-          const all = run.map.flatMap((r) => r.points);
-          host.figure.fitPoints(all);
+          host.figure.fitPoints(run.map.flatMap((r) => [...r.segments, r.pose.x, r.pose.y]));
           for (const r of run.map) if (!upto.includes(r)) s.points(r.points, { colour: '#e3e6ea', radius: 1.2 });
-          for (const r of upto) s.segments(r.segments, { colour: r === cur ? INK.candidate : INK.segment, width: r === cur ? 2.2 : 1.6 });
-          s.polyline(upto.flatMap((r) => [r.pose.x, r.pose.y]), { colour: INK.current, width: 1.5, dash: true });
+          for (const r of upto) s.segments(r.segments, { colour: r === cur ? INK.candidate : INK.segment, width: r === cur ? 2.2 : 1.6, q: 'mapSegments' });
+          s.polyline(upto.flatMap((r) => [r.pose.x, r.pose.y]), { colour: INK.current, width: 1.5, dash: true, q: 'travelled' });
           for (const r of upto) {
             const a = r.pose.theta, l = 0.45;
             s.segments([r.pose.x, r.pose.y, r.pose.x + l * Math.cos(a), r.pose.y + l * Math.sin(a)], { colour: INK.current, width: 2 });
-            s.marker(r.pose.x, r.pose.y, { colour: INK.current, shape: 'dot', size: 4 });
+            s.marker(r.pose.x, r.pose.y, { colour: INK.current, shape: 'dot', size: 4, q: 'scans' });
           }
           const total = upto.reduce((a, r) => a + r.segmentCount, 0);
           let travelled = 0;
