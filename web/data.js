@@ -29,6 +29,14 @@ export function createData(rtl) {
     return cache.get(name);
   }
 
+  // A data set read elsewhere (the user's own file, web/open-data.js): `scans` as load() gives them. Replaces an
+  // earlier one of the same name.
+  function addDataset(name, { label, unit = 'scan', scans }) {
+    DATASETS[name] = { label, unit, user: true };
+    cache.set(name, Promise.resolve(scans));
+    done.set(name, scans);
+  }
+
   // The scans of a data set already read by load(), or null (not read yet).
   const loaded = (name) => done.get(name) ?? null;
 
@@ -80,5 +88,5 @@ export function createData(rtl) {
 
   const describe = (name, index) => `${DATASETS[name].label}, ${DATASETS[name].unit} ${index}`;
 
-  return { DATASETS, load, loaded, loadCloud, scan, beams, gather, finite, cluster, describe };
+  return { DATASETS, addDataset, load, loaded, loadCloud, scan, beams, gather, finite, cluster, describe };
 }

@@ -10,6 +10,7 @@ import { download, exportArguments, figureSvg, figureTikz } from './export.js';
 import { wireLecture } from './lecture.js';
 import { Predict } from './predict.js';
 import { wireTextLink } from './text-link.js';
+import { wireOpenData } from './open-data.js';
 import { applyControls, formatHash, parseHash, readControls } from './link-state.js';
 import LESSONS from './lessons/index.js';
 
@@ -23,7 +24,7 @@ const hook = (window.__rtl = {
 window.addEventListener('error', (e) => { if (!/^ResizeObserver loop/.test(e.message)) hook.errors.push(String(e.message)); });
 window.addEventListener('unhandledrejection', (e) => hook.errors.push(String(e.reason?.message ?? e.reason)));
 
-const state = { rtl: null, data: null, lesson: null, instance: null, figure: null, player: null, opening: 0, written: null };
+const state = { rtl: null, data: null, lesson: null, instance: null, figure: null, player: null, opening: 0, written: null, source: null };
 
 function setStatus(text, isError = false) {
   const el = $('status');
@@ -65,7 +66,7 @@ function showStep(k) {
 function currentHash() {
   const { lesson, player } = state;
   const steps = entry(lesson.id).steps;
-  return formatHash(lesson.id, readControls($('lesson-controls')), steps > 0 ? player.step + 1 : null);
+  return formatHash(lesson.id, readControls($('lesson-controls')), steps > 0 ? player.step + 1 : null, state.source);
 }
 function writeLink() {
   if (!state.instance || !state.lesson) return;
@@ -118,6 +119,13 @@ function recompute(keepAt) {
 async function open(hash) {
   const link = parseHash(hash);
   const lesson = LESSONS.find((l) => l.id === link.id) ?? LESSONS[0];
+  // a link's data source: a bundled log, or a file opened in this page (a file cannot travel in a link)
+  let sourceNote = '';
+  if (link.src) {
+    const d = state.data.DATASETS[link.src.dataset];
+    if (d && d.unit === 'scan' || state.data.loaded(link.src.dataset)) state.source = link.src;
+    else sourceNote = `This link's data (${link.src.dataset}) is a file opened in another page: open the file here to see it. `;
+  }
   const ticket = ++state.opening;
   state.player.pause();
   if (state.instance) { try { state.instance.dispose(); } catch (e) { reportError(e); } }
@@ -144,7 +152,7 @@ async function open(hash) {
   $('canvas-box').replaceChildren(canvas);
   state.figure = new Figure(canvas);
   const host = {
-    rtl: state.rtl, data: state.data, figure: state.figure,
+    rtl: state.rtl, data: state.data, figure: state.figure, source: state.source,
     controls: $('lesson-controls'), text: $('lesson-text'), stage: $('lesson-stage'),
     onParamsChanged: () => { if (state.instance && state.lesson === lesson) recompute(); },
     goTo: (k) => { state.player.pause(); state.player.go(k); },
@@ -157,7 +165,7 @@ async function open(hash) {
     const refused = applyControls(host.controls, link.params);
     state.instance = instance;
     recompute(link.at ? { exact: link.at - 1 } : 'start');
-    setStatus(refused.length ? `This link's ${refused.join(', ')} do not apply to this lesson; the defaults are shown.` : '');
+    setStatus(sourceNote + (refused.length ? `This link's ${refused.join(', ')} do not apply to this lesson; the defaults are shown.` : ''), Boolean(sourceNote));
   } catch (e) {
     reportError(e);
   }
@@ -192,6 +200,12 @@ async function main() {
   $('dl-tikz').addEventListener('click', () => download(`${name()}.tex`, 'text/x-tex', figureTikz(state.rtl, state.figure)));
   $('reset-view').addEventListener('click', () => state.figure?.resetView());
   $('copy-link').addEventListener('click', copyLink);
+  // the user's own data: the lesson reopens (its defaults) on the chosen scan
+  wireOpenData({
+    data: state.data, input: $('open-file'), progressBar: $('open-progress'), message: $('open-message'), chooser: $('scan-chooser'),
+    onSource: (src) => { state.source = src; $('own-data').open = true; const hash = formatHash(state.lesson.id, [], null, src); state.written = hash; history.pushState(null, '', hash); open(hash); },
+  });
+  hook.source = () => state.source && { ...state.source };
   const textLink = wireTextLink($('lesson-text'), () => state.figure);
   hook.highlighted = () => textLink.current();
   hook.lecture = wireLecture({ player: state.player, button: $('lecture'), onChange: () => state.figure?.render() });

@@ -2,7 +2,7 @@
 // true }); events of rtl/seg/SegTrace.h: scan, gap, threshold, compare, link, merge, start, seam, cluster): the
 // threshold circle around the current point, each comparison in its window, links, retroactive merges, the seam.
 import { INK, Scene } from '../figure.js';
-import { readParams, traced, explainNoSteps } from './common.js';
+import { fromSource, readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, drawClusters, segFields } from './seg-common.js';
 import { m, note } from './ui.js';
 import { compareQuestions } from './predict-questions.js';
@@ -39,11 +39,12 @@ export default {
   title: 'CAR segmentation',
   summary: 'Cut a scan into clusters: each point is compared with up to step − 1 previous points, with a threshold that grows with range.',
   async create(host) {
-    const scan = await host.data.scan(EXCERPT.dataset, EXCERPT.scan);
+    const ex = fromSource(host, EXCERPT);
+    const scan = await host.data.scan(ex.dataset, ex.scan);
     const points = scan.points, n = points.length / 2;
-    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)} (${n} beams). ${EXCERPT.why}`);
+    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(ex.dataset, ex.scan)} (${n} beams). ${ex.why}`);
     const fields = segFields(host, { step: 2, stepLabel: 'step s (compares up to s − 1 previous points)' });
-    host.figure.fitPoints(host.data.beams(points, ...EXCERPT.focusBeams));
+    host.figure.fitPoints(ex.focusBeams ? host.data.beams(points, ...ex.focusBeams) : points);
     let missing = null, trace = [], untraced = null, params = null;
     const first = new Map();   // point -> first event about it (clicking a point jumps there)
     host.figure.onPick = (x, y) => {
@@ -61,11 +62,11 @@ export default {
         ({ trace, missing } = traced(() => host.rtl.segment(points, { ...opts, trace: true }), 'CAR segmentation'));
         first.clear();
         trace.forEach((e, k) => { if (e.i !== undefined && !first.has(e.i)) first.set(e.i, k); });
-        return { steps: trace.length, start: first.get(EXCERPT.startAt) ?? 0 };
+        return { steps: trace.length, start: first.get(ex.startAt) ?? 0 };
       },
       show(k) {
         this.step = k;
-        const s = new Scene(`CAR segmentation, step ${params?.step ?? '–'}, bounds ${params?.lowerBound ?? '–'}–${params?.upperBound ?? '–'} m: ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)}`);
+        const s = new Scene(`CAR segmentation, step ${params?.step ?? '–'}, bounds ${params?.lowerBound ?? '–'}–${params?.upperBound ?? '–'} m: ${host.data.describe(ex.dataset, ex.scan)}`);
         if (k < 0) { if (untraced) drawClusters(s, points, Array.from(untraced.labels)); else s.points(points, { label: -1 }); host.figure.show(s); explainNoSteps(host, missing); return; }
         const e = trace[k], { labels, clusters } = replay(trace, n, k);
         drawClusters(s, points, labels);

@@ -24,13 +24,15 @@ export default {
   title: 'From a scan to a map',
   summary: 'One laser scan becomes points, clusters and walls; a few scans placed by their poses become a map. Press play, or step.',
   async create(host) {
-    const datasets = Object.entries(host.data.DATASETS).filter(([, d]) => d.unit === 'scan');
-    const source = selectField(host.controls, { key: 'dataset', label: 'log', options: datasets.map(([k, d]) => [k, d.label]), value: DEFAULT.dataset, onInput: host.onParamsChanged });
-    const scanField = numberField(host.controls, { key: 'scan', label: 'scan', kind: 'number', value: DEFAULT.scan, min: 0, max: 1000, step: 1, digits: 0, onInput: host.onParamsChanged });
+    // the bundled 2D logs and every file the user opened (a CSV is one 'point set')
+    const datasets = Object.entries(host.data.DATASETS).filter(([, d]) => d.unit === 'scan' || d.user);
+    const source = selectField(host.controls, { key: 'dataset', label: 'log', options: datasets.map(([k, d]) => [k, d.label]), value: host.source?.dataset ?? DEFAULT.dataset, onInput: host.onParamsChanged });
+    const scanField = numberField(host.controls, { key: 'scan', label: 'scan', kind: 'number', value: host.source?.scan ?? DEFAULT.scan, min: 0, max: 1000, step: 1, digits: 0, onInput: host.onParamsChanged });
     const fields = {
       ...segFields(host, { step: 3, stepLabel: 'segment: step s' }),
       epsilon: numberField(host.controls, { key: 'epsilon', label: 'ε: Douglas–Peucker', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm', onInput: host.onParamsChanged }),
     };
+    if (host.source) note(host.controls, `<strong>Your chosen scan:</strong> ${host.data.describe(host.source.dataset, host.source.scan)} (set the log and scan here to look at others).`);
     note(host.controls, 'Every number below comes from the package: <code>readCarmenLog</code>, <code>segment</code>, <code>vectorize</code>, <code>TfTree</code>. The links open each lesson at the step where its stage is decided.');
     let run = null;   // { params, scans, one, map, car, dp, dataset, scan }
     let ticket = 0;
