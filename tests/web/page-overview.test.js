@@ -3,10 +3,10 @@
 // land in the CAR, Douglas–Peucker and transformation-tree lessons at the steps they name.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { DATA, PAGE_TIMEOUT, openDemoPage } from './helpers.js';
+import { DATA, PAGE_TIMEOUT, SCREENSHOTS, openDemoPage } from './helpers.js';
 
 const lessonOf = (page, id) => page.evaluate((h) => window.__rtl.lessons.find((l) => l.id === h), id);
 async function scrubTo(page, k) {
@@ -66,6 +66,15 @@ describe('the overview lesson', { timeout: 240000 }, () => {
     assert.deepEqual(s.numbers.mapScans, [12, 13, 14, 15, 16, 17, 18, 19, 20, 21]);
     assert.equal(s.steps, 4 + 10);
     assert.match(await page.textContent('#lesson-text'), new RegExp(`${scan.points.length / 2} ranges`));
+  });
+
+  test('screenshots of every stage at 1280x800', async () => {
+    mkdirSync(SCREENSHOTS, { recursive: true });
+    for (const k of [0, 1, 2, 3, 13]) {
+      await scrubTo(page, k);
+      await page.waitForTimeout(100);
+      await page.screenshot({ path: join(SCREENSHOTS, `overview-stage${k + 1}-1280x800.png`) });
+    }
   });
 
   test('the clusters stage links into CAR at the comparison that keeps the wall whole', async () => {

@@ -2,8 +2,10 @@
 // with the package's trace numbers (checked here against the same call in Node), and the session keeps the score.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { PAGE_TIMEOUT, openDemoPage, openLesson } from './helpers.js';
+import { PAGE_TIMEOUT, SCREENSHOTS, openDemoPage, openLesson } from './helpers.js';
 
 const predictState = (page) => page.evaluate(() => window.__rtl.predict());
 const stepOf = (page, id) => page.evaluate((h) => window.__rtl.lessons.find((l) => l.id === h).step, id);
@@ -28,6 +30,7 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
   let page, problems, close, rtl;
   before(async () => {
     rtl = await init();
+    mkdirSync(SCREENSHOTS, { recursive: true });
     ({ page, problems, close } = await openDemoPage('/web/#dp'));
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.evaluate(() => sessionStorage.clear());
@@ -53,6 +56,7 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     assert.equal(trace[q].kind, 'range');
     assert.equal(trace[q].split, true);
     assert.equal(await stepOf(page, 'dp'), q - 1, 'stopped before the split');
+    await page.screenshot({ path: join(SCREENSHOTS, 'predict-dp-question-1280x800.png') });
     // forward is held until the answer
     await page.click('#player [data-act="forward"]');
     assert.equal(await stepOf(page, 'dp'), q - 1);
@@ -63,6 +67,7 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     await click(trace[q].farthest);
     await page.waitForFunction((k) => window.__rtl.lessons.find((l) => l.id === 'dp').step === k, q, { timeout: PAGE_TIMEOUT });
     let verdict = await page.textContent('#predict');
+    await page.screenshot({ path: join(SCREENSHOTS, 'predict-dp-right-1280x800.png') });
     assert.match(verdict, /^Right\./);
     assert.ok(verdict.includes(`${trace[q].distance.toFixed(3)} m`), verdict);
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 1 });

@@ -96,7 +96,8 @@ export default {
         } else {
           const upto = run.map.slice(0, k - STAGES.length + 1), cur = upto.at(-1);
           host.figure.fitPoints(run.map.flatMap((r) => [...r.segments, r.pose.x, r.pose.y]));
-          for (const r of run.map) if (!upto.includes(r)) s.points(r.points, { colour: '#e3e6ea', radius: 1.2 });
+          // the map grows: the scans placed so far, their points faint under their segments
+          for (const r of upto) s.points(r.points, { colour: '#c9d3e0', radius: 1.3 });
           for (const r of upto) s.segments(r.segments, { colour: r === cur ? INK.candidate : INK.segment, width: r === cur ? 2.2 : 1.6, q: 'mapSegments' });
           s.polyline(upto.flatMap((r) => [r.pose.x, r.pose.y]), { colour: INK.current, width: 1.5, dash: true, q: 'travelled' });
           for (const r of upto) {
