@@ -3,6 +3,7 @@
 // In:  { bytes: ArrayBuffer, name, segment: { step, lowerBound, upperBound } }
 // Out: { progress: 0..1, phase } …, then { done: true, scans: [{ points, x, y, theta, line, returns, clusters }] }
 //      (points transferred) or { error: message } (readCarmenLog's own message: it names the line).
+// A module worker does not see the page's import map: this is the path the map gives 'rtl-wasm' (web/index.html).
 import init from '/dist/index.js';
 
 let ready = null;

@@ -62,6 +62,7 @@ export class Figure {
     this.zoom = null;                                           // the user's extent after zoom/pan, or null
     this.view = null;                                           // world <-> canvas transform of the last draw
     this.highlighted = null;                                    // the quantity (item.q) drawn with a halo
+    this.overlay = [];                                          // items over the scene (setOverlay)
     this.wire();
     // redraw after layout, not inside the observer (a canvas resize there would re-enter the layout loop)
     this.resizeObserver = new ResizeObserver(() => requestAnimationFrame(() => this.render()));
@@ -133,7 +134,10 @@ export class Figure {
 
   // ---- drawing --------------------------------------------------------------------------------------------------
 
-  show(scene) { this.scene = scene; this.render(); }
+  show(scene) { this.scene = scene; this.overlay = []; this.render(); }
+
+  // Items drawn over the scene until the next show() (a question's candidate points, web/predict.js).
+  setOverlay(items) { this.overlay = items; this.render(); }
 
   // Draws the items of quantity `name` (item.q) over a halo; null: none.
   highlight(name) {
@@ -151,8 +155,10 @@ export class Figure {
     const cx = (e.minX + e.maxX) / 2, cy = (e.minY + e.maxY) / 2;
     const minX = cx - W / scale / 2, maxX = cx + W / scale / 2, minY = cy - H / scale / 2, maxY = cy + H / scale / 2;
     // text size: CSS decides (--figure-text-scale, e.g. larger in lecture mode); t = pixels per CSS px of text
-    const textScale = Number(getComputedStyle(c).getPropertyValue('--figure-text-scale')) || 1;
-    this.view = { W, H, dpr, t: dpr * textScale, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
+    // and marks (points, markers, line widths): --figure-mark-scale; m = pixels per CSS px of a mark
+    const css = getComputedStyle(c);
+    const textScale = Number(css.getPropertyValue('--figure-text-scale')) || 1, markScale = Number(css.getPropertyValue('--figure-mark-scale')) || 1;
+    this.view = { W, H, dpr, t: dpr * textScale, m: dpr * markScale, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
   }
 
   render() {
@@ -167,6 +173,7 @@ export class Figure {
       if (this.highlighted && item.q === this.highlighted) this.drawItem(haloOf(item));
       this.drawItem(item);
     }
+    for (const item of this.overlay) this.drawItem(item);
     if (this.scene.inset) this.drawInset(this.scene.inset);
     this.drawTitle();
   }
@@ -186,7 +193,7 @@ export class Figure {
   }
 
   drawItem(it) {
-    const { ctx } = this, v = this.view, d = v.dpr;
+    const { ctx } = this, v = this.view, d = v.m;
     ctx.setLineDash(it.dash ? [5 * d, 4 * d] : []);
     ctx.lineWidth = (it.width ?? 1.5) * d;
     ctx.strokeStyle = it.colour ?? INK.segment;

@@ -8,7 +8,8 @@
 //   { prompt: HTML,
 //     choices: [{ value, label }]            — answer with a button, or
 //     points: [{ index, x, y }]              — answer by clicking one of these points of the figure,
-//     check(given) → { right: bool, html } } — the verdict and why, from the trace's numbers.
+//     check(given) → { right: bool, html },  — the verdict and why, from the trace's numbers;
+//     marks?: [{ x, y }] }                   — points the question is about, ringed in the figure while it is asked.
 const STORE = 'rtl-predict-score';
 
 export class Predict {
@@ -69,6 +70,9 @@ export class Predict {
     }
     this.verdict = null;
     this.render();
+    // ring the points asked about, once the player has drawn the step before (it draws after this gate returns)
+    const rings = (question.marks ?? question.points ?? []).map((p) => ({ type: 'marker', x: p.x, y: p.y, colour: '#0072B2', size: 6 }));
+    if (rings.length) queueMicrotask(() => { if (this.pending?.question === question) fig.setOverlay(rings); });
   }
 
   answer(given) {

@@ -53,7 +53,7 @@ export default {
       if (best >= 0 && first.has(best)) host.goTo?.(first.get(best));
     };
     return {
-      predict: compareQuestions({ get trace() { return trace; } }),
+      predict: compareQuestions({ get trace() { return trace; } }, points),
       recompute() {
         params = readParams(fields, (v) => checkBounds(v));
         if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }

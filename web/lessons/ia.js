@@ -55,7 +55,7 @@ export default {
       } finally { seg.dispose(); }
     };
     return {
-      predict: compareQuestions({ get trace() { return trace; } }),
+      predict: compareQuestions({ get trace() { return trace; } }, points),
       recompute() {
         params = readParams(fields, (v) => { const out = checkBounds(v); if (nonNegative(v.scaling)) out.scaling = nonNegative(v.scaling); return out; });
         if (!params) { trace = []; missing = null; untraced = []; return { steps: 0 }; }

@@ -75,7 +75,7 @@ export default {
           for (let i = 0; i < one.beams; i++) if (Number.isFinite(one.points[2 * i])) rays.push(0, 0, one.points[2 * i], one.points[2 * i + 1]);
           s.segments(rays, { colour: '#b8c7dc', width: 0.6, q: 'beams' });
           s.marker(0, 0, { colour: INK.current, shape: 'x', size: 6 });
-          html = `<p>The laser turns and measures ${q('beams', one.beams)} ranges, one per beam, from −90° to +90°. ${q('returns', one.returns)} hit something; ${q('gaps', one.gaps)} saw nothing within the sensor's range (gaps).</p>` +
+          html = `<p>The laser turns and measures ${q('beams', one.beams)} ranges, one per beam, from −90° to +90°. ${q('returns', one.returns)} hit something; <b>${one.gaps}</b> saw nothing within the sensor's range (gaps).</p>` +
             '<p class="why">Each ray is one range reading, drawn from the sensor (the cross) to what it hit.</p>';
         } else if (stage === 'points') {
           s.points(one.points, { label: -1, colour: INK.segment, radius: 2.4, q: 'returns' });
@@ -85,7 +85,7 @@ export default {
         } else if (stage === 'clusters') {
           drawClusters(s, one.points, one.labels);
           const big = one.clusters.filter((c) => c.indices.length >= MIN_CLUSTER).length;
-          html = `<p><code>segment</code> (CAR, step ${params.step}, threshold between ${m(params.lowerBound, 2)} and ${m(params.upperBound, 2)}) cuts the scan into ${q('clusters', one.clusters.length)} clusters (${big} of ${MIN_CLUSTER}+ points): ` +
+          html = `<p><code>segment</code> (CAR, step ${params.step}, threshold between ${m(params.lowerBound, 2)} and ${m(params.upperBound, 2)}) cuts the scan into <b>${one.clusters.length}</b> clusters (${big} of ${MIN_CLUSTER}+ points): ` +
             'neighbouring points closer than a range-dependent threshold belong together.</p>' +
             (run.car ? `<p class="why">Decided in the CAR lesson at ${link('car', { step: params.step, lowerBound: params.lowerBound, upperBound: params.upperBound }, run.car.at, `step ${run.car.at}`)}: ${run.car.what}.</p>` : '<p class="why">Measuring the CAR lesson…</p>');
         } else if (stage === 'segments') {

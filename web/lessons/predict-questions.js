@@ -15,7 +15,7 @@ export function dpQuestions(run, chain) {
       if (!e || e.kind !== 'range' || !e.split) return null;
       const interior = Array.from({ length: e.last - e.first - 1 }, (_, j) => e.first + 1 + j);
       return {
-        prompt: `Douglas–Peucker examines points ${e.first}–${e.last} next, and this range splits (ε = ${f3(e.epsilon)}). Which point does it keep as the new corner?`,
+        prompt: `Douglas–Peucker examines points ${e.first}–${e.last} next (ringed), and this range splits (ε = ${f3(e.epsilon)}). Which point does it keep as the new corner?`,
         points: pointsOf(chain, interior),
         check(given) {
           const p = Number(given);
@@ -52,14 +52,15 @@ export function rwQuestions(run, chain) {
 
 // CAR and IA: "do these two points link?" at the close calls, the comparisons whose distance is within a factor 2
 // of the threshold (clear cases would only slow the player down).
-export function compareQuestions(run) {
+export function compareQuestions(run, points) {
   return {
     ask(k) {
       const e = run.trace[k];
       if (!e || (e.kind !== 'compare' && e.kind !== 'seam')) return null;
       if (!(e.distance >= e.threshold / 2 && e.distance <= 2 * e.threshold)) return null;
       return {
-        prompt: `Point ${e.i} is compared with point ${e.j}. Do they link (the same cluster)? Point ${e.i}'s threshold is ${f3(e.threshold)}.`,
+        prompt: `Point ${e.i} is compared with point ${e.j} (ringed). Do they link (the same cluster)? Point ${e.i}'s threshold is ${f3(e.threshold)}.`,
+        marks: pointsOf(points, [e.i, e.j]),
         choices: YES_NO,
         check(given) {
           const right = (given === 'yes') === e.linked;
@@ -72,13 +73,14 @@ export function compareQuestions(run) {
 }
 
 // FTLS / AFTLS: before each corner check, "does this corner meet within δ?"
-export function cornerQuestions(run) {
+export function cornerQuestions(run, chain) {
   return {
     ask(k) {
       const e = run.trace[k];
       if (!e || e.kind !== 'corner') return null;
       return {
-        prompt: `The lines of the ranges on each side of the corner between points ${e.boundary - 1} and ${e.boundary} are fitted. Do they meet within δ = ${f3(e.delta)} of that corner?`,
+        prompt: `The lines of the ranges on each side of the corner between points ${e.boundary - 1} and ${e.boundary} (ringed) are fitted. Do they meet within δ = ${f3(e.delta)} of that corner?`,
+        marks: pointsOf(chain, [e.boundary - 1, e.boundary]),
         choices: YES_NO,
         check(given) {
           const right = (given === 'yes') === e.ok;

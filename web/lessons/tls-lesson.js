@@ -101,7 +101,7 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
       };
       host.text.addEventListener('click', onFix);
       return {
-        predict: cornerQuestions({ get trace() { return trace; } }),
+        predict: cornerQuestions({ get trace() { return trace; } }, chain),
         recompute() {
           params = readParams(fields, ({ sigma, delta }) => {
             const out = {};
