@@ -45,6 +45,7 @@ export async function runLogs(rtl, opts) {
           });
           if (r.interrupted) say(`interrupted: ${file}: ${r.topic}: wrote ${r.scans} scans; the next is message ${r.next}`);
         } catch (e) {
+          if (e.code === 'EPIPE') break;
           if (!(e instanceof LogStop) && e.name !== 'LogError' && e.code !== 'ENOENT') throw e;
           failures++;
           say(e.code === 'ENOENT' ? `cannot read "${file}": no such file` : e.message.replace(/^openLog: /, ''));

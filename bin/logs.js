@@ -68,16 +68,23 @@ export async function processLog(file, opts, { openLog, process: step, emit, sto
     topic = chooseTopic(log, opts.topic);
     const total = log.topics.find((t) => t.name === topic)?.count ?? null;
     const range = { ...(opts.start !== undefined ? { start: opts.start } : {}), ...(opts.end !== undefined ? { end: opts.end } : {}) };
+    let scans;
     try {
-      for await (const scan of log.scans(topic, range)) {
+      scans = log.scans(topic, range);
+    } catch (e) {
+      throw new LogStop(e.message.replace(/^scans: /, ''));
+    }
+    try {
+      for await (const scan of scans) {
         emit(step(scan, log.file), scan);
         done++;
         progress?.(file, done, total);
         if (stopped()) return { file, topic, scans: done, interrupted: true, next: scan.index + 1 };
       }
     } catch (e) {
-      const where = e.index !== undefined ? `message ${e.index}` : `after ${done} scans`;
-      throw new LogStop(`${e.message.replace(/^scans: /, '')}\nrtl: ${file}: stopped at ${where} of ${topic}; the output holds the ${done} scans before it`);
+      if (e.code === 'EPIPE') throw e;   // the reader of our output has gone (e.g. `| head`): nothing to report
+      const where = e.index !== undefined ? `at message ${e.index}` : `at scan ${done}`;
+      throw new LogStop(`${e.message.replace(/^scans: /, '')}\nrtl: ${file}: stopped ${where} of ${topic}; the output holds the ${done} scans before it`);
     }
     return { file, topic, scans: done };
   } finally {

@@ -9,6 +9,7 @@ import { parseCommandLine, UsageError } from './options.js';
 import { InputError, MissingFeature, asUsageError, loadPoints, render, run } from './pipeline.js';
 
 const HELP = `Usage: rtl [options] <file>      (use - to read standard input)
+       rtl [options] <log.mcap|log.bag>...   (robot logs: every scan of a topic)
 
 Cuts ordered 2D/3D points into clusters with the batch segmenter, then fits
 total-least-squares lines to the clusters and/or turns each cluster into line
@@ -27,6 +28,19 @@ Input
       --column C         take column C of the binary scan instead of a ring
   CSV: one point per line, x,y or x,y,z (comma, semicolon or blanks); '#' comments;
        an optional header line; empty, NaN or non-finite coordinates mark gaps.
+
+Robot logs (.mcap: ROS 2 / MCAP, chunks none, lz4 or zstd; .bag: ROS 1), read with the
+optional packages @mcap/core, @mcap/support, @foxglove/rosmsg, @foxglove/rosmsg2-serialization,
+@foxglove/rosmsg-serialization, @foxglove/rosbag. Every scan of the topic runs through the
+pipeline below; JSON output is JSON Lines (one scan a line, in log order); --format svg|tikz
+writes one file per scan (--output with %d = scan index, %f = log name). Ctrl-C or a corrupt
+message stops after complete output for the scans done and says where (exit 130 / 1).
+      --topic T          sensor_msgs/LaserScan or PointCloud2 topic (default: the log's
+                         only LaserScan topic); clouds take --ring K (default 0) or --column C
+      --start S, --end S log time window in seconds (inclusive)
+  -j, --jobs N           logs processed at once, in worker threads (default: the cores)
+      --progress         progress bar on stderr (default: when stderr is a terminal)
+      --no-progress      never draw it
 
 Segmentation (always first, unless --no-segment)
   -s, --segment          segment (the default; accepted for clarity)
@@ -87,6 +101,8 @@ Examples
   rtl tests/data/intel.log --scan 3 -m ftls --sigma 0.02 -f svg -o scan3.svg
   rtl tests/data/rellis3d-os1-4x2048.bin --beams 4 --ring 1 --upper 0.8
   rtl points.csv --no-segment -m dp --epsilon 0.05
+  rtl robot.mcap --topic /scan -m ftls -o scans.jsonl
+  rtl logs/*.bag --topic /base_scan --jobs 2 -m dp -f svg -o out/%f-%d.svg
   rtl points.csv --no-segment --fit
   rtl tests/data/rellis3d-os1-4x2048.bin --beams 4 --ring 1 -m itls -f tikz --dim 3 --camera 50,1,-1,-1
 `;
