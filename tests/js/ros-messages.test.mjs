@@ -29,6 +29,12 @@ test('fromLaserScan: ROS 2 scan -> points per beam, NaN for NaN, +-inf and range
   assert.equal(s.intensities, undefined);
 });
 
+test('fromLaserScan: infinite ranges are gaps even when the bounds are infinite (found by the fuzz test)', () => {
+  const s = fromLaserScan(ros2Scan({ range_min: -Infinity, range_max: Infinity, ranges: [-Infinity, Infinity, 3] }));
+  assert.ok([0, 1, 2, 3].every((k) => Number.isNaN(s.points[k])));
+  near(s.points[4], 3 * Math.cos(-0.5), 1e-15, 'finite range kept');
+});
+
 test('fromLaserScan: the range bounds are inclusive; plain arrays and intensities are accepted', () => {
   const s = fromLaserScan(ros2Scan({ ranges: [0.1, 30, 0.0999], intensities: [5, 6, 7] }));
   near(s.points[0], 0.1 * Math.cos(-1), 1e-15, 'range_min kept');

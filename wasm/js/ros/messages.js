@@ -115,7 +115,7 @@ export function fromLaserScan(msg) {
     const a = first + i * step;
     const r = ranges[i];
     angles[i] = a;
-    if (r >= rangeMin && r <= rangeMax && r !== Infinity) {   // false for NaN
+    if (r >= rangeMin && r <= rangeMax && Number.isFinite(r)) {
       points[2 * i] = r * Math.cos(a);
       points[2 * i + 1] = r * Math.sin(a);
     } else {
