@@ -68,6 +68,23 @@ function numericArray(fn, key, v, { optional = false } = {}) {
 
 const MAX_BEAMS = 1 << 24;
 
+// The beam angles with their cosines and sines, kept for the last geometry seen: a log's scans share one geometry,
+// and the trigonometry is most of the adapter's time otherwise. Read-only once built.
+let lastTable = { first: NaN, step: NaN, n: -1 };
+function beamTable(first, step, n) {
+  const t = lastTable;
+  if (t.first === first && t.step === step && t.n === n) return t;
+  const angles = new Float64Array(n), cos = new Float64Array(n), sin = new Float64Array(n);
+  for (let i = 0; i < n; i++) {
+    const a = first + i * step;
+    angles[i] = a;
+    cos[i] = Math.cos(a);
+    sin[i] = Math.sin(a);
+  }
+  lastTable = { first, step, n, angles, cos, sin };
+  return lastTable;
+}
+
 /**
  * sensor_msgs/LaserScan (ROS 1 or ROS 2) or foxglove.LaserScan -> { points, angles, maxRange, stamp, frameId,
  * intensities }. Beam i lies at angle_min + i * angle_increment (foxglove: start_angle + i * (end_angle -
@@ -110,14 +127,14 @@ export function fromLaserScan(msg) {
     throw new RangeError(`${fn}: intensities must be empty or have one value per beam (${n}), got ${inten.length}`);
 
   const points = new Float64Array(2 * n);
-  const angles = new Float64Array(n);
+  const t = beamTable(first, step, n);
+  const angles = t.angles.slice();
+  const cos = t.cos, sin = t.sin;
   for (let i = 0; i < n; i++) {
-    const a = first + i * step;
     const r = ranges[i];
-    angles[i] = a;
     if (r >= rangeMin && r <= rangeMax && Number.isFinite(r)) {
-      points[2 * i] = r * Math.cos(a);
-      points[2 * i + 1] = r * Math.sin(a);
+      points[2 * i] = r * cos[i];
+      points[2 * i + 1] = r * sin[i];
     } else {
       points[2 * i] = NaN;
       points[2 * i + 1] = NaN;
