@@ -62,6 +62,18 @@ describe('rtl CLI on logs (.mcap)', { timeout: 180000 }, () => {
     }
   });
 
+  test('rtl on a ROS 1 bag (tests/data/ros1, written by rosbag): the same clusters as rtl intel.log --scan i', () => {
+    const r = rtl([join(DATA, 'ros1', 'intel-lz4.bag'), '--topic', '/base_scan']);
+    assert.equal(r.code, 0, r.err);
+    const got = lines(r.out);
+    assert.equal(got.length, 30);
+    for (const i of [0, 17]) {
+      const ref = JSON.parse(rtl([join(DATA, 'intel.log'), '--scan', String(i)]).out);
+      assert.deepEqual(got[i].segmentation.clusters, ref.segmentation.clusters, `scan ${i}`);
+      assert.equal(got[i].source.maxRange, 50);
+    }
+  });
+
   test('the topic: the only LaserScan topic by default; several -> exit 1 listing them; a PointCloud2 topic by ring', () => {
     assert.equal(lines(rtl([single]).out).length, 30);
     const r = rtl([robot]);
