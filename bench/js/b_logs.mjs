@@ -6,12 +6,18 @@
 //    scans, generated in a temp dir. Per round, in the same run and on the same file:
 //      raw      @mcap/core's indexed reader alone (messages out, not decoded): the floor of any reading
 //      read     openLog(...).scans(): raw + CDR decode + fromLaserScan
+//      segment  read + segment()
 //      pipeline read + segment() + vectorize(ftls) on each cluster of >= 3 points (the CLI's default pipeline)
-//    Scans/s of the pipeline, and reading's share of it (read / pipeline). The cluster and segment totals are
+//    Scans/s of each, and the shares of the pipeline's time: reading (read / pipeline; raw / pipeline for the MCAP
+//    reader alone) and segmenting ((segment - read) / pipeline); vectorizing is the rest. The cluster and segment totals are
 //    checked equal across compressions and rounds (the same work). Medians over the rounds.
+// 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of N/5 scans each (zstd), -m ftls, --jobs 1 against
+//    --jobs K (K = the number of logs), wall time of the whole command, and the speed-up (ideal: min(K, cores)).
 // 2. Memory: a log of --big-mb MB (zstd) read and processed by the pipeline; RSS sampled every 1000 scans after the
 //    first 2000 (warm-up); growth = max - first sample. The file is deleted afterwards.
 import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { availableParallelism } from 'node:os';
 import { open } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -23,7 +29,7 @@ import { loadDecompressHandlers } from '@mcap/support';
 import { COMPRESSIONS, cdr } from '../../tests/js/ros-fixtures.mjs';
 
 const arg = (name, def) => Number(process.argv.find((a) => a.startsWith(`--${name}=`))?.split('=')[1] ?? def);
-const N = arg('scans', 10000), BIG_MB = arg('big-mb', 1024), ROUNDS = arg('rounds', 3);
+const N = arg('scans', 10000), BIG_MB = arg('big-mb', 1024), ROUNDS = arg('rounds', 3), LOGS = arg('logs', 2);
 const DATA = fileURLToPath(new URL('../../tests/data/', import.meta.url));
 const rtl = await init();
 const csail = rtl.readCarmenLog(readFileSync(join(DATA, 'csail.log')));
@@ -77,6 +83,14 @@ async function read(path) {
   return { scans: n };
 }
 
+async function segmentOnly(path) {
+  const log = await openLog(path);
+  let n = 0;
+  for await (const s of log.scans('/scan')) n += rtl.segment(s.points).labels.length === 360 ? 1 : 0;
+  await log.close();
+  return { scans: n };
+}
+
 function pipelineScan(points, totals) {
   const seg = rtl.segment(points);
   totals.clusters += seg.clusters.length;
@@ -109,27 +123,28 @@ async function timed(f) {
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 
 console.log(`# b_logs: Node ${process.version}, one thread; LaserScan 360 beams; ${ROUNDS} rounds, medians`);
-console.log('scans   compression  file MB  raw scans/s  read scans/s  pipeline scans/s  read share  raw share  clusters  segments');
+console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  clusters  segments');
 let reference;
 for (const count of [Math.round(N / 10), N]) {
   for (const compression of ['none', 'lz4', 'zstd']) {
     const path = join(dir, `scans-${count}-${compression}.mcap`);
     await writeLog(path, count, compression);
-    const rs = [], rd = [], pl = [];
+    const rs = [], rd = [], sg = [], pl = [];
     let totals;
     for (let r = 0; r < ROUNDS; r++) {
-      const a = await timed(() => raw(path)), b = await timed(() => read(path)), c = await timed(() => pipeline(path));
-      if (a.scans !== count || b.scans !== count || c.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${c.scans} != ${count}`);
+      const a = await timed(() => raw(path)), b = await timed(() => read(path)), d = await timed(() => segmentOnly(path));
+      const c = await timed(() => pipeline(path));
+      if (a.scans !== count || b.scans !== count || c.scans !== count || d.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${d.scans}/${c.scans} != ${count}`);
       if (totals && (totals.clusters !== c.clusters || totals.segments !== c.segments)) throw new Error('pipeline totals differ between rounds');
       totals = c;
-      rs.push(a.ms); rd.push(b.ms); pl.push(c.ms);
+      rs.push(a.ms); rd.push(b.ms); sg.push(d.ms); pl.push(c.ms);
     }
     if (count === N) {
       if (reference && (reference.clusters !== totals.clusters || reference.segments !== totals.segments)) throw new Error('pipeline totals differ between compressions');
       reference = totals;
     }
     const perS = (ms) => Math.round(count / (ms / 1000));
-    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
+    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(sg))).padStart(15)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${((median(sg) - median(rd)) / median(pl) * 100).toFixed(0).padStart(11)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
     rmSync(path);
   }
 }
@@ -152,4 +167,24 @@ if (BIG_MB > 0) {
   rmSync(path);
   console.log(`# memory: pipeline over the whole log at ${Math.round(count / (t.ms / 1000))} scans/s; RSS after warm-up ${(base / 1e6).toFixed(0)} MB, ` +
               `peak ${(peak / 1e6).toFixed(0)} MB, growth ${((peak - base) / 1e6).toFixed(1)} MB (goal < 50 MB)`);
+}
+
+if (LOGS > 1) {
+  const files = [];
+  for (let k = 0; k < LOGS; k++) {
+    files.push(join(dir, `log-${k}.mcap`));
+    await writeLog(files[k], Math.round(N / 5), 'zstd');
+  }
+  const cli = fileURLToPath(new URL('../../bin/rtl.js', import.meta.url));
+  const wall = (jobs) => {
+    const t = performance.now();
+    execFileSync(process.execPath, [cli, ...files, '--topic', '/scan', '-m', 'ftls', '--jobs', String(jobs), '-o', join(dir, `out-${jobs}.jsonl`)]);
+    return performance.now() - t;
+  };
+  const one = [], many = [];
+  for (let r = 0; r < ROUNDS; r++) { one.push(wall(1)); many.push(wall(LOGS)); }
+  const lines = (jobs) => readFileSync(join(dir, `out-${jobs}.jsonl`), 'utf8').split('\n').filter(Boolean).length;
+  if (lines(1) !== lines(LOGS) || lines(1) !== LOGS * Math.round(N / 5)) throw new Error(`--jobs outputs differ: ${lines(1)} vs ${lines(LOGS)} lines`);
+  console.log(`# --jobs: ${LOGS} logs x ${Math.round(N / 5)} scans, rtl -m ftls: --jobs 1 ${(median(one) / 1000).toFixed(1)} s, --jobs ${LOGS} ` +
+              `${(median(many) / 1000).toFixed(1)} s, speed-up ${(median(one) / median(many)).toFixed(2)} (${availableParallelism()} cores on this machine)`);
 }
