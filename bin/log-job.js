@@ -10,13 +10,18 @@ import { processLog } from './logs.js';
 const { file, opts } = workerData;
 let stop = false;
 parentPort.on('message', (m) => { if (m === 'stop') stop = true; });
-let pending = '';
-const flush = () => { if (pending) { parentPort.postMessage({ lines: pending }); pending = ''; } };
+let pending = '', progress = null;
+const flush = () => {
+  if (pending || progress) parentPort.postMessage({ lines: pending, progress });
+  pending = '';
+  progress = null;
+};
 try {
   const rtl = await init();
   const step = scanStep(rtl, opts);
   const done = await processLog(file, opts, {
     openLog, process: step, stopped: () => stop,
+    progress: (f, done, total) => { progress = { done, total }; if (done % 64 === 0) flush(); },
     emit: (line) => { if (line) { pending += line; if (pending.length > 1 << 16) flush(); } },
   });
   flush();

@@ -30,7 +30,7 @@ export async function runLogs(rtl, opts) {
     const jobs = Math.min(opts.jobs ?? availableParallelism(), opts.files.length);
     if (jobs > 1) {
       failures = await processLogsInWorkers(opts.files, opts, jobs, sink, {
-        stopped: () => interrupted,
+        stopped: () => interrupted, progress: progress.update,
         onDone: (r) => { if (r.interrupted) say(`interrupted: ${r.file}: ${r.topic}: wrote ${r.scans} scans; the next is message ${r.next}`); },
         onError: (message) => say(message),
       });

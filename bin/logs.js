@@ -120,8 +120,15 @@ export const progressWriter = (enabled) => {
 };
 
 /** Several logs on `jobs` worker threads (bin/log-job.js), one log per worker at a time; lines reach `sink` whole. */
-export async function processLogsInWorkers(files, opts, jobs, sink, { onDone, onError, stopped }) {
+export async function processLogsInWorkers(files, opts, jobs, sink, { onDone, onError, stopped, progress }) {
   const queue = [...files];
+  // progress over all logs: scans done / scans announced by the logs started so far
+  const counts = new Map();
+  const report = () => {
+    let done = 0, total = 0;
+    for (const c of counts.values()) { done += c.done; total += c.total ?? 0; }
+    progress?.(`${files.length} logs`, done, total);
+  };
   const workerUrl = new URL('./log-job.js', import.meta.url);
   const runOne = (file) => new Promise((resolve) => {
     const w = new Worker(workerUrl, { workerData: { file, opts } });
@@ -129,6 +136,7 @@ export async function processLogsInWorkers(files, opts, jobs, sink, { onDone, on
     const finish = (r) => { if (!settled) { settled = true; resolve(r); } };
     w.on('message', (m) => {
       if (m.lines) sink.write(m.lines);
+      if (m.progress) { counts.set(file, m.progress); report(); }
       if (m.done) finish({ ok: true, ...m.done });
       if (m.error) finish({ ok: false, file, message: m.error });
     });

@@ -129,6 +129,9 @@ describe('rtl CLI on logs (.mcap)', { timeout: 180000 }, () => {
     assert.equal(p.code, 0);
     assert.match(p.err, /\[#{30}\] 30\/30 scans {2}single\.mcap/);
     assert.equal(rtl([single]).err, '');   // not a terminal: no bar
+    const pj = rtl([single, robot, '--topic', '/scan', '--jobs', '2', '--progress']);
+    assert.equal(pj.code, 0, pj.err);
+    assert.match(pj.err, /\[#{30}\] 60\/60 scans {2}2 logs\n$/);
   });
 
   test('Ctrl-C: the scans done are complete lines, and it says where it stopped (exit 130)', async () => {
