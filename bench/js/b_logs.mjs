@@ -11,8 +11,9 @@
 //    Scans/s of each, and the shares of the pipeline's time: reading (read / pipeline; raw / pipeline for the MCAP
 //    reader alone) and segmenting ((segment - read) / pipeline); vectorizing is the rest. The cluster and segment totals are
 //    checked equal across compressions and rounds (the same work). Medians over the rounds.
-// 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of N/5 scans each (zstd), -m ftls, --jobs 1 against
-//    --jobs K (K = the number of logs), wall time of the whole command, and the speed-up (ideal: min(K, cores)).
+// 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of --log-scans (default N) scans each (zstd), -m ftls,
+//    --jobs 1 against --jobs K (K = the number of logs), wall time of the whole command (each worker's start, wasm
+//    instantiation included), and the speed-up (ideal: min(K, idle cores)). --throughput=0 skips section 1.
 // 2. Memory: a log of --big-mb MB (zstd) read and processed by the pipeline; RSS sampled every 1000 scans after the
 //    first 2000 (warm-up); growth = max - first sample. The file is deleted afterwards.
 import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
@@ -30,6 +31,7 @@ import { COMPRESSIONS, cdr } from '../../tests/js/ros-fixtures.mjs';
 
 const arg = (name, def) => Number(process.argv.find((a) => a.startsWith(`--${name}=`))?.split('=')[1] ?? def);
 const N = arg('scans', 10000), BIG_MB = arg('big-mb', 1024), ROUNDS = arg('rounds', 3), LOGS = arg('logs', 2);
+const THROUGHPUT = arg('throughput', 1), LOG_SCANS = arg('log-scans', N);
 const DATA = fileURLToPath(new URL('../../tests/data/', import.meta.url));
 const rtl = await init();
 const csail = rtl.readCarmenLog(readFileSync(join(DATA, 'csail.log')));
@@ -125,7 +127,7 @@ const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 console.log(`# b_logs: Node ${process.version}, one thread; LaserScan 360 beams; ${ROUNDS} rounds, medians`);
 console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  clusters  segments');
 let reference;
-for (const count of [Math.round(N / 10), N]) {
+for (const count of THROUGHPUT ? [Math.round(N / 10), N] : []) {
   for (const compression of ['none', 'lz4', 'zstd']) {
     const path = join(dir, `scans-${count}-${compression}.mcap`);
     await writeLog(path, count, compression);
@@ -173,7 +175,7 @@ if (LOGS > 1) {
   const files = [];
   for (let k = 0; k < LOGS; k++) {
     files.push(join(dir, `log-${k}.mcap`));
-    await writeLog(files[k], Math.round(N / 5), 'zstd');
+    await writeLog(files[k], LOG_SCANS, 'zstd');
   }
   const cli = fileURLToPath(new URL('../../bin/rtl.js', import.meta.url));
   const wall = (jobs) => {
@@ -184,7 +186,7 @@ if (LOGS > 1) {
   const one = [], many = [];
   for (let r = 0; r < ROUNDS; r++) { one.push(wall(1)); many.push(wall(LOGS)); }
   const lines = (jobs) => readFileSync(join(dir, `out-${jobs}.jsonl`), 'utf8').split('\n').filter(Boolean).length;
-  if (lines(1) !== lines(LOGS) || lines(1) !== LOGS * Math.round(N / 5)) throw new Error(`--jobs outputs differ: ${lines(1)} vs ${lines(LOGS)} lines`);
-  console.log(`# --jobs: ${LOGS} logs x ${Math.round(N / 5)} scans, rtl -m ftls: --jobs 1 ${(median(one) / 1000).toFixed(1)} s, --jobs ${LOGS} ` +
+  if (lines(1) !== lines(LOGS) || lines(1) !== LOGS * LOG_SCANS) throw new Error(`--jobs outputs differ: ${lines(1)} vs ${lines(LOGS)} lines`);
+  console.log(`# --jobs: ${LOGS} logs x ${LOG_SCANS} scans, rtl -m ftls: --jobs 1 ${(median(one) / 1000).toFixed(1)} s, --jobs ${LOGS} ` +
               `${(median(many) / 1000).toFixed(1)} s, speed-up ${(median(one) / median(many)).toFixed(2)} (${availableParallelism()} cores on this machine)`);
 }
