@@ -1,0 +1,150 @@
+// Exact best partitions of one chain of points into k contiguous ranges (k = 1..K), each range of >= 2 points and
+// costed by its total-least-squares (TLS) error: the sum of squared orthogonal distances to its best-fitting line.
+//
+// Range costs come in O(1) from prefix sums of x, y, x^2, xy, y^2 (taken about the chain's first point, so that a
+// chain far from the origin keeps its precision), all in double. The dynamic programme over prefix lengths,
+//   F[k][j] = min over i of F[k-1][i] + cost(points i..j-1),
+// gives every k's optimum in one pass: O(n^2) range costs, then O(K n^2) additions; O(n^2 + K n) memory.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace rtl::scan_polylines
+{
+    //! A TLS line n . p = d (|n| = 1) of a range, with its centroid and error.
+    struct TlsFit
+    {
+        double nx = 0, ny = 0, d = 0;      //!< unit normal and offset
+        double cx = 0, cy = 0;             //!< centroid
+        double sse = 0;                    //!< sum of squared orthogonal distances
+    };
+
+    class ChainPartition
+    {
+    public:
+        //! Prefix sums of a chain of n points (coordinates finite).
+        void load(const double *x, const double *y, std::size_t n)
+        {
+            n_ = n;
+            x0_ = n ? x[0] : 0; y0_ = n ? y[0] : 0;
+            sums_.assign(5 * (n + 1), 0.0);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const double a = x[i] - x0_, b = y[i] - y0_;
+                const double *p = &sums_[5 * i];
+                double *q = &sums_[5 * (i + 1)];
+                q[0] = p[0] + a; q[1] = p[1] + b; q[2] = p[2] + a * a; q[3] = p[3] + a * b; q[4] = p[4] + b * b;
+            }
+        }
+
+        [[nodiscard]] std::size_t size() const { return n_; }
+
+        //! TLS error of points first..last (inclusive, last > first).
+        [[nodiscard]] double rangeCost(std::size_t first, std::size_t last) const
+        {
+            double sxx, sxy, syy, mx, my;
+            moments(first, last, sxx, sxy, syy, mx, my);
+            const double h = 0.5 * (sxx - syy);
+            return std::max(0.0, 0.5 * (sxx + syy) - std::sqrt(h * h + sxy * sxy));
+        }
+
+        //! TLS line of points first..last (inclusive, last > first). Coincident points give an arbitrary normal.
+        [[nodiscard]] TlsFit fit(std::size_t first, std::size_t last) const
+        {
+            double sxx, sxy, syy, mx, my;
+            moments(first, last, sxx, sxy, syy, mx, my);
+            const double h = 0.5 * (sxx - syy);
+            const double root = std::sqrt(h * h + sxy * sxy);
+            const double lmin = 0.5 * (sxx + syy) - root;
+            // Eigenvector of the smaller eigenvalue: the better conditioned of the two rows of (S - lmin I).
+            double nx = sxy, ny = lmin - sxx;
+            const double ax = lmin - syy, ay = sxy;
+            if (ax * ax + ay * ay > nx * nx + ny * ny) { nx = ax; ny = ay; }
+            double len = std::hypot(nx, ny);
+            if (!(len > 0)) { nx = 1; ny = 0; len = 1; }
+            TlsFit f;
+            f.nx = nx / len; f.ny = ny / len;
+            f.cx = mx + x0_; f.cy = my + y0_;
+            f.d = f.nx * f.cx + f.ny * f.cy;
+            f.sse = std::max(0.0, lmin);
+            return f;
+        }
+
+        //! Runs the programme for k = 1..maxK segments (capped at n / 2). Afterwards cost(k) is the optimum (inf where
+        //! no partition into k ranges exists) and ranges(k) its ranges as (first, last) inclusive.
+        void solve(std::size_t maxK)
+        {
+            const std::size_t n = n_;
+            K_ = std::min(maxK, n / 2);
+            const std::size_t w = n + 1;
+            costs_.assign(w * w, kInf);
+            // costs_[j * w + i] = cost of points i..j-1, contiguous in i for the inner loop below.
+            for (std::size_t j = 2; j <= n; ++j)
+                for (std::size_t i = 0; i + 2 <= j; ++i)
+                    costs_[j * w + i] = rangeCost(i, j - 1);
+            best_.assign((K_ + 1) * w, kInf);
+            from_.assign((K_ + 1) * w, 0);
+            best_[0] = 0;
+            for (std::size_t k = 1; k <= K_; ++k)
+            {
+                const double *prev = &best_[(k - 1) * w];
+                double *cur = &best_[k * w];
+                std::uint32_t *arg = &from_[k * w];
+                for (std::size_t j = 2 * k; j <= n; ++j)
+                {
+                    const double *c = &costs_[j * w];
+                    double m = kInf;
+                    std::size_t at = 0;
+                    for (std::size_t i = 2 * (k - 1); i + 2 <= j; ++i)
+                    {
+                        const double v = prev[i] + c[i];
+                        if (v < m) { m = v; at = i; }
+                    }
+                    cur[j] = m;
+                    arg[j] = static_cast<std::uint32_t>(at);
+                }
+            }
+        }
+
+        [[nodiscard]] std::size_t maxSegments() const { return K_; }
+        [[nodiscard]] double cost(std::size_t k) const { return k <= K_ ? best_[k * (n_ + 1) + n_] : kInf; }
+
+        [[nodiscard]] std::vector<std::pair<std::size_t, std::size_t>> ranges(std::size_t k) const
+        {
+            std::vector<std::pair<std::size_t, std::size_t>> out(k);
+            std::size_t j = n_;
+            for (std::size_t s = k; s > 0; --s)
+            {
+                const std::size_t i = from_[s * (n_ + 1) + j];
+                out[s - 1] = {i, j - 1};
+                j = i;
+            }
+            return out;
+        }
+
+    private:
+        static constexpr double kInf = std::numeric_limits<double>::infinity();
+
+        void moments(std::size_t first, std::size_t last, double &sxx, double &sxy, double &syy, double &mx, double &my) const
+        {
+            const double *a = &sums_[5 * first], *b = &sums_[5 * (last + 1)];
+            const double m = static_cast<double>(last + 1 - first);
+            const double sx = b[0] - a[0], sy = b[1] - a[1];
+            mx = sx / m; my = sy / m;
+            sxx = (b[2] - a[2]) - sx * mx;
+            sxy = (b[3] - a[3]) - sx * my;
+            syy = (b[4] - a[4]) - sy * my;
+        }
+
+        std::size_t n_ = 0, K_ = 0;
+        double x0_ = 0, y0_ = 0;
+        std::vector<double> sums_, costs_, best_;
+        std::vector<std::uint32_t> from_;
+    };
+}
