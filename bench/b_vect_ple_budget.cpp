@@ -36,6 +36,7 @@ namespace
         rtl::ScanPolylines2D<double> ex;
         ex.setMaxVertices(J);
         ex.setRefinement(refine);
+        if (const char *e = std::getenv("PLE_CAND")) ex.setCandidateRefinement(std::atoi(e));
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)

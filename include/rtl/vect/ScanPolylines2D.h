@@ -84,6 +84,10 @@ namespace rtl
         //! The radial error (metres) at which a beam is as well left unexplained (default 0.5). Finite and > 0, else
         //! std::invalid_argument.
         void setUnexplainedCost(T c) { cost_ = checkedPositive(c, "ScanPolylines2D::setUnexplainedCost"); }
+        //! Partition ranges costed by radially weighted TLS, or plain TLS (default).
+        void setRadialWeights(bool on) { radial_weights_ = on; }
+        //! Iterations of radial refinement applied to every candidate before the budget is allocated (default 0).
+        void setCandidateRefinement(int iterations) { refine_candidates_ = iterations; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
@@ -226,7 +230,8 @@ namespace rtl
             const std::size_t n = cl - cf + 1;
             opts.push_back({0, static_cast<double>(n) * cost_ * cost_});
             if (n < 2) return;
-            part_.load(&px_[cf], &py_[cf], n);
+            radialWeights(cf, cl);
+            part_.load(&px_[cf], &py_[cf], n, radial_weights_ ? weight_.data() : nullptr);
             part_.solve(max_vertices_ - 1);
             std::vector<scan_polylines::TlsFit> fits;
             for (std::size_t k = 1; k <= part_.maxSegments(); ++k)
@@ -269,9 +274,38 @@ namespace rtl
                     cur.x.push_back(x); cur.y.push_back(y); ++vertices;
                 }
                 if (vertices > max_vertices_) continue;
-                opts.push_back({vertices, chainCost(cand, cf, cl)});
+                double cost = chainCost(cand, cf, cl);
+                if (refine_candidates_ > 0)
+                {
+                    Candidate refined = cand;
+                    scan_polylines::RadialRefinement lm;
+                    lm.setMaxIterations(refine_candidates_);
+                    const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
+                    for (auto &p : refined.polylines) lm(p.x, p.y, p.segs, arrays, cost_ * cost_);
+                    const double c2 = chainCost(refined, cf, cl);
+                    if (c2 < cost) { cost = c2; cand = std::move(refined); }
+                }
+                opts.push_back({vertices, cost});
                 candidates_[c].push_back(std::move(cand));
                 // option index o > 0 is candidates_[c][o - 1]
+            }
+        }
+
+        //! Weights that turn a point's squared orthogonal distance into its squared radial error, 1 / cos^2 of the
+        //! angle between its beam and the surface normal, the normal taken from the points' TLS line over the
+        //! neighbours within 2 beams (cos kept >= 0.2, so the weight stays <= 25).
+        void radialWeights(std::size_t cf, std::size_t cl)
+        {
+            const std::size_t n = cl - cf + 1;
+            weight_.assign(n, 1.0);
+            if (!radial_weights_ || n < 3) return;
+            part_.load(&px_[cf], &py_[cf], n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const std::size_t lo = i >= 2 ? i - 2 : 0, hi = std::min(n - 1, i + 2);
+                const scan_polylines::TlsFit f = part_.fit(lo, hi);
+                const double c = std::max(0.2, std::abs(f.nx * ux_[cf + i] + f.ny * uy_[cf + i]));
+                weight_[i] = 1.0 / (c * c);
             }
         }
 
@@ -359,9 +393,10 @@ namespace rtl
 
         std::size_t max_vertices_ = 50;
         double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
-        bool refine_ = true;
+        bool refine_ = true, radial_weights_ = false;
+        int refine_candidates_ = 0;
 
-        std::vector<double> px_, py_, ux_, uy_, range_, angle_, local_;
+        std::vector<double> px_, py_, ux_, uy_, range_, angle_, local_, weight_;
         std::vector<bool> returned_;
         std::size_t returned_count_ = 0;
         std::vector<BeamRange> chains_;

@@ -28,18 +28,20 @@ namespace rtl::scan_polylines
     class ChainPartition
     {
     public:
-        //! Prefix sums of a chain of n points (coordinates finite).
-        void load(const double *x, const double *y, std::size_t n)
+        //! Prefix sums of a chain of n points (coordinates finite), each with weight w[i] > 0 (all 1 when w is null):
+        //! the range cost is then the weighted TLS error, sum w_i d_i^2 about the weighted best line.
+        void load(const double *x, const double *y, std::size_t n, const double *w = nullptr)
         {
             n_ = n;
             x0_ = n ? x[0] : 0; y0_ = n ? y[0] : 0;
-            sums_.assign(5 * (n + 1), 0.0);
+            sums_.assign(6 * (n + 1), 0.0);
             for (std::size_t i = 0; i < n; ++i)
             {
-                const double a = x[i] - x0_, b = y[i] - y0_;
-                const double *p = &sums_[5 * i];
-                double *q = &sums_[5 * (i + 1)];
-                q[0] = p[0] + a; q[1] = p[1] + b; q[2] = p[2] + a * a; q[3] = p[3] + a * b; q[4] = p[4] + b * b;
+                const double a = x[i] - x0_, b = y[i] - y0_, c = w ? w[i] : 1.0;
+                const double *p = &sums_[6 * i];
+                double *q = &sums_[6 * (i + 1)];
+                q[0] = p[0] + c * a; q[1] = p[1] + c * b; q[2] = p[2] + c * a * a; q[3] = p[3] + c * a * b; q[4] = p[4] + c * b * b;
+                q[5] = p[5] + c;
             }
         }
 
@@ -133,8 +135,8 @@ namespace rtl::scan_polylines
 
         void moments(std::size_t first, std::size_t last, double &sxx, double &sxy, double &syy, double &mx, double &my) const
         {
-            const double *a = &sums_[5 * first], *b = &sums_[5 * (last + 1)];
-            const double m = static_cast<double>(last + 1 - first);
+            const double *a = &sums_[6 * first], *b = &sums_[6 * (last + 1)];
+            const double m = b[5] - a[5];
             const double sx = b[0] - a[0], sy = b[1] - a[1];
             mx = sx / m; my = sy / m;
             sxx = (b[2] - a[2]) - sx * mx;
