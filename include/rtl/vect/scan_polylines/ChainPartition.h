@@ -101,13 +101,12 @@ namespace rtl::scan_polylines
                 for (std::size_t j = 2 * k; j <= n; ++j)
                 {
                     const double *c = &costs_[j * w];
+                    // Two passes: a branch-free minimum (vectorised), then the first index that reaches it.
+                    const std::size_t lo = 2 * (k - 1), hi = j - 1;
                     double m = kInf;
-                    std::size_t at = 0;
-                    for (std::size_t i = 2 * (k - 1); i + 2 <= j; ++i)
-                    {
-                        const double v = prev[i] + c[i];
-                        if (v < m) { m = v; at = i; }
-                    }
+                    for (std::size_t i = lo; i < hi; ++i) m = std::min(m, prev[i] + c[i]);
+                    std::size_t at = lo;
+                    while (at + 1 < hi && !(prev[at] + c[at] == m)) ++at;
                     cur[j] = m;
                     arg[j] = static_cast<std::uint32_t>(at);
                 }
