@@ -101,10 +101,21 @@ namespace rtl::scan_polylines
                 for (std::size_t j = 2 * k; j <= n; ++j)
                 {
                     const double *c = &costs_[j * w];
-                    // Two passes: a branch-free minimum (vectorised), then the first index that reaches it.
+                    // Two passes: a branch-free minimum over four independent accumulators (a floating-point min
+                    // reduction is not reordered by the compiler, so one accumulator would wait on every step), then
+                    // the first index that reaches it.
                     const std::size_t lo = 2 * (k - 1), hi = j - 1;
-                    double m = kInf;
-                    for (std::size_t i = lo; i < hi; ++i) m = std::min(m, prev[i] + c[i]);
+                    double m0 = kInf, m1 = kInf, m2 = kInf, m3 = kInf;
+                    std::size_t i = lo;
+                    for (; i + 4 <= hi; i += 4)
+                    {
+                        m0 = std::min(m0, prev[i] + c[i]);
+                        m1 = std::min(m1, prev[i + 1] + c[i + 1]);
+                        m2 = std::min(m2, prev[i + 2] + c[i + 2]);
+                        m3 = std::min(m3, prev[i + 3] + c[i + 3]);
+                    }
+                    for (; i < hi; ++i) m0 = std::min(m0, prev[i] + c[i]);
+                    const double m = std::min(std::min(m0, m1), std::min(m2, m3));
                     std::size_t at = lo;
                     while (at + 1 < hi && !(prev[at] + c[at] == m)) ++at;
                     cur[j] = m;
