@@ -4,7 +4,8 @@
 // Range costs come in O(1) from prefix sums of x, y, x^2, xy, y^2 (taken about the chain's first point, so that a
 // chain far from the origin keeps its precision), all in double. The dynamic programme over prefix lengths,
 //   F[k][j] = min over i of F[k-1][i] + cost(points i..j-1),
-// gives every k's optimum in one pass: O(n^2) range costs, then O(K n^2) additions; O(n^2 + K n) memory.
+// gives every k's optimum in one pass: O(n^2) range costs, then at most O(K n^2) additions (the scan over the last
+// range stops as soon as that range's own error reaches the best total, see solve); O(n^2 + K n) memory.
 #pragma once
 
 #include <algorithm>
@@ -101,23 +102,18 @@ namespace rtl::scan_polylines
                 for (std::size_t j = 2 * k; j <= n; ++j)
                 {
                     const double *c = &costs_[j * w];
-                    // Two passes: a branch-free minimum over four independent accumulators (a floating-point min
-                    // reduction is not reordered by the compiler, so one accumulator would wait on every step), then
-                    // the first index that reaches it.
+                    // Last range i..j-1, scanned from the shortest: a longer last range contains a shorter one, so
+                    // its TLS error is no smaller (c[i] grows as i falls), and once c[i] alone reaches the best total
+                    // no longer range can win. Exact, and it cuts most of the work where the optimum is small.
                     const std::size_t lo = 2 * (k - 1), hi = j - 1;
-                    double m0 = kInf, m1 = kInf, m2 = kInf, m3 = kInf;
-                    std::size_t i = lo;
-                    for (; i + 4 <= hi; i += 4)
+                    double m = kInf;
+                    std::size_t at = hi - 1;
+                    for (std::size_t i = hi; i-- > lo;)
                     {
-                        m0 = std::min(m0, prev[i] + c[i]);
-                        m1 = std::min(m1, prev[i + 1] + c[i + 1]);
-                        m2 = std::min(m2, prev[i + 2] + c[i + 2]);
-                        m3 = std::min(m3, prev[i + 3] + c[i + 3]);
+                        if (c[i] >= m) break;
+                        const double v = prev[i] + c[i];
+                        if (v < m) { m = v; at = i; }
                     }
-                    for (; i < hi; ++i) m0 = std::min(m0, prev[i] + c[i]);
-                    const double m = std::min(std::min(m0, m1), std::min(m2, m3));
-                    std::size_t at = lo;
-                    while (at + 1 < hi && !(prev[at] + c[at] == m)) ++at;
                     cur[j] = m;
                     arg[j] = static_cast<std::uint32_t>(at);
                 }
