@@ -106,13 +106,17 @@ namespace rtl
             if (returned_count_ == 0) return false;
             findChains();
             std::vector<std::vector<scan_polylines::BudgetOption>> options(chains_.size());
-            candidates_.assign(chains_.size(), {});
+            if (candidates_.size() < chains_.size()) candidates_.resize(chains_.size());   // kept: their memory is reused
+            candidate_count_.assign(chains_.size(), 0);
             for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
             const std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
             std::vector<Polyline> map;
             for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
                 if (chosen[c] > 0)
-                    for (const auto &p : candidates_[c][chosen[c] - 1].polylines) map.push_back(p);
+                {
+                    const Candidate &cand = candidates_[c][chosen[c] - 1];
+                    map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                }
             std::vector<double> rhat = expected(map);
             scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
             if (refine_ && !map.empty())
@@ -152,9 +156,20 @@ namespace rtl
             std::vector<double> x, y;           // vertices
             std::vector<BeamRange> segs;        // beams of each segment (scan indices)
         };
+        //! The polylines of one partition of a chain; polylines[0, used) are valid (the rest keep their memory for the
+        //! next call, so that building candidates does not allocate once the buffers have grown).
         struct Candidate
         {
             std::vector<Polyline> polylines;
+            std::size_t used = 0;
+
+            Polyline &next()
+            {
+                if (used == polylines.size()) polylines.emplace_back();
+                Polyline &p = polylines[used++];
+                p.x.clear(); p.y.clear(); p.segs.clear();
+                return p;
+            }
         };
 
         static double checkedPositive(T v, const char *what)
@@ -233,26 +248,28 @@ namespace rtl
             radialWeights(cf, cl);
             part_.load(&px_[cf], &py_[cf], n, radial_weights_ ? weight_.data() : nullptr);
             part_.solve(max_vertices_ - 1);
-            std::vector<scan_polylines::TlsFit> fits;
+            std::vector<scan_polylines::TlsFit> &fits = fits_;
+            std::vector<BeamRange> &ranges = ranges_;
             for (std::size_t k = 1; k <= part_.maxSegments(); ++k)
             {
-                const auto ranges = part_.ranges(k);
+                part_.ranges(k, ranges);
                 fits.clear();
                 for (const auto &r : ranges) fits.push_back(part_.fit(r.first, r.second));
-                Candidate cand;
-                Polyline cur;
+                if (candidate_count_[c] == candidates_[c].size()) candidates_[c].emplace_back();
+                Candidate &cand = candidates_[c][candidate_count_[c]];
+                cand.used = 0;
+                Polyline *cur = &cand.next();
                 double x, y;
                 endOnBeam(fits[0], cf + ranges[0].first, x, y);
-                cur.x.push_back(x); cur.y.push_back(y);
+                cur->x.push_back(x); cur->y.push_back(y);
                 std::size_t vertices = 1;
                 for (std::size_t s = 0; s < k; ++s)
                 {
-                    cur.segs.push_back({cf + ranges[s].first, cf + ranges[s].second});
+                    cur->segs.push_back({cf + ranges[s].first, cf + ranges[s].second});
                     if (s + 1 == k)
                     {
                         endOnBeam(fits[s], cf + ranges[s].second, x, y);
-                        cur.x.push_back(x); cur.y.push_back(y); ++vertices;
-                        cand.polylines.push_back(std::move(cur));
+                        cur->x.push_back(x); cur->y.push_back(y); ++vertices;
                         break;
                     }
                     const std::size_t a = cf + ranges[s].second, b = cf + ranges[s + 1].first;
@@ -263,15 +280,14 @@ namespace rtl
                     if (corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y) 
                         && scan_polylines::AngularSpan::of(px_[wa], py_[wa], px_[wb], py_[wb]).contains(std::atan2(y, x), 0))
                     {
-                        cur.x.push_back(x); cur.y.push_back(y); ++vertices;
+                        cur->x.push_back(x); cur->y.push_back(y); ++vertices;
                         continue;
                     }
                     endOnBeam(fits[s], a, x, y);
-                    cur.x.push_back(x); cur.y.push_back(y); ++vertices;
-                    cand.polylines.push_back(std::move(cur));
-                    cur = Polyline();
+                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                    cur = &cand.next();   // a break: the next range starts a new polyline
                     endOnBeam(fits[s + 1], b, x, y);
-                    cur.x.push_back(x); cur.y.push_back(y); ++vertices;
+                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
                 }
                 if (vertices > max_vertices_) continue;
                 double cost = chainCost(cand, cf, cl);
@@ -281,13 +297,13 @@ namespace rtl
                     scan_polylines::RadialRefinement lm;
                     lm.setMaxIterations(refine_candidates_);
                     const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
-                    for (auto &p : refined.polylines) lm(p.x, p.y, p.segs, arrays, cost_ * cost_);
+                    for (std::size_t p = 0; p < refined.used; ++p)
+                        lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
                     const double c2 = chainCost(refined, cf, cl);
-                    if (c2 < cost) { cost = c2; cand = std::move(refined); }
+                    if (c2 < cost) { cost = c2; std::swap(cand, refined); }
                 }
                 opts.push_back({vertices, cost});
-                candidates_[c].push_back(std::move(cand));
-                // option index o > 0 is candidates_[c][o - 1]
+                ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
             }
         }
 
@@ -313,7 +329,9 @@ namespace rtl
         double chainCost(const Candidate &cand, std::size_t cf, std::size_t cl)
         {
             local_.assign(cl - cf + 1, scan_polylines::kNaN);
-            for (const auto &p : cand.polylines)
+            for (std::size_t q = 0; q < cand.used; ++q)
+            {
+                const Polyline &p = cand.polylines[q];
                 for (std::size_t s = 0; s < p.segs.size(); ++s)
                 {
                     const double ax = p.x[s], ay = p.y[s], bx = p.x[s + 1], by = p.y[s + 1];
@@ -328,6 +346,7 @@ namespace rtl
                     for (std::size_t i = p.segs[s].first; i-- > cf && test(i);) {}
                     for (std::size_t i = p.segs[s].second + 1; i <= cl && test(i); ++i) {}
                 }
+            }
             double sum = 0;
             for (std::size_t i = cf; i <= cl; ++i)
             {
@@ -401,6 +420,9 @@ namespace rtl
         std::size_t returned_count_ = 0;
         std::vector<BeamRange> chains_;
         std::vector<std::vector<Candidate>> candidates_;
+        std::vector<std::size_t> candidate_count_;
+        std::vector<scan_polylines::TlsFit> fits_;
+        std::vector<BeamRange> ranges_;
         scan_polylines::ChainPartition part_;
 
         std::vector<std::vector<VectorType>> polylines_;

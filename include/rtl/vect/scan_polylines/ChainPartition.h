@@ -125,7 +125,15 @@ namespace rtl::scan_polylines
 
         [[nodiscard]] std::vector<std::pair<std::size_t, std::size_t>> ranges(std::size_t k) const
         {
-            std::vector<std::pair<std::size_t, std::size_t>> out(k);
+            std::vector<std::pair<std::size_t, std::size_t>> out;
+            ranges(k, out);
+            return out;
+        }
+
+        //! ranges(k) into `out` (its memory reused).
+        void ranges(std::size_t k, std::vector<std::pair<std::size_t, std::size_t>> &out) const
+        {
+            out.resize(k);
             std::size_t j = n_;
             for (std::size_t s = k; s > 0; --s)
             {
@@ -133,7 +141,6 @@ namespace rtl::scan_polylines
                 out[s - 1] = {i, j - 1};
                 j = i;
             }
-            return out;
         }
 
     private:
