@@ -191,6 +191,15 @@ TEST(PcdFormat, IntegerExtremesAndTheirAsciiLimits)
     // F 4 range: 1e39 does not fit a float (PCL's parser would not give that value either).
     EXPECT_NE(errorOf("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nDATA ascii\n1e39 0 0\n").find("bad value '1e39'"),
               std::string::npos);
+    // Too small for its type: a zero of its sign (1e-40 is a subnormal float and stays one).
+    const auto tiny = read("FIELDS x y z\nSIZE 4 8 4\nTYPE F F F\nWIDTH 1\nDATA ascii\n-1e-50 1e-400 1e-40\n");
+    EXPECT_EQ(tiny.points[0].x(), 0.0);
+    EXPECT_TRUE(std::signbit(tiny.points[0].x()));
+    EXPECT_EQ(tiny.points[0].y(), 0.0);
+    EXPECT_FALSE(std::signbit(tiny.points[0].y()));
+    EXPECT_EQ(tiny.points[0].z(), static_cast<double>(1e-40f));
+    EXPECT_NE(errorOf("FIELDS x y z\nSIZE 4 8 4\nTYPE F F F\nWIDTH 1\nDATA ascii\n0 1e400 0\n").find("bad value '1e400'"),
+              std::string::npos);
 }
 
 TEST(PcdFormat, Version06HeaderWithoutViewpointCountAndPoints)

@@ -140,7 +140,17 @@ namespace rtl
         {
 #if defined(__cpp_lib_to_chars)
             auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
-            return ec == std::errc() && end == tok.data() + tok.size();
+            if (end != tok.data() + tok.size()) return false;
+            if (ec == std::errc::result_out_of_range)
+            {
+                // Too small for T (1e-50 as a float) reads as a zero of its sign, as strtof gives it; too large is
+                // an error. from_chars does not tell which, strtod does (its result is below 1 in magnitude).
+                const std::string text(tok);
+                if (!(std::abs(std::strtod(text.c_str(), nullptr)) < 1)) return false;
+                v = tok.front() == '-' ? -T(0) : T(0);
+                return true;
+            }
+            return ec == std::errc();
 #else
             if (tok.empty() || tok.front() == '+' || tok.find_first_of("xX") != std::string_view::npos) return false;
             const std::string text(tok);
