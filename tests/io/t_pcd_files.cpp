@@ -241,7 +241,7 @@ TEST(PcdPclFiles, CorruptCompressedBlockIsAnError)
     const std::uint32_t more = usize + 16;
     std::memcpy(bad.data() + data + 4, &more, 4);
     EXPECT_EQ(error(bad), "PCD, at byte offset " + std::to_string(data + 4) +
-                              ": uncompressed size 4112 differs from POINTS x point size = 256 x 16");
+                              ": uncompressed size 4112 differs from POINTS x point size = 256 x 16 (padding fields excluded)");
     // A compressed size beyond the input.
     bad = good;
     const std::uint32_t huge = 0xfffffff0u;

@@ -96,15 +96,17 @@ namespace
 
     std::string mixedCompressed()
     {
-        // Column by column: every point's rgb, every point's padding, every point's z, ...
+        // Column by column: every point's rgb, every point's z, ...; padding has no column (as PCL reads it).
         const std::size_t sizes[] = {4, 3, 8, 12, 2, 1, 4};
+        const bool padding[] = {false, true, false, false, false, false, false};
         std::string records[3], columns;
         for (int i = 0; i < 3; ++i) records[i] = mixedRecord(mixed[i]);
         std::size_t offset = 0;
-        for (std::size_t size : sizes)
+        for (int f = 0; f < 7; ++f)
         {
-            for (const auto &r : records) columns += r.substr(offset, size);
-            offset += size;
+            if (!padding[f])
+                for (const auto &r : records) columns += r.substr(offset, sizes[f]);
+            offset += sizes[f];
         }
         const std::string block = lzfLiterals(columns);
         std::string s = std::string(mixedHeader) + "DATA binary_compressed\n";
@@ -115,12 +117,12 @@ namespace
 
     std::string mixedAscii()
     {
-        // No values for the padding field; the NaN as PCL writes it.
+        // Values of the padding field are skipped unread (PCL's reader needs them there); the NaN as PCL writes it.
         return std::string(mixedHeader) + "DATA ascii\n"
-                                          "16744448 -1.25 0 0 1 -300 7 0.5\n"
-                                          "1 1e+300 1 -0 0.25 32767 255 -2\r\n"
+                                          "16744448 1 2 3 -1.25 0 0 1 -300 7 0.5\n"
+                                          "1 _ _ _ 1e+300 1 -0 0.25 32767 255 -2\r\n"
                                           "\n"
-                                          "4294967295 nan -1 2 3 -32768 0 100\n";
+                                          "4294967295 0 0 0 nan -1 2 3 -32768 0 100\n";
     }
 }
 

@@ -1,10 +1,12 @@
 // Reader for PCD files, the Point Cloud Library's point cloud format (header: rtl/io/PcdHeader.h), in its three
-// encodings:
-//  - ascii: one text line per point, the values of every field but the "_" padding in FIELDS order;
+// encodings, as PCL's PCDReader reads them:
+//  - ascii: one text line per point, the values of every field in FIELDS order (a "_" padding field's values are
+//    skipped unread; PCL's writer leaves "_" out of ascii headers);
 //  - binary: point records of header.point_step bytes, little-endian, fields at their offsets (padding included);
 //  - binary_compressed: two little-endian uint32 (compressed size, uncompressed size), then one LZF block
 //    (rtl/io/LzfDecompress.h) that holds the fields column by column: every point's value of the first field, then
-//    every point's value of the second field, and so on (padding fields included).
+//    every point's value of the second field, and so on, with no column for a "_" padding field (the uncompressed
+//    size is POINTS x the point size without padding).
 // The result keeps the file's point order (row after row for an organised cloud), its width x height, the viewpoint,
 // x, y, z of every point and, on request, further fields as doubles. NaN coordinates (PCL's "no return" in organised
 // clouds) stay NaN.
@@ -216,8 +218,7 @@ namespace rtl
             const PcdHeader &h = cloud.header;
             const std::string_view text(reinterpret_cast<const char *>(bytes), size);
             std::size_t per_line = 0;
-            for (const auto &f : h.fields)
-                if (f.name != "_") per_line += f.count;   // (no overflow: at most point_step)
+            for (const auto &f : h.fields) per_line += f.count;   // (no overflow: at most point_step)
             // A point takes at least 2 bytes per value ("0 " or "0\n"): reserve no more than the data can hold.
             startFields(cloud, p, std::min(h.points, (size - h.data_offset) / per_line / 2 + 1));
             std::vector<std::string_view> tok;
@@ -241,8 +242,12 @@ namespace rtl
                 for (std::size_t i = 0; i < h.fields.size(); ++i)
                 {
                     const PcdField &f = h.fields[i];
-                    if (f.name == "_") continue;
                     first[i] = t;
+                    if (f.name == "_")
+                    {
+                        t += f.count;   // padding: skipped unread, as PCL does
+                        continue;
+                    }
                     for (std::size_t k = 0; k < f.count; ++k, ++t)
                     {
                         double v = 0;
@@ -321,9 +326,17 @@ namespace rtl
             if (csize > avail - 8)
                 throw bad(at, "truncated data: a compressed block of " + std::to_string(csize) + " bytes, the input holds " +
                                   std::to_string(avail - 8) + " after its sizes");
-            if ((n != 0 && h.point_step > std::numeric_limits<std::size_t>::max() / n) || n * h.point_step != usize)
+            // Column f starts after the columns of the fields before it, padding fields having none.
+            std::vector<std::size_t> column(h.fields.size());
+            std::size_t packed = 0;
+            for (std::size_t f = 0; f < h.fields.size(); ++f)
+            {
+                column[f] = packed;
+                if (h.fields[f].name != "_") packed += h.fields[f].size * h.fields[f].count;
+            }
+            if ((n != 0 && packed > std::numeric_limits<std::size_t>::max() / n) || n * packed != usize)
                 throw bad(at + 4, "uncompressed size " + std::to_string(usize) + " differs from POINTS x point size = " +
-                                      std::to_string(n) + " x " + std::to_string(h.point_step));
+                                      std::to_string(n) + " x " + std::to_string(packed) + " (padding fields excluded)");
             if (usize > lzfMaxOutput(csize))
                 throw bad(at, "bad LZF stream: " + std::to_string(csize) + " compressed bytes cannot hold " + std::to_string(usize));
             std::vector<std::uint8_t> data(usize);
@@ -335,13 +348,13 @@ namespace rtl
                 needed.insert(needed.end(), p.xyz, p.xyz + 3);
                 for (std::size_t f : needed)
                 {
-                    const std::size_t start = n * h.fields[f].offset, len = h.fields[f].size * h.fields[f].count;
+                    const std::size_t start = n * column[f], len = h.fields[f].size * h.fields[f].count;
                     whole = std::min(whole, r.produced < start ? 0 : (r.produced - start) / len);
                 }
             }
             startFields(cloud, p, whole);
             gather(cloud, p, whole, [&](std::size_t f, std::size_t i) {
-                return data.data() + n * h.fields[f].offset + i * h.fields[f].size * h.fields[f].count;
+                return data.data() + n * column[f] + i * h.fields[f].size * h.fields[f].count;
             });
             if (r.error)
                 throw PcdError("", PcdError::npos, whole, at + 8 + r.input_offset,
@@ -352,10 +365,10 @@ namespace rtl
 
     /*! Reads a PCD file held in `size` bytes. Throws PcdError (message naming the header line, or the data line / point
      *  and byte offset) for a bad header (parsePcdHeader), a missing x, y or z field or one with COUNT > 1, and bad
-     *  data: an ascii line with a wrong number of values or a value that is not of its field's type (or out of its
-     *  range: 1e39 for F 4), fewer or more ascii data lines than POINTS (empty lines are skipped), binary data shorter
+     *  data: an ascii line with a wrong number of values (padding fields included) or a value that is not of its
+     *  field's type (or out of its range: 1e39 for F 4), fewer or more ascii data lines than POINTS (empty lines are skipped), binary data shorter
      *  than POINTS records (bytes after them are ignored), a compressed block longer than the input, an uncompressed
-     *  size other than POINTS x point size, a bad LZF stream. With options.keep_partial, bad data instead ends the
+     *  size other than POINTS x point size without padding, a bad LZF stream. With options.keep_partial, bad data instead ends the
      *  cloud at the faulty point (see PcdOptions). Allocation never exceeds what the input can describe: the points
      *  of the binary records present, 264 bytes per 3 compressed bytes, 1 point per 2 ascii bytes.
      *  O(size + points x fields). */

@@ -78,7 +78,8 @@ namespace rtl
 
     enum class PcdDataKind { Ascii, Binary, BinaryCompressed };
 
-    //! One FIELDS entry. A field named "_" is padding: it takes bytes in binary data and no value in ascii data.
+    //! One FIELDS entry. A field named "_" is padding: its bytes in binary records and its values in ascii lines are
+    //! skipped, and binary_compressed data has no column for it (as PCL's PCDReader reads such files).
     struct PcdField
     {
         std::string name;
