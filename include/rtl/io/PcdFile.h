@@ -41,7 +41,8 @@ namespace rtl
         //! those found). x, y, z are always read.
         std::vector<std::string> fields{"intensity", "ring"};
         //! false: bad data throws PcdError. true: bad data ends the reading; the cloud holds every point read before
-        //! the faulty one (points.size() < width * height) and `error` holds the message. Header errors always throw.
+        //! the faulty one (fewer than width * height, unless the fault came after them: an extra ascii line), `error`
+        //! holds the message and complete() is false. Header errors always throw.
         bool keep_partial = false;
     };
 
