@@ -16,6 +16,7 @@ import { readersApi } from './readers.js';
 import { simplifyApi } from './simplify.js';
 
 export { palette, unlabelledColour } from './palette.js';
+export { defaults } from './defaults.js';
 
 /** The package's version, written in by wasm/build.mjs. */
 const VERSION = '__RTL_VERSION__';

@@ -33,6 +33,15 @@ export { init };
 export const palette: readonly string[];
 /** The colour of points without a cluster (label -1) in the package's drawings. */
 export const unlabelledColour: string;
+/** The defaults of the options of segment(), new StreamSegmenter() and vectorize() (frozen), for tools that show or
+ *  pass them on. */
+export const defaults: Defaults;
+export interface Defaults {
+  readonly segment: Readonly<Required<Pick<SegmentOptions, 'step' | 'lowerBound' | 'upperBound'>>>;
+  readonly streamSegmenter: Readonly<Required<Pick<StreamSegmenterOptions, 'step' | 'lowerBound' | 'upperBound' | 'scaling'>>>;
+  readonly vectorize: Readonly<Required<Pick<VectorizeOptions, 'sigma' | 'delta' | 'epsilon' | 'maxSize' | 'simplexShift' |
+    'maxIterations' | 'split'>>>;
+}
 
 // ---------------------------------------------------------------------------------------------- line fit (TLS)
 export interface LineFitOptions { /** 2 (default) or 3 */ dim?: Dim }

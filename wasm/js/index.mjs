@@ -3,7 +3,7 @@
 import createRtlModule from './rtl.mjs';
 import { start } from './api.mjs';
 
-export { palette, unlabelledColour } from './api.mjs';
+export { defaults, palette, unlabelledColour } from './api.mjs';
 
 export async function init(options) {
   return start(createRtlModule, options);

@@ -1,6 +1,7 @@
 // segment(): CAR segmentation of one scan (rtl::CAR_Segmenter, wasm/src/segment.cpp); argument checks and the
 // result's typed arrays only.
 import { boolOption, boundsOptions, dimOption, num, options, originOption, toF64 } from './checks.js';
+import { defaults } from './defaults.js';
 import { partViews, traceEvents } from './views.js';
 
 // The array types of m.segment's ResultBlock, in the order of wasm/src/segment.cpp.
@@ -32,8 +33,9 @@ export function segmentApi({ m, withInput, takeResults, setComputeMs }) {
     const trace = boolOption(o, 'trace', fn, false);
     const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (takeResults)
     // Default 2: CAR compares each point with up to step - 1 previous points, so 2 links consecutive points.
-    const step = num(o, 'step', fn, 2, { min: 1, integer: true, max: 2 ** 31 });
-    const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
+    const d = defaults.segment;
+    const step = num(o, 'step', fn, d.step, { min: 1, integer: true, max: 2 ** 31 });
+    const [lower, upper] = boundsOptions(o, fn, d.lowerBound, d.upperBound);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
     const res = takeResults(withInput(fn, xyz, (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1],

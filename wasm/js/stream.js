@@ -1,6 +1,7 @@
 // StreamSegmenter: incremental (IA) segmentation of a stream of points (wasm/src/stream.cpp), a stateful object
 // that owns a C++ segmenter behind an integer handle.
 import { boolOption, boundsOptions, check, dimOption, num, options, originOption, toF64 } from './checks.js';
+import { defaults } from './defaults.js';
 import { CppObject, HANDLE } from './owned.js';
 import { partViews, traceEvents } from './views.js';
 
@@ -18,9 +19,10 @@ export function streamApi({ m, withHeap, registry }) {
       const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'scaling', 'trace']);
       const dim = dimOption(o, fn);
       const traced = boolOption(o, 'trace', fn, false);
-      const step = num(o, 'step', fn, 3, { min: 1, integer: true, max: 1 << 24 });
-      const [lower, upper] = boundsOptions(o, fn, 0.1, 0.5);
-      const scaling = num(o, 'scaling', fn, 0.05, { min: 0 });
+      const d = defaults.streamSegmenter;
+      const step = num(o, 'step', fn, d.step, { min: 1, integer: true, max: 1 << 24 });
+      const [lower, upper] = boundsOptions(o, fn, d.lowerBound, d.upperBound);
+      const scaling = num(o, 'scaling', fn, d.scaling, { min: 0 });
       super(check(m.streamCreate(dim, step, lower, upper, scaling, traced), fn), (h) => m.streamDestroy(h), registry,
         fn, 'segmenter');
       this.#dim = dim;

@@ -1,6 +1,7 @@
 // vectorize(): the vectorization methods of the C++ core (FTLS, AFTLS, ITLS, Douglas-Peucker, Reumann-Witkam;
 // wasm/src/vectorize.cpp); argument checks, the result's typed arrays and the failure's message only.
 import { MAX_MEMORY, boolOption, describe, dimOption, num, options, toF64 } from './checks.js';
+import { defaults } from './defaults.js';
 import { traceEvents } from './views.js';
 
 const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
@@ -50,16 +51,17 @@ export function vectorizeApi({ m, withInput, takeResults, setComputeMs }) {
     if (primitive !== 'line' && primitive !== 'plane') throw new RangeError(`${fn}: option primitive must be 'line' or 'plane', got ${describe(primitive)}`);
     if (primitive === 'plane' && (dim !== 3 || method !== 'aftls'))
       throw new RangeError(`${fn}: primitive 'plane' needs dim 3 and method 'aftls'`);
-    const sigma = num(o, 'sigma', fn, 0.03, { min: 0, exclusiveMin: true });
-    const delta = num(o, 'delta', fn, 0.3, { min: 0, exclusiveMin: true });
-    const epsilon = num(o, 'epsilon', fn, 0.09, { min: 0, exclusiveMin: true });
+    const d = defaults.vectorize;
+    const sigma = num(o, 'sigma', fn, d.sigma, { min: 0, exclusiveMin: true });
+    const delta = num(o, 'delta', fn, d.delta, { min: 0, exclusiveMin: true });
+    const epsilon = num(o, 'epsilon', fn, d.epsilon, { min: 0, exclusiveMin: true });
     // maxSize is a reservation hint: 2 GB of wasm memory (the module's maximum) cannot hold more points than this.
-    const maxSize = num(o, 'maxSize', fn, 0, { min: 0, integer: true, max: Math.floor(MAX_MEMORY / (8 * dim)) });
-    const simplexShift = num(o, 'simplexShift', fn, 1, { min: 1, integer: true, max: 2 ** 32 - 1 });
-    const maxIterations = num(o, 'maxIterations', fn, 10000, { min: 1, integer: true, max: 2 ** 32 - 1 });
+    const maxSize = num(o, 'maxSize', fn, d.maxSize, { min: 0, integer: true, max: Math.floor(MAX_MEMORY / (8 * dim)) });
+    const simplexShift = num(o, 'simplexShift', fn, d.simplexShift, { min: 1, integer: true, max: 2 ** 32 - 1 });
+    const maxIterations = num(o, 'maxIterations', fn, d.maxIterations, { min: 1, integer: true, max: 2 ** 32 - 1 });
     // split (FTLS/AFTLS 2D): break the polyline where a corner cannot be met within delta (default), or RTL's
     // strict behaviour (false: no result then, and `failure` says why).
-    const split = boolOption(o, 'split', fn, true);
+    const split = boolOption(o, 'split', fn, d.split);
     const trace = boolOption(o, 'trace', fn, false);
     const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (takeResults)
     if (trace && dim === 3 && (method === 'ftls' || method === 'aftls'))
