@@ -15,7 +15,7 @@
 
 #include "rtl/io/LaTeXDoc.h"
 #include "rtl/io/LaTeXTikz2D.h"
-#include "rtl/io/ScanDrawing.h"
+#include "../../wasm/src/scan_drawing.h"
 #include "pdflatex_run.h"
 
 namespace fs = std::filesystem;
@@ -60,7 +60,7 @@ namespace
             if (i % 60 == 59)
                 segments.insert(segments.end(), {xy[2 * (i - 59)], xy[2 * (i - 59) + 1], xy[2 * i], xy[2 * i + 1]});
         }
-        rtl::drawScan(d, xy.data(), n, labels.data(), segments.data(), segments.size() / 4,
+        rtl_ops::drawScan(d, xy.data(), n, labels.data(), segments.data(), segments.size() / 4,
                       "scan of " + std::to_string(n) + " points");
     }
     std::vector<Vector2f> spiral(size_t n)

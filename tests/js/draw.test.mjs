@@ -1,4 +1,4 @@
-// toSvg, toTikz (2D and 3D) and toLatexTable: the C++ core draws and writes (rtl/io/ScanDrawing.h, Drawing2D,
+// toSvg, toTikz (2D and 3D) and toLatexTable: the C++ core draws and writes (wasm/src/scan_drawing.h, Drawing2D,
 // Svg2D, LaTeXTikz3D, LaTeXTable); the package's output is byte-identical to the native library's on real scans
 // (tests/tools/draw_scan.cpp in $RTL_NATIVE_BUILD_DIR/tools); structure, numbers, escaping, errors, no leaks;
 // the TikZ documents compile with pdflatex.
@@ -9,7 +9,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'no
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import init from 'rtl-wasm';
+import init, { palette, unlabelledColour } from 'rtl-wasm';
 import { near, throwsWith } from './helpers.mjs';
 
 const rtl = await init();
@@ -271,4 +271,22 @@ test('drawings leave the wasm heap, memory and stack as they were (calls and fai
   assert.equal(rtl.heapInUse(), heap, 'malloc heap in use');
   assert.equal(rtl.memoryBytes(), mem, 'linear memory size');
   assert.equal(rtl.stackPointer(), sp, 'stack pointer');
+});
+
+// The package's palette export is the one its drawings use (the C++ side that draws holds the same list): TikZ
+// defines the colours in the order it first meets them, unlabelled points first, then clusters 0, 1, ...; cluster 10
+// wraps around to palette[0] (SVG: the mark of its point has palette[0]'s colour).
+test('palette / unlabelledColour: the colours toTikz and toSvg draw clusters and unlabelled points in', () => {
+  assert.equal(palette.length, 10);
+  assert.ok(Object.isFrozen(palette));
+  for (const c of [...palette, unlabelledColour]) assert.match(c, /^#[0-9A-F]{6}$/);
+  const points = [], labels = [];
+  for (let k = -1; k <= 10; k++) { points.push(k, k * k); labels.push(k); }
+  const tikz = rtl.toTikz({ points, labels });
+  const defined = [...tikz.matchAll(/\\definecolor\{\w+\}\{HTML\}\{([0-9A-F]{6})\}/g)].map((m) => `#${m[1]}`);
+  assert.deepEqual(defined, [unlabelledColour, ...palette]);
+  const svg = rtl.toSvg({ points, labels });
+  const markColour = new Map([...svg.matchAll(/<g id="(\w+)"><circle [^>]*fill="(#[0-9a-f]{6})"/g)].map((m) => [m[1], m[2]]));
+  const used = [...svg.matchAll(/<use href="#(\w+)"/g)].map((m) => markColour.get(m[1]).toUpperCase());
+  assert.deepEqual(used, [unlabelledColour, ...palette, palette[0]], 'one mark per point, in label order -1..10');
 });

@@ -7,6 +7,10 @@ test('CJS: require() gives init (also as .init and .default); fitLine and errors
   assert.equal(typeof init, 'function');
   assert.equal(init.init, init);
   assert.equal(init.default, init);
+  const esm = await import('rtl-wasm');  // the drawings' colours: the same constants as the ES module's
+  assert.deepEqual([...init.palette, init.unlabelledColour], [...esm.palette, esm.unlabelledColour]);
+  assert.deepEqual(init.defaults, esm.defaults);
+  assert.equal(init.palette.length, 10);
   assert.match(require.resolve('rtl-wasm'), /dist[\\/]index\.cjs$/);
   const rtl = await init();
   assert.equal(rtl.version, require('../../package.json').version);

@@ -23,6 +23,13 @@ test('tsc --noEmit on tests/ts-consumer passes (ESM and CommonJS, strict, nodene
   runTsc(['-p', 'tests/ts-consumer']);
 });
 
+// The package's own sources (wasm/js, ES modules bundled by wasm/build.mjs) against the declarations it ships: the
+// instance API assembled in api.js must be an RTL of index.d.ts (segment, vectorize and simplify with its overloads),
+// and every module must import each name it uses (an unresolved name fails the check).
+test('tsc -p wasm/js: the package\'s ES modules type-check against index.d.ts (checkJs)', { timeout: 120_000 }, () => {
+  runTsc(['-p', 'wasm/js']);
+});
+
 test('the CommonJS consumer compiled by tsc runs: import init = require(...); init()', { timeout: 120_000 }, () => {
   // Inside the repository, so that require('rtl-wasm') resolves to this package (self-reference).
   const out = join(ROOT, 'build', 'wasm', 'ts-consumer-run');

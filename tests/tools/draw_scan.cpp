@@ -1,4 +1,4 @@
-// Native twin of the package's toTikz/toSvg: draws the given scan with rtl/io/ScanDrawing.h and the library's
+// Native twin of the package's toTikz/toSvg: draws the given scan with wasm/src/scan_drawing.h and the library's
 // writers and prints the document, so that tests/js/draw-native.test.mjs can check that the package's output is
 // the C++ library's byte for byte.
 //
@@ -8,7 +8,7 @@
 // .f64: little-endian doubles (labels and counts too, as the package passes them); '-': none.
 #include <rtl/io/Drawing2D.h>
 #include <rtl/io/LaTeXTikz3D.h>
-#include <rtl/io/ScanDrawing.h>
+#include "../../wasm/src/scan_drawing.h"
 #include <rtl/io/Svg2D.h>
 #include <rtl/io/Tikz2DWriter.h>
 
@@ -48,12 +48,12 @@ int run(int argc, char** argv) {
   if ((mode == "tikz" || mode == "tikz-bare" || mode == "svg") && argc == 9) {
     const auto xy = readDoubles(argv[2]), segs = readDoubles(argv[4]);
     const auto labels = as<int>(readDoubles(argv[3]));
-    rtl::ScanDrawingOptions o;
+    rtl_ops::ScanDrawingOptions o;
     o.width = std::stof(argv[6]);
     o.height = std::stof(argv[7]);
     o.mark_radius = std::stof(argv[8]);
     rtl::Drawing2D d;
-    rtl::drawScan(d, xy.data(), xy.size() / 2, labels.empty() ? nullptr : labels.data(), segs.data(), segs.size() / 4,
+    rtl_ops::drawScan(d, xy.data(), xy.size() / 2, labels.empty() ? nullptr : labels.data(), segs.data(), segs.size() / 4,
                   readFile(argv[5]), o);
     if (mode == "svg")
       rtl::writeSvg(d, std::cout);
@@ -68,14 +68,14 @@ int run(int argc, char** argv) {
                polygons = readDoubles(argv[7]);
     const auto labels = as<int>(readDoubles(argv[3]));
     const auto planeCounts = as<std::size_t>(readDoubles(argv[6])), polygonCounts = as<std::size_t>(readDoubles(argv[8]));
-    rtl::ScanDrawingOptions o;
+    rtl_ops::ScanDrawingOptions o;
     o.width = std::stof(argv[13]);
     o.height = std::stof(argv[14]);
     o.mark_radius = std::stof(argv[15]);
     rtl::LaTeXTikz3D d;
     const float fov = std::stof(argv[9]);
     if (!std::isnan(fov)) d.setView(fov, rtl::Vector3f(std::stof(argv[10]), std::stof(argv[11]), std::stof(argv[12])));
-    rtl::drawScene3D(d, xyz.data(), xyz.size() / 3, labels.empty() ? nullptr : labels.data(), segs.data(),
+    rtl_ops::drawScene3D(d, xyz.data(), xyz.size() / 3, labels.empty() ? nullptr : labels.data(), segs.data(),
                      segs.size() / 6, planes.data(), planeCounts.data(), planeCounts.size(), polygons.data(),
                      polygonCounts.data(), polygonCounts.size(), o);
     d.writeTEX(std::cout);

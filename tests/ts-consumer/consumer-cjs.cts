@@ -10,6 +10,9 @@ async function main(): Promise<{ rms: number; count: number; same: boolean; vers
   const viaNamed: init.RTL = await init.init({});
   const fit: init.LineFit2D = rtl.fitLine([0, 0, 1, 1, 2, 2.02]);
   const v: VectorizeResult = rtl.vectorize([0, 0, 1, 0, 2, 0, 3, 0], { method: 'dp', epsilon: 0.1 });
+  const colours: readonly string[] = init.palette;
+  const gray: string = init.unlabelledColour + colours.length + init.defaults.vectorize.sigma;
+  void gray;
   const tree: init.TfTree = new rtl.TfTree('map');
   tree.dispose();
   // @ts-expect-error: method is required

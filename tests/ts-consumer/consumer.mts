@@ -1,6 +1,6 @@
 // A TypeScript consumer of the package's hand-written index.d.ts, checked with `tsc --noEmit` (tests/js/types.test.mjs).
 // It uses every export the way the README shows; the @ts-expect-error lines check that misuse does not type-check.
-import init, { init as namedInit } from 'rtl-wasm';
+import init, { init as namedInit, defaults, palette, unlabelledColour } from 'rtl-wasm';
 import type {
   RTL, LineFit2D, LineFit3D, SegmentResult, VectorizeResult, CarmenScan, OrganizedCloud, Drawing, RigidTransform,
   StreamSegmenter, TfTree,
@@ -9,6 +9,13 @@ import type {
 const rtl: RTL = await init();
 const other: RTL = await namedInit({ wasmBinary: new Uint8Array(8) });
 const version: string = rtl.version + other.version;
+// The drawings' colours, for pages that show clusters alike: read-only.
+const clusterColour: string = palette[3 % palette.length]! + unlabelledColour;
+const sigma: number = defaults.vectorize.sigma + defaults.segment.step;
+// @ts-expect-error: the defaults are read-only
+void (() => { defaults.segment.step = 3; });
+// @ts-expect-error: the palette is read-only
+void (() => { palette[0] = '#000000'; });
 
 const xy = new Float64Array([0, 0, 1, 1, 2, 2]);
 const f2: LineFit2D = rtl.fitLine(xy);
@@ -69,7 +76,7 @@ rtl.readOrganizedLidar(new ArrayBuffer(16), {});
 // @ts-expect-error: a 3D fit has no normal
 rtl.fitLine(xy, { dim: 3 }).normal;
 
-export { version, nx, firstLabel, ranges, polys, ok, svg, tex, pose, ring, intensity, m, diagnostics };
+export { version, clusterColour, sigma, nx, firstLabel, ranges, polys, ok, svg, tex, pose, ring, intensity, m, diagnostics };
 
 // Traces: discriminated unions narrow on kind.
 const traced = rtl.segment(xy, { trace: true });

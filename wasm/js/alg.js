@@ -1,9 +1,10 @@
 // assign (Munkres / Hungarian assignment) and KalmanFilter: argument checks and typed arrays only; the algorithms
 // are the C++ core's (rtl/alg/munkres/Assignment.h, rtl/alg/kalman/KalmanX.h via wasm/src/alg.cpp).
-// wasm/build.mjs inlines this file into api.mjs / api.cjs: it uses api.js's argument helpers (describe, toF64,
-// options, num, boolOption, check, DISPOSE) and is called from wrap() as algorithmsApi(m, withHeap, registry).
+import { boolOption, check, num, options, toF64 } from './checks.js';
+import { CppObject, HANDLE } from './owned.js';
 
-function algorithmsApi(m, withHeap, registry) {
+/** assign and the KalmanFilter class of one module instance: ctx = {m, withHeap, registry} (api.js; see owned.js). */
+export function algorithmsApi({ m, withHeap, registry }) {
   // A cost matrix as [row-major Float64Array, rows, cols]: an array of equal-length rows (rows/cols inferred,
   // given ones must agree), or a flat array / typed array with options rows and cols.
   function costMatrix(costs, o, fn) {
@@ -53,35 +54,30 @@ function algorithmsApi(m, withHeap, registry) {
     return withHeap(fn, [flat], (p, n) => m.assign(p, n, rows, cols, maximize));
   }
 
-  class KalmanFilter {
-    #h = 0;
+  class KalmanFilter extends CppObject {
     #n; #m; #c;
     constructor(opts) {
       const fn = 'KalmanFilter';
       if (opts === undefined) throw new TypeError(`${fn}: options {stateDim, measurementDim} are required`);
       const o = options(opts, fn, ['stateDim', 'measurementDim', 'controlDim', 'processNoise', 'observationNoise']);
       for (const k of ['stateDim', 'measurementDim']) if (o[k] === undefined) throw new TypeError(`${fn}: option ${k} is required`);
-      this.#n = num(o, 'stateDim', fn, 0, { min: 1, integer: true, max: 4096 });
-      this.#m = num(o, 'measurementDim', fn, 0, { min: 1, integer: true, max: 4096 });
-      this.#c = num(o, 'controlDim', fn, 0, { min: 0, integer: true, max: 4096 });
+      const n = num(o, 'stateDim', fn, 0, { min: 1, integer: true, max: 4096 });
+      const md = num(o, 'measurementDim', fn, 0, { min: 1, integer: true, max: 4096 });
+      const c = num(o, 'controlDim', fn, 0, { min: 0, integer: true, max: 4096 });
       const q = num(o, 'processNoise', fn, 1);
       const r = num(o, 'observationNoise', fn, 1);
-      const h = check(m.kalmanCreate(this.#n, this.#m, this.#c, q, r), fn);
-      this.#h = h;
-      registry?.register(this, () => m.kalmanDestroy(h), this);
-    }
-    #handle(fn) {
-      if (this.#h === 0) throw new TypeError(`KalmanFilter.${fn}: the filter was disposed`);
-      return this.#h;
+      super(check(m.kalmanCreate(n, md, c, q, r), fn), (h) => m.kalmanDestroy(h), registry, fn, 'filter');
+      this.#n = n;
+      this.#m = md;
+      this.#c = c;
     }
     get stateDim() { return this.#n; }
     get measurementDim() { return this.#m; }
     get controlDim() { return this.#c; }
-    get disposed() { return this.#h === 0; }
     // Row-major values of matrix `which` (0 x, 1 A, 2 B, 3 P, 4 H, 5 Q, 6 R; see wasm/src/alg.cpp), rows x cols, finite.
     #set(method, which, rows, cols, v) {
       const fn = `KalmanFilter.${method}`;
-      const h = this.#handle(method);
+      const h = this[HANDLE](method);
       const a = toF64(v, fn, 'values');
       if (a.length !== rows * cols)
         throw new RangeError(`${fn}: expected ${rows * cols} numbers (${rows} x ${cols}${cols > 1 ? ', row-major' : ''}), got ${a.length}`);
@@ -104,27 +100,20 @@ function algorithmsApi(m, withHeap, registry) {
     // x = A x + B u, P = A P A^T + Q; the control u defaults to zeros.
     predict(control) {
       const fn = 'KalmanFilter.predict';
-      const h = this.#handle('predict');
+      const h = this[HANDLE]('predict');
       const u = control === undefined ? new Float64Array(this.#c) : this.#vector(fn, control, this.#c, 'control');
       withHeap(fn, [u], (p, n) => m.kalmanPredict(h, p, n));
     }
     // The correction with measurement z through H and R (Joseph form).
     correct(measurement) {
       const fn = 'KalmanFilter.correct';
-      const h = this.#handle('correct');
+      const h = this[HANDLE]('correct');
       if (measurement === undefined) throw new TypeError(`${fn}: measurement is required`);
       const z = this.#vector(fn, measurement, this.#m, 'measurement');
       withHeap(fn, [z], (p, n) => m.kalmanCorrect(h, p, n));
     }
-    state() { return m.kalmanState(this.#handle('state')); }
-    covariance() { return m.kalmanCovariance(this.#handle('covariance')); }
-    dispose() {
-      if (this.#h === 0) return;
-      registry?.unregister(this);
-      m.kalmanDestroy(this.#h);
-      this.#h = 0;
-    }
-    [DISPOSE]() { this.dispose(); }
+    state() { return m.kalmanState(this[HANDLE]('state')); }
+    covariance() { return m.kalmanCovariance(this[HANDLE]('covariance')); }
   }
   return { assign, KalmanFilter };
 }

@@ -1,13 +1,13 @@
 // toTikz, toSvg, toLatexTable: argument checks and typed arrays only. The pictures are drawn by the C++ core
-// (rtl/io/ScanDrawing.h: palette, point marks, segments, title; wasm/src/draw*.cpp) and written by the library's
-// TikZ/SVG/table writers, so the package's output is the C++ library's byte for byte.
-// wasm/build.mjs inlines this file into api.mjs / api.cjs: it uses api.js's argument helpers (describe, toF64,
-// options, num, boolOption, check) and is called from wrap() as drawingApi(m, withHeap).
+// (the package's scan drawing: palette, point marks, segments, title; wasm/src/draw*.cpp) and written by the
+// library's TikZ/SVG/table writers, so the package's output is the C++ library's byte for byte.
+import { boolOption, check, describe, num, options, toF64 } from './checks.js';
 
 const DRAWING_2D = ['dim', 'points', 'labels', 'segments', 'title', 'standalone'];
 const DRAWING_3D = ['dim', 'points', 'labels', 'segments', 'planes', 'polygons', 'standalone'];
 
-function drawingApi(m, withHeap) {
+/** toTikz, toSvg and toLatexTable of one module instance: ctx = {m, withHeap} (api.js). */
+export function drawingApi({ m, withHeap }) {
   // Points (NaN = gap, never drawn), labels (integers >= -1) and segments of a 2D or 3D drawing.
   function checkDrawing(d, fn) {
     if (d === null || typeof d !== 'object' || Array.isArray(d) || ArrayBuffer.isView(d))
@@ -29,7 +29,7 @@ function drawingApi(m, withHeap) {
         throw new RangeError(`${fn}: drawing.points[${i}] is ${xy[i]} (only finite numbers, or NaN for a gap)`);
     }
     const n = xy.length / dim;
-    let labels = new Float64Array(0);
+    let labels = /** @type {Float64Array} */ (new Float64Array(0));
     if (d.labels !== undefined) {
       labels = toF64(d.labels, fn, 'drawing.labels');
       if (labels.length !== n) throw new RangeError(`${fn}: drawing.labels has ${labels.length} entries for ${n} points`);

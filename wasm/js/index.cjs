@@ -4,7 +4,7 @@
 const { readFile } = require('node:fs/promises');
 const { join } = require('node:path');
 const createRtlModule = require('./rtl.cjs');
-const { start } = require('./api.cjs');
+const { start, defaults, palette, unlabelledColour } = require('./api.cjs');
 
 async function init(options) {
   return start(createRtlModule, options, () => readFile(join(__dirname, 'rtl.wasm')));
@@ -12,3 +12,6 @@ async function init(options) {
 module.exports = init;
 module.exports.init = init;
 module.exports.default = init;
+module.exports.defaults = defaults;
+module.exports.palette = palette;
+module.exports.unlabelledColour = unlabelledColour;

@@ -28,6 +28,21 @@ export interface InitOptions {
 export default function init(options?: InitOptions): Promise<RTL>;
 export { init };
 
+/** The colours of the package's drawings (toSvg, toTikz; CSS hex): cluster k is drawn in palette[k % 10], for pages
+ *  that show clusters in the same colours. */
+export const palette: readonly string[];
+/** The colour of points without a cluster (label -1) in the package's drawings. */
+export const unlabelledColour: string;
+/** The defaults of the options of segment(), new StreamSegmenter() and vectorize() (frozen), for tools that show or
+ *  pass them on. */
+export const defaults: Defaults;
+export interface Defaults {
+  readonly segment: Readonly<Required<Pick<SegmentOptions, 'step' | 'lowerBound' | 'upperBound'>>>;
+  readonly streamSegmenter: Readonly<Required<Pick<StreamSegmenterOptions, 'step' | 'lowerBound' | 'upperBound' | 'scaling'>>>;
+  readonly vectorize: Readonly<Required<Pick<VectorizeOptions, 'sigma' | 'delta' | 'epsilon' | 'maxSize' | 'simplexShift' |
+    'maxIterations' | 'split'>>>;
+}
+
 // ---------------------------------------------------------------------------------------------- line fit (TLS)
 export interface LineFitOptions { /** 2 (default) or 3 */ dim?: Dim }
 export interface LineFit2D {
@@ -335,10 +350,9 @@ export interface Drawing {
   dim?: 2;
   /** 2D points (x,y interleaved); NaN points (gaps) are not drawn */
   points?: PointArray;
-  /** cluster label per point (integer, -1 = no cluster): cluster k gets colour k % 10 of the Okabe-Ito based
-   *  palette of the demo page (#0072B2, #E69F00, #009E73, #D55E00, #CC79A7, #56B4E9, #8C6D1F, #1B7837, #762A83,
-   *  #332288), unlabelled points gray #808080; the same colours in SVG and TikZ (C++: rtl::scan_palette in
-   *  rtl/io/ScanDrawing.h, which draws the picture for both) */
+  /** cluster label per point (integer, -1 = no cluster): cluster k gets colour palette[k % 10] of the package's
+   *  `palette` export (the Okabe-Ito based #0072B2, #E69F00, #009E73, #D55E00, #CC79A7, #56B4E9, #8C6D1F, #1B7837,
+   *  #762A83, #332288), unlabelled points `unlabelledColour` (gray #808080); the same colours in SVG and TikZ */
   labels?: ArrayLike<number>;
   /** line segments x1,y1,x2,y2,... (finite) */
   segments?: PointArray;
@@ -366,7 +380,7 @@ export interface Drawing3D {
   polygons?: Faces;
   standalone?: boolean;
 }
-/** TikZ written by the C++ library (rtl/io/ScanDrawing.h through rtl::LaTeXTikz2D; 3D: rtl::LaTeXTikz3D): minimal
+/** TikZ written by the C++ library (wasm/src/scan_drawing.h through rtl::LaTeXTikz2D; 3D: rtl::LaTeXTikz3D): minimal
  *  document + preview, StyleX/ColorX/MarkX names, the picture in data units with unit vectors x=..cm, y=..cm (no
  *  TeX dimension overflow for large coordinates); one uniform scale so that scans keep their shape. pdflatex's
  *  default memory holds about 15,000 marks: larger drawings are written in full; compile them with lualatex or pass
@@ -394,7 +408,7 @@ export interface LatexTableOptions {
   /** tabular column specification (rtl::LaTeXTable::setColumnStyle, e.g. "l|r"); default one "c" per column */
   columns?: string;
 }
-/** SVG written by the C++ library (rtl/io/ScanDrawing.h through rtl::writeSvg: the same drawing as toTikz's): an XML
+/** SVG written by the C++ library (wasm/src/scan_drawing.h through rtl::writeSvg: the same drawing as toTikz's): an XML
  *  document whose width/height and viewBox are in cm, y axis up, points as <use> of one mark per cluster colour. */
 export interface SvgOptions {
   /** CSS pixels, 96 per inch (default 800 x 800): the data range is fitted inside with one scale (aspect kept), the

@@ -3,6 +3,8 @@
 import createRtlModule from './rtl.mjs';
 import { start } from './api.mjs';
 
+export { defaults, palette, unlabelledColour } from './api.mjs';
+
 export async function init(options) {
   return start(createRtlModule, options);
 }

@@ -3,6 +3,8 @@ import { readFile } from 'node:fs/promises';
 import createRtlModule from './rtl.mjs';
 import { start } from './api.mjs';
 
+export { defaults, palette, unlabelledColour } from './api.mjs';
+
 export async function init(options) {
   return start(createRtlModule, options, () => readFile(new URL('./rtl.wasm', import.meta.url)));
 }

@@ -1,12 +1,15 @@
 // simplify(): a drop-in for simplify-js's simplify(points, tolerance, highQuality). The algorithm is the C++
 // core's (rtl/vect/SimplifyCompatible.h: simplify-js's radial pre-pass unless highQuality, then its
 // segment-distance Douglas-Peucker), so the kept points are the ones simplify-js keeps; this layer only reads the
-// {x, y} objects into wasm memory and picks the kept ones out. wasm/build.mjs puts it in front of api.js (same
-// scope: describe, options, isNumericView, toF64 and check come from there), so no imports or exports here.
+// {x, y} objects into wasm memory and picks the kept ones out.
+import { describe, isNumericView, options, toF64 } from './checks.js';
 
-// withInputOf(fn, len, fill, f): api.js's writer into the module's kept input buffer; setComputeMs records the
-// library's own time of the call (lastComputeMs); takeResults copies a binding's ResultBlock out (api.js).
-function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
+/**
+ * simplify() of one module instance: ctx = {m, withInputOf, setComputeMs, takeResults} (api.js; withInputOf writes
+ * into the module's kept input buffer, setComputeMs records the library's own time of the call, takeResults copies
+ * a binding's result block out).
+ */
+export function simplifyApi({ m, withInputOf, setComputeMs, takeResults }) {
   const fn = 'simplify';
 
   function kept(len, dim, fill, tolerance, highQuality, src) {
@@ -66,6 +69,30 @@ function makeSimplify(m, withInputOf, setComputeMs, takeResults) {
   }
   const fillObjects = (points, dim) => (dim === 2 ? (heap, at) => copyXY(points, heap, at) : (heap, at) => copyXYZ(points, heap, at));
 
+  /**
+   * @template {import('./index.js').SimplifyPoint} P
+   * @overload
+   * @param {P[]} points
+   * @param {number} [tolerance]
+   * @param {boolean} [highQuality]
+   * @param {{ dim?: import('./index.js').Dim }} [opts]
+   * @returns {P[]}
+   */
+  /**
+   * @overload
+   * @param {Float64Array | Float32Array} points
+   * @param {number} [tolerance]
+   * @param {boolean} [highQuality]
+   * @param {{ dim?: import('./index.js').Dim }} [opts]
+   * @returns {Float64Array}
+   */
+  /**
+   * @param {import('./index.js').SimplifyPoint[] | Float64Array | Float32Array} points
+   * @param {number} [tolerance]
+   * @param {boolean} [highQuality]
+   * @param {{ dim?: import('./index.js').Dim }} [opts]
+   * @returns {import('./index.js').SimplifyPoint[] | Float64Array}
+   */
   function simplify(points, tolerance, highQuality, opts) {
     const t = tolerance === undefined ? 1 : tolerance;  // simplify-js's default
     if (typeof t !== 'number') throw new TypeError(`${fn}: tolerance must be a number, got ${describe(t)}`);

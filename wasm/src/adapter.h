@@ -11,6 +11,8 @@
 //    fills or frees it: documented in wasm/js/index.d.ts).
 #pragma once
 
+#include "opaque.h"  // first: it configures rtl/vect/SimplifyCompatible.h
+
 #include <emscripten/bind.h>
 #include <emscripten/emscripten.h>
 #include <emscripten/val.h>

@@ -1,15 +1,15 @@
 // The package's drawings, written by the C++ library so that its output is the library's byte for byte:
-//   toTikz / toSvg (2D): rtl/io/ScanDrawing.h's scan picture (points by cluster, segments, title) drawn once into an
+//   toTikz / toSvg (2D): scan_drawing.h's scan picture (points by cluster, segments, title) drawn once into an
 //     rtl::Drawing2D and written by the TikZ or the SVG back-end;
-//   toTikz (dim 3): ScanDrawing.h's scene (points, segments, planes, polygons) rendered by rtl::LaTeXTikz3D;
+//   toTikz (dim 3): scan_drawing.h's scene (points, segments, planes, polygons) rendered by rtl::LaTeXTikz3D;
 //   toLatexTable: rows of text cells through rtl::LaTeXTable.
 #include "adapter.h"
+#include "scan_drawing.h"
 
 #include <rtl/io/Drawing2D.h>
 #include <rtl/io/LaTeXTable.h>
 #include <rtl/io/LaTeXTikz3D.h>
 #include <rtl/io/LaTeXUtility.h>
-#include <rtl/io/ScanDrawing.h>
 #include <rtl/io/Svg2D.h>
 #include <rtl/io/Tikz2DWriter.h>
 
@@ -34,12 +34,12 @@ val drawScan2D(std::uintptr_t xy, std::size_t n_xy, std::uintptr_t labels, std::
         throw std::invalid_argument("drawing.labels[" + str(i) + "] must be an integer >= -1");
       lab[i] = static_cast<int>(v);
     }
-    rtl::ScanDrawingOptions o;
+    rtl_ops::ScanDrawingOptions o;
     o.width = static_cast<float>(width);
     o.height = static_cast<float>(height);
     o.mark_radius = static_cast<float>(markRadius);
     rtl::Drawing2D d;
-    rtl::drawScan(d, doubles(xy), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 4, title, o);
+    rtl_ops::drawScan(d, doubles(xy), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 4, title, o);
     // The writers' string forms: no iostream in the package (rtl/io/TextSink.h, wasm/CMakeLists.txt).
     return val(format == 2 ? rtl::svgString(d) : format == 1 ? rtl::tikzPictureString(d) : rtl::tikzString(d));
   }, "drawScan");
@@ -82,7 +82,7 @@ val drawTikz3D(std::uintptr_t xyz, std::size_t n_xyz, std::uintptr_t labels, std
     }
     const auto pc = counts(doubles(plane_counts), n_plane_counts, n_planes / 3, "planes");
     const auto qc = counts(doubles(poly_counts), n_poly_counts, n_polys / 3, "polygons");
-    rtl::ScanDrawingOptions o;
+    rtl_ops::ScanDrawingOptions o;
     o.width = static_cast<float>(width);
     o.height = static_cast<float>(height);
     o.mark_radius = static_cast<float>(markRadius);
@@ -90,7 +90,7 @@ val drawTikz3D(std::uintptr_t xyz, std::size_t n_xyz, std::uintptr_t labels, std
     if (!std::isnan(fov))
       d.setView(static_cast<float>(fov),
                 rtl::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz)));
-    rtl::drawScene3D(d, doubles(xyz), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 6, doubles(planes),
+    rtl_ops::drawScene3D(d, doubles(xyz), n, n_labels ? lab.data() : nullptr, doubles(segs), n_segs / 6, doubles(planes),
                      pc.data(), pc.size(), doubles(polys), qc.data(), qc.size(), o);
     return val(standalone ? d.texString() : d.tikzString());
   }, "drawScene3D");

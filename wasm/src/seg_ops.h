@@ -2,6 +2,8 @@
 // (tests/tools/rtl_native.cpp), so that both run exactly the same C++ on the same numbers. No emscripten here.
 #pragma once
 
+#include "opaque.h"  // first: it configures rtl/vect/SimplifyCompatible.h
+
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
@@ -10,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <rtl/core/Opaque.h>
 #include <rtl/core/VectorND.h>
 #include <rtl/seg/CAR_Segmenter.h>
 #include <rtl/seg/SegTrace.h>
@@ -20,8 +21,6 @@
 #include "trace_ops.h"
 
 namespace rtl_ops {
-
-using rtl::detail::opaque;
 
 struct SegmentParams {
   std::size_t step = 3;
@@ -110,7 +109,7 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   seg.setUpperBound(p.upperBound);
   if constexpr (Observer::enabled) seg.setObserver(observer);
   seg.setMaxSize(n);
-  // a function of its own (rtl/core/Opaque.h): it holds the segmentation's loops, optimized by V8 within a few calls
+  // a function of its own (opaque.h): it holds the segmentation's loops, optimized by V8 within a few calls
   using Segmenter = rtl::CAR_Segmenter<Point, Observer>;
   (seg.*opaque(static_cast<void (Segmenter::*)(const std::vector<Point>&, const Point&)>(&Segmenter::loadData)))(pts, origin);
   collectClusters(seg, n, work.ranges, out);
@@ -121,7 +120,7 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
 // CAR_Segmenter<P, CarTraceLog> are appended to it.
 template <int D>
 SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p, FlatTrace* trace = nullptr) {
-  // each a function of its own (rtl/core/Opaque.h), not inlined into one large binding
+  // each a function of its own (opaque.h), not inlined into one large binding
   if (trace == nullptr) return opaque(&segmentWith<D, rtl::NoTrace>)(xyz, n, p, nullptr);
   rtl::CarTraceLog log;
   SegmentOutput out = opaque(&segmentWith<D, rtl::CarTraceLog>)(xyz, n, p, &log);

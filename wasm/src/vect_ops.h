@@ -2,6 +2,8 @@
 // (tests/tools/rtl_native.cpp): the same C++ on the same numbers. No emscripten here.
 #pragma once
 
+#include "opaque.h"  // first: it configures rtl/vect/SimplifyCompatible.h
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -11,7 +13,6 @@
 #include <vector>
 
 #include <rtl/Vectorization.h>
-#include <rtl/core/Opaque.h>
 #include <rtl/vect/FtlsTrace.h>
 #include <rtl/vect/SimplifyCompatible.h>
 #include <rtl/vect/SimplifyTrace.h>
@@ -187,19 +188,19 @@ void runWith(Run& run, Observer* observer) {
 }  // namespace detail
 
 // Runs run(observer) with an observer of type Log recording into `trace`, or with no observer (NoTrace: the
-// vectorizer types are then exactly RTL's) when trace is nullptr. Each through rtl::detail::opaque
-// (rtl/core/Opaque.h), a wasm function of its own: inlined here, the untraced and the traced AFTLS runs were one
+// vectorizer types are then exactly RTL's) when trace is nullptr. Each through opaque
+// (opaque.h), a wasm function of its own: inlined here, the untraced and the traced AFTLS runs were one
 // function of 18.9 KB that V8 took ~90-130 ms to optimize, so AFTLS ran its first 50-300 calls of 100k points in
 // the baseline tier (Liftoff) at 1.4-1.6x its optimized time.
 template <class Log, class Run>
 void observed(FlatTrace* trace, Run&& run) {
   using R = std::remove_reference_t<Run>;
   if (trace == nullptr) {
-    rtl::detail::opaque(&detail::runWith<rtl::NoTrace, R>)(run, nullptr);
+    opaque(&detail::runWith<rtl::NoTrace, R>)(run, nullptr);
     return;
   }
   Log log;
-  rtl::detail::opaque(&detail::runWith<Log, R>)(run, &log);
+  opaque(&detail::runWith<Log, R>)(run, &log);
   trace->append(log);
 }
 

@@ -25,8 +25,6 @@
 #include <utility>
 #include <vector>
 
-#include "rtl/core/Opaque.h"
-
 #if defined(__GNUC__) && defined(__SSE2__)
 #include <emmintrin.h>
 #elif defined(__GNUC__) && defined(__wasm_simd128__)
@@ -38,19 +36,22 @@
 // in the background. The radial pass alone compiled in 2 ms and ran optimized from its second call; inlined, it ran
 // unoptimized until the whole had compiled (~100 ms, 55-120 calls of 100k points: 0.25 instead of 0.13 ms a call).
 // noinline keeps the compiler from inlining them; Binaryen (wasm-opt, which emcc runs at link) still inlines a
-// function with one caller, so the callers call them through opaque() below.
+// function with one caller, so the callers call them through RTL_SIMPLIFY_PASS_CALL(f): by default f itself; an
+// includer that must keep each pass a function of its own defines it, before including this header, to hide which
+// function f is from the optimizer (e.g. by reading f back through a volatile variable).
 #if defined(__GNUC__)
 #define RTL_SIMPLIFY_NOINLINE __attribute__((noinline))
 #else
 #define RTL_SIMPLIFY_NOINLINE
+#endif
+#ifndef RTL_SIMPLIFY_PASS_CALL
+#define RTL_SIMPLIFY_PASS_CALL(...) (__VA_ARGS__)
 #endif
 
 namespace rtl
 {
     namespace simplify_detail
     {
-        using rtl::detail::opaque;   // the call stays a call (see above)
-
         //! a * b, never fused with a following addition.
         inline double product(double a, double b)
         {
@@ -807,13 +808,13 @@ namespace rtl
             double g = 0;
             if (high_quality)
             {
-                finite = opaque(&copyAll<dim, T>)(xyz, n, axis, g);
+                finite = RTL_SIMPLIFY_PASS_CALL(&copyAll<dim, T>)(xyz, n, axis, g);
                 pts.m = n;
             }
             else
             {
                 from.reset(new std::size_t[n]);
-                std::size_t m = opaque(&radialPass<dim, T>)(xyz, n, sq_tolerance, axis, from.get(), finite);
+                std::size_t m = RTL_SIMPLIFY_PASS_CALL(&radialPass<dim, T>)(xyz, n, sq_tolerance, axis, from.get(), finite);
                 // The last point is appended unless it is the last one kept. (simplify-js compares objects: when
                 // the last object is also the last kept one, at an earlier index, it is not appended; appended, a
                 // copy of the last kept point changes no other decision and the same object comes out.)
@@ -848,7 +849,7 @@ namespace rtl
             }
 #endif
             prepared(pts);
-            std::vector<std::size_t> kept = m <= 2 ? std::vector<std::size_t>{} : opaque(&simplify<dim>)(pts, sq_tolerance);
+            std::vector<std::size_t> kept = m <= 2 ? std::vector<std::size_t>{} : RTL_SIMPLIFY_PASS_CALL(&simplify<dim>)(pts, sq_tolerance);
             if (m <= 2)
                 for (std::size_t i = 0; i < m; ++i)
                     kept.push_back(i);

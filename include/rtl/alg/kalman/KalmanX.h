@@ -1,5 +1,5 @@
-// KalmanX: the Kalman filter of Kalman.h with dimensions chosen at run time (Eigen dynamic matrices), for
-// bindings such as the wasm package. Same defaults, method names and equations (KalmanEquations.h).
+// KalmanX: the Kalman filter of Kalman.h with its dimensions given at run time (Eigen dynamic matrices) instead of as
+// template arguments. Same defaults, method names and equations (KalmanEquations.h).
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,8 @@
-// The rtl-wasm package's picture of a scan (points coloured by cluster, fitted segments, a title), drawn through any
-// 2D drawing with LaTeXTikz2D's calls, so that the package and C++ programs produce the same figure byte for byte.
+// The package's picture of a scan (points coloured by cluster, fitted segments, a title), drawn through any 2D
+// drawing with LaTeXTikz2D's calls (and its 3D counterpart through LaTeXTikz3D's), so that the package's toTikz/toSvg
+// and C++ programs (tests/tools/draw_scan.cpp) produce the same figure byte for byte. No emscripten here.
+// The palette is the package's: wasm/js/palette.js exports the same colours to JavaScript (tests/js/draw.test.mjs
+// checks that the drawings use them).
 #pragma once
 
 #include <algorithm>
@@ -12,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "rtl/Core.h"
+#include <rtl/Core.h>
 
-namespace rtl
+namespace rtl_ops
 {
     //! Cluster k is drawn in scan_palette[k % 10] (HTML hex, no '#'): the Okabe-Ito colour-blind safe set plus darker
-    //! companions, as on the demo page. No pure red: that is kept for fitted lines. Unlabelled points are gray.
+    //! companions. No pure red: that is kept for fitted lines. Unlabelled points are gray.
     inline constexpr std::array<const char *, 10> scan_palette = {"0072B2", "E69F00", "009E73", "D55E00", "CC79A7",
                                                                   "56B4E9", "8C6D1F", "1B7837", "762A83", "332288"};
     inline constexpr const char *scan_unlabelled_color = "808080";
@@ -74,7 +77,7 @@ namespace rtl
             lo_y = std::min(lo_y, y);
             hi_y = std::max(hi_y, y);
         };
-        std::map<int, std::vector<Vector2f>> groups;
+        std::map<int, std::vector<rtl::Vector2f>> groups;
         for (std::size_t i = 0; i < n; ++i)
         {
             auto x = static_cast<float>(xy[2 * i]), y = static_cast<float>(xy[2 * i + 1]);
@@ -83,12 +86,12 @@ namespace rtl
             grow(x, y);
             groups[labels == nullptr ? -1 : labels[i]].emplace_back(x, y);
         }
-        std::vector<LineSegment2f> lines;
+        std::vector<rtl::LineSegment2f> lines;
         for (std::size_t i = 0; i < n_segments; ++i)
         {
             const double *s = segments + 4 * i;
-            Vector2f a(static_cast<float>(s[0]), static_cast<float>(s[1]));
-            Vector2f b(static_cast<float>(s[2]), static_cast<float>(s[3]));
+            rtl::Vector2f a(static_cast<float>(s[0]), static_cast<float>(s[1]));
+            rtl::Vector2f b(static_cast<float>(s[2]), static_cast<float>(s[3]));
             if (!std::isfinite(a.x()) || !std::isfinite(a.y()) || !std::isfinite(b.x()) || !std::isfinite(b.y()))
                 continue;
             grow(a.x(), a.y());
@@ -115,12 +118,12 @@ namespace rtl
             // One plot per point: a plot turns each mark along its neighbours (atan2, whose last digit differs
             // between C libraries); dots need no direction, and so every platform writes the same bytes.
             for (const auto &p : g.second)
-                d.addPlot(std::vector<Vector2f>{p}, "", style, Drawing::latex_mark_dot);
+                d.addPlot(std::vector<rtl::Vector2f>{p}, "", style, Drawing::latex_mark_dot);
         }
         for (const auto &l : lines)
             d.addEdge(l, "draw=black,line width=0.6pt,line cap=round");
         if (!title.empty() && !empty)
-            d.addText(title, "anchor=south", Vector2f((lo_x + hi_x) / 2, hi_y));
+            d.addText(title, "anchor=south", rtl::Vector2f((lo_x + hi_x) / 2, hi_y));
     }
 
     //! The 3D counterpart (LaTeXTikz3D or any class with its setExportSize/saveColor/addMark/addLine/addFace calls;
@@ -154,14 +157,14 @@ namespace rtl
                     throw std::invalid_argument("drawScene3D: label " + std::to_string(i) + " is " +
                                                 std::to_string(labels[i]) + ", expected >= -1");
         auto faces = [](const char *what, const double *v, const std::size_t *counts, std::size_t k) {
-            std::vector<Polygon3Df> out;
+            std::vector<rtl::Polygon3Df> out;
             std::size_t at = 0;
             for (std::size_t f = 0; f < k; ++f)
             {
                 if (counts[f] < 3)
                     throw std::invalid_argument(std::string("drawScene3D: ") + what + " " + std::to_string(f) +
                                                 " has " + std::to_string(counts[f]) + " vertices, at least 3 expected");
-                std::vector<Vector3f> p;
+                std::vector<rtl::Vector3f> p;
                 for (std::size_t i = 0; i < counts[f]; ++i, ++at)
                 {
                     const double *q = v + 3 * at;
@@ -184,7 +187,7 @@ namespace rtl
                 if (!(nrm.norm() > 0))
                     continue;   // all vertices on a line: nothing to paint
                 nrm.normalize();
-                Polygon3Df poly{Vector3f(nrm), nrm.dot(c)};
+                rtl::Polygon3Df poly{rtl::Vector3f(nrm), nrm.dot(c)};
                 for (const auto &q : p)
                     poly.addPointDirect(q);
                 out.push_back(std::move(poly));
@@ -195,7 +198,7 @@ namespace rtl
         const auto polygons = faces("polygon", polygon_vertices, polygon_counts, n_polygons);
 
         d.setExportSize(options.width, options.height);
-        std::map<int, std::vector<Vector3f>> groups;
+        std::map<int, std::vector<rtl::Vector3f>> groups;
         for (std::size_t i = 0; i < n; ++i)
         {
             const double *q = xyz + 3 * i;
@@ -214,8 +217,8 @@ namespace rtl
         for (std::size_t i = 0; i < n_segments; ++i)
         {
             const double *s = segments + 6 * i;
-            d.addLine(LineSegment3f(Vector3f(static_cast<float>(s[0]), static_cast<float>(s[1]), static_cast<float>(s[2])),
-                                    Vector3f(static_cast<float>(s[3]), static_cast<float>(s[4]), static_cast<float>(s[5]))),
+            d.addLine(rtl::LineSegment3f(rtl::Vector3f(static_cast<float>(s[0]), static_cast<float>(s[1]), static_cast<float>(s[2])),
+                                    rtl::Vector3f(static_cast<float>(s[3]), static_cast<float>(s[4]), static_cast<float>(s[5]))),
                       "draw=black,line width=0.6pt,line cap=round");
         }
         for (std::size_t k = 0; k < planes.size(); ++k)

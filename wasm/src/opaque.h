@@ -1,4 +1,4 @@
-// rtl::detail::opaque(f): f (a function or member function pointer) read back through a volatile variable, so that no
+// rtl_ops::opaque(f): f (a function or member function pointer) read back through a volatile variable, so that no
 // optimizer sees which function a call through it reaches, and the call stays a call.
 //
 // Why: V8 runs a wasm function in its baseline compiler (Liftoff) until its optimized code (TurboFan, compiled in
@@ -8,17 +8,22 @@
 // calls; Douglas-Peucker's passes inlined into simplifyIndices: 55-120 calls at twice the optimized time). Called
 // through opaque(), each part stays a function of its own that compiles and tiers up on its own. The cost is one
 // indirect call per use: use it for calls that do a lot of work each.
+//
+// The core's simplify-js compatible passes (rtl/vect/SimplifyCompatible.h) offer RTL_SIMPLIFY_PASS_CALL for this:
+// defined here, so every translation unit of the package that includes this header before any rtl/ header calls
+// them through opaque(). (Included first by adapter.h, seg_ops.h and vect_ops.h.)
 #pragma once
 
-namespace rtl
+namespace rtl_ops
 {
-    namespace detail
+    template<typename F>
+    F opaque(F f)
     {
-        template<typename F>
-        F opaque(F f)
-        {
-            F volatile p = f;
-            return p;
-        }
+        F volatile p = f;
+        return p;
     }
 }
+
+#ifndef RTL_SIMPLIFY_PASS_CALL
+#define RTL_SIMPLIFY_PASS_CALL(...) ::rtl_ops::opaque(__VA_ARGS__)
+#endif
