@@ -3,9 +3,11 @@
 // the scene, so zoom, pan and resize redraw it without the lesson, and export.js turns the same scene into the
 // package's SVG/TikZ (same view, colours and title).
 
-// The package's drawing palette (index.d.ts, Drawing.labels): cluster k gets colour k % 10 on screen and in exports.
-export const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#332288'];
-export const UNLABELLED = '#808080';
+import { palette, unlabelledColour } from 'rtl-wasm';
+
+// The package's drawing palette: cluster k gets palette[k % palette.length] on screen and in the package's exports.
+export const PALETTE = palette;
+export const UNLABELLED = unlabelledColour;
 export const clusterColour = (k) => (k >= 0 ? PALETTE[k % PALETTE.length] : UNLABELLED);
 // Colours of the teaching overlays (not exported in colour: the package's SVG draws every segment black).
 export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2', ok: '#009E73', fail: '#C0392B', muted: '#9aa3af' };

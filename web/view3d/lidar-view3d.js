@@ -3,10 +3,13 @@
 // package (see lidar-scene.js). Coordinates are the sensor frame (x forward, y left, z up, metres).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { palette } from 'rtl-wasm';
 
-// The package's drawing palette (index.d.ts, Drawing.labels): cluster k gets colour k % 10 in every view.
-export const PALETTE = ['#0072B2', '#E69F00', '#009E73', '#D55E00', '#CC79A7', '#56B4E9', '#8C6D1F', '#1B7837', '#762A83', '#332288'];
-const UNLABELLED = '#9aa3af';
+// The package's drawing palette: cluster k gets palette[k % palette.length] in every view.
+export const PALETTE = palette;
+// Points without a cluster: a lighter grey than the package's 2D unlabelled colour, so that in the shaded 3D view
+// the many unclustered returns recede behind the coloured clusters.
+export const UNLABELLED = '#9aa3af';
 const SEGMENT_COLOUR = '#111111';
 const LEVEL_PLANE = '#7fc97f', STEEP_PLANE = '#762A83';
 

@@ -2,7 +2,7 @@
 // (lidar-scene.js) and shows it in the orbitable 3D view (lidar-view3d.js) next to a top view of the same points,
 // with layer toggles and the segmentation / fit parameters, which recompute at once.
 import { computeLidarScene, LIDAR_DEFAULTS } from './lidar-scene.js';
-import { createLidarView3D, PALETTE } from './lidar-view3d.js';
+import { createLidarView3D, PALETTE, UNLABELLED } from './lidar-view3d.js';
 
 export const LIDAR_URL = '/tests/data/rellis3d-os1-16x2048.bin';
 export const LIDAR_BEAMS = 16;
@@ -23,7 +23,7 @@ function drawTopView(canvas, scene, minPoints) {
       const x = ring.points[3 * i], y = ring.points[3 * i + 1];
       if (!Number.isFinite(x)) continue;
       const l = ring.labels[i];
-      ctx.fillStyle = l >= 0 && sizes.get(l) >= minPoints ? PALETTE[l % PALETTE.length] : '#9aa3af';
+      ctx.fillStyle = l >= 0 && sizes.get(l) >= minPoints ? PALETTE[l % PALETTE.length] : UNLABELLED;
       const [sx, sy] = toScreen(x, y);
       ctx.fillRect(sx - 1, sy - 1, 2, 2);
     }
