@@ -302,3 +302,32 @@ TEST(ScanPolylines2D, TheGapSeparatesPolylines)
     EXPECT_EQ(ex.polylines().size(), 2u);
     EXPECT_NEAR(ex.score(), 0.0, 1e-20);
 }
+
+TEST(ScanPolylines2D, ADepthStepInsideAChainBecomesABreakWhenTheBudgetAllows)
+{
+    // Two walls meeting the beams at a depth step of 0.3 m (less than the 1 m gap, so one chain): y = 3 + 1.5 x left
+    // of x = 0 and y = 3.3 - 1.5 x right of it. Their lines cross at (0.1, 3.15), next to the step, so the corner is
+    // accepted, and the beams between x = 0 and x = 0.1 are then predicted by the left wall's line. With four vertices
+    // two separate segments explain every beam exactly; without break candidates the partitions offer no such map.
+    std::vector<rtl::VectorND<2, double>> scan;
+    for (int d = 60; d <= 120; ++d)
+    {
+        const double a = d * kPi / 180, c = std::cos(a), s = std::sin(a);
+        // r on y = y0 + m x along (c, s): r (s - m c) = y0
+        const double r = c > 1e-12 ? 3.3 / (s + 1.5 * c) : 3.0 / (s - 1.5 * c);
+        scan.emplace_back(r * c, r * s);
+    }
+    rtl::ScanPolylines2D<double> with, without;
+    without.setBreakCandidates(0);
+    for (auto *ex : {&with, &without})
+    {
+        ex->setMaxVertices(4);
+        ex->setRefinement(false);   // the structure is under test, not the refinement
+        ASSERT_TRUE((*ex)(scan));
+        EXPECT_LE(ex->vertexCount(), 4u);
+    }
+    EXPECT_LT(with.score(), 1e-10);   // two exact segments
+    EXPECT_EQ(with.polylines().size(), 2u);
+    EXPECT_NEAR(with.explainedFraction(), 1.0, 1e-12);
+    EXPECT_GT(without.score(), 1e-4);   // the corner's misassigned beams
+}
