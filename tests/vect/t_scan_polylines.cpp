@@ -331,3 +331,38 @@ TEST(ScanPolylines2D, ADepthStepInsideAChainBecomesABreakWhenTheBudgetAllows)
     EXPECT_NEAR(with.explainedFraction(), 1.0, 1e-12);
     EXPECT_GT(without.score(), 1e-4);   // the corner's misassigned beams
 }
+
+TEST(ScanPolylines2D, BreakCostsFromLocalGainsChooseAsWellAsHitTestedOnes)
+{
+    // Break candidates are priced as the partition's cost minus the local gains; hit-testing each instead must not
+    // find better maps (on average over the real excerpt), and both must beat no break candidates at J = 50.
+    rtl::ScanPolylines2D<double> local, exact, none;
+    exact.setExactBreakCosts(true);
+    none.setBreakCandidates(0);
+    double s_local = 0, s_exact = 0, s_none = 0;
+    for (const auto &scan : excerptScans("intel.log"))
+    {
+        for (auto *ex : {&local, &exact, &none}) { ex->setMaxVertices(50); ASSERT_TRUE((*ex)(scan)); }
+        s_local += local.score(); s_exact += exact.score(); s_none += none.score();
+    }
+    EXPECT_NEAR(s_local, s_exact, 0.005 * s_exact);
+    EXPECT_LT(s_local, 0.99 * s_none);
+}
+
+TEST(ScanPolylines2D, NeighbourRefinementLowersTheMeanScore)
+{
+    rtl::ScanPolylines2D<double> with, without;
+    with.setNeighbourRefinement(2);
+    double s_with = 0, s_without = 0;
+    for (const char *file : {"intel.log", "csail.log"})
+        for (const auto &scan : excerptScans(file))
+            for (std::size_t J : {10u, 30u})
+            {
+                with.setMaxVertices(J); without.setMaxVertices(J);
+                ASSERT_TRUE(with(scan));
+                ASSERT_TRUE(without(scan));
+                EXPECT_LE(with.vertexCount(), J);
+                s_with += with.score(); s_without += without.score();
+            }
+    EXPECT_LT(s_with, s_without);
+}

@@ -16,9 +16,13 @@
 //     programming over prefix sums (scan_polylines/ChainPartition.h); each partition becomes polylines: end vertices
 //     where the end lines cross their own end beams, inner vertices where consecutive lines cross, unless the lines
 //     are near parallel or cross far from the boundary points (then the polyline breaks there, both new ends again
-//     on their own beams) -- so a corner never spikes away from its points;
+//     on their own beams) -- so a corner never spikes away from its points; besides each partition, up to
+//     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
+//     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
+//     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
-//     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h);
+//     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
+//     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement);
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
 //     so refinement never raises the score.
@@ -94,6 +98,9 @@ namespace rtl
         //! Break candidates scored by their own hit test (true) or by the partition's cost minus the local gains
         //! (false, default; cheaper).
         void setExactBreakCosts(bool on) { exact_breaks_ = on; }
+        //! Before the final allocation, candidates within this many vertices of each chain's first choice are refined
+        //! and the budget allocated again on their refined costs (default 0: off).
+        void setNeighbourRefinement(std::size_t window) { neighbour_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
@@ -115,7 +122,22 @@ namespace rtl
             if (candidates_.size() < chains_.size()) candidates_.resize(chains_.size());   // kept: their memory is reused
             candidate_count_.assign(chains_.size(), 0);
             for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
-            const std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            if (refine_ && neighbour_window_ > 0 && !chosen.empty())
+            {
+                // Refine the candidates near each chain's choice, then allocate again on their refined costs.
+                for (std::size_t c = 0; c < chains_.size(); ++c)
+                {
+                    const std::size_t v0 = options[c][chosen[c]].vertices;
+                    for (std::size_t o = 1; o < options[c].size(); ++o)
+                    {
+                        const std::size_t v = options[c][o].vertices;
+                        if (v + neighbour_window_ < v0 || v > v0 + neighbour_window_) continue;
+                        options[c][o].cost = refineCandidate(c, o - 1, 20, options[c][o].cost);
+                    }
+                }
+                chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            }
             std::vector<Polyline> map;
             for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
                 if (chosen[c] > 0)
@@ -298,19 +320,26 @@ namespace rtl
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][candidate_count_[c]];
             double cost = std::isnan(known) ? chainCost(cand, cf, cl) : known;
-            if (refine_candidates_ > 0)
-            {
-                Candidate refined = cand;
-                scan_polylines::RadialRefinement lm;
-                lm.setMaxIterations(refine_candidates_);
-                const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
-                for (std::size_t p = 0; p < refined.used; ++p)
-                    lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
-                const double c2 = chainCost(refined, cf, cl);
-                if (c2 < cost) { cost = c2; std::swap(cand, refined); }
-            }
+            if (refine_candidates_ > 0) cost = refineCandidate(c, candidate_count_[c], refine_candidates_, cost);
             opts.push_back({vertices, cost});
             ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
+            return cost;
+        }
+
+        //! Radially refines candidate `index` of chain c (at most `iterations` LM iterations per polyline) and keeps the
+        //! result when its hit-tested cost is below `cost`; returns the candidate's cost.
+        double refineCandidate(std::size_t c, std::size_t index, int iterations, double cost)
+        {
+            const auto [cf, cl] = chains_[c];
+            Candidate &cand = candidates_[c][index];
+            Candidate refined = cand;
+            scan_polylines::RadialRefinement lm;
+            lm.setMaxIterations(iterations);
+            const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
+            for (std::size_t p = 0; p < refined.used; ++p)
+                lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+            const double c2 = chainCost(refined, cf, cl);
+            if (c2 < cost) { cost = c2; std::swap(cand, refined); }
             return cost;
         }
 
@@ -493,6 +522,7 @@ namespace rtl
         bool refine_ = true, radial_weights_ = false;
         int refine_candidates_ = 0;
         int break_rounds_ = 2;
+        std::size_t neighbour_window_ = 0;
         bool exact_breaks_ = false;
         std::vector<char> forced_;
         std::vector<std::pair<std::size_t, double>> corners_;
