@@ -302,3 +302,67 @@ TEST(ScanPolylines2D, TheGapSeparatesPolylines)
     EXPECT_EQ(ex.polylines().size(), 2u);
     EXPECT_NEAR(ex.score(), 0.0, 1e-20);
 }
+
+TEST(ScanPolylines2D, ADepthStepInsideAChainBecomesABreakWhenTheBudgetAllows)
+{
+    // Two walls meeting the beams at a depth step of 0.3 m (less than the 1 m gap, so one chain): y = 3 + 1.5 x left
+    // of x = 0 and y = 3.3 - 1.5 x right of it. Their lines cross at (0.1, 3.15), next to the step, so the corner is
+    // accepted, and the beams between x = 0 and x = 0.1 are then predicted by the left wall's line. With four vertices
+    // two separate segments explain every beam exactly; without break candidates the partitions offer no such map.
+    std::vector<rtl::VectorND<2, double>> scan;
+    for (int d = 60; d <= 120; ++d)
+    {
+        const double a = d * kPi / 180, c = std::cos(a), s = std::sin(a);
+        // r on y = y0 + m x along (c, s): r (s - m c) = y0
+        const double r = c > 1e-12 ? 3.3 / (s + 1.5 * c) : 3.0 / (s - 1.5 * c);
+        scan.emplace_back(r * c, r * s);
+    }
+    rtl::ScanPolylines2D<double> with, without;
+    without.setBreakCandidates(0);
+    for (auto *ex : {&with, &without})
+    {
+        ex->setMaxVertices(4);
+        ex->setRefinement(false);   // the structure is under test, not the refinement
+        ASSERT_TRUE((*ex)(scan));
+        EXPECT_LE(ex->vertexCount(), 4u);
+    }
+    EXPECT_LT(with.score(), 1e-10);   // two exact segments
+    EXPECT_EQ(with.polylines().size(), 2u);
+    EXPECT_NEAR(with.explainedFraction(), 1.0, 1e-12);
+    EXPECT_GT(without.score(), 1e-4);   // the corner's misassigned beams
+}
+
+TEST(ScanPolylines2D, BreakCostsFromLocalGainsChooseAsWellAsHitTestedOnes)
+{
+    // Break candidates are priced as the partition's cost minus the local gains; hit-testing each instead must not
+    // find better maps (on average over the real excerpt), and both must beat no break candidates at J = 50.
+    rtl::ScanPolylines2D<double> local, exact, none;
+    exact.setExactBreakCosts(true);
+    none.setBreakCandidates(0);
+    double s_local = 0, s_exact = 0, s_none = 0;
+    for (const auto &scan : excerptScans("intel.log"))
+    {
+        for (auto *ex : {&local, &exact, &none}) { ex->setMaxVertices(50); ASSERT_TRUE((*ex)(scan)); }
+        s_local += local.score(); s_exact += exact.score(); s_none += none.score();
+    }
+    EXPECT_NEAR(s_local, s_exact, 0.005 * s_exact);
+    EXPECT_LT(s_local, 0.99 * s_none);
+}
+
+TEST(ScanPolylines2D, NeighbourRefinementLowersTheMeanScore)
+{
+    rtl::ScanPolylines2D<double> with, without;
+    with.setNeighbourRefinement(2);
+    double s_with = 0, s_without = 0;
+    for (const char *file : {"intel.log", "csail.log"})
+        for (const auto &scan : excerptScans(file))
+            for (std::size_t J : {10u, 30u})
+            {
+                with.setMaxVertices(J); without.setMaxVertices(J);
+                ASSERT_TRUE(with(scan));
+                ASSERT_TRUE(without(scan));
+                EXPECT_LE(with.vertexCount(), J);
+                s_with += with.score(); s_without += without.score();
+            }
+    EXPECT_LT(s_with, s_without);
+}

@@ -16,9 +16,13 @@
 //     programming over prefix sums (scan_polylines/ChainPartition.h); each partition becomes polylines: end vertices
 //     where the end lines cross their own end beams, inner vertices where consecutive lines cross, unless the lines
 //     are near parallel or cross far from the boundary points (then the polyline breaks there, both new ends again
-//     on their own beams) -- so a corner never spikes away from its points;
+//     on their own beams) -- so a corner never spikes away from its points; besides each partition, up to
+//     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
+//     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
+//     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
-//     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h);
+//     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
+//     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement);
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
 //     so refinement never raises the score.
@@ -88,6 +92,15 @@ namespace rtl
         void setRadialWeights(bool on) { radial_weights_ = on; }
         //! Iterations of radial refinement applied to every candidate before the budget is allocated (default 0).
         void setCandidateRefinement(int iterations) { refine_candidates_ = iterations; }
+        //! Extra candidates per partition in which up to this many corners become breaks (one vertex each), the corners
+        //! whose break explains their boundary beams best first (default 2; 0: none).
+        void setBreakCandidates(int n) { break_rounds_ = n; }
+        //! Break candidates scored by their own hit test (true) or by the partition's cost minus the local gains
+        //! (false, default; cheaper).
+        void setExactBreakCosts(bool on) { exact_breaks_ = on; }
+        //! Before the final allocation, candidates within this many vertices of each chain's first choice are refined
+        //! and the budget allocated again on their refined costs (default 0: off).
+        void setNeighbourRefinement(std::size_t window) { neighbour_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
@@ -109,7 +122,22 @@ namespace rtl
             if (candidates_.size() < chains_.size()) candidates_.resize(chains_.size());   // kept: their memory is reused
             candidate_count_.assign(chains_.size(), 0);
             for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
-            const std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            if (refine_ && neighbour_window_ > 0 && !chosen.empty())
+            {
+                // Refine the candidates near each chain's choice, then allocate again on their refined costs.
+                for (std::size_t c = 0; c < chains_.size(); ++c)
+                {
+                    const std::size_t v0 = options[c][chosen[c]].vertices;
+                    for (std::size_t o = 1; o < options[c].size(); ++o)
+                    {
+                        const std::size_t v = options[c][o].vertices;
+                        if (v + neighbour_window_ < v0 || v > v0 + neighbour_window_) continue;
+                        options[c][o].cost = refineCandidate(c, o - 1, 20, options[c][o].cost);
+                    }
+                }
+                chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            }
             std::vector<Polyline> map;
             for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
                 if (chosen[c] > 0)
@@ -255,56 +283,135 @@ namespace rtl
                 part_.ranges(k, ranges);
                 fits.clear();
                 for (const auto &r : ranges) fits.push_back(part_.fit(r.first, r.second));
-                if (candidate_count_[c] == candidates_[c].size()) candidates_[c].emplace_back();
-                Candidate &cand = candidates_[c][candidate_count_[c]];
-                cand.used = 0;
-                Polyline *cur = &cand.next();
-                double x, y;
-                endOnBeam(fits[0], cf + ranges[0].first, x, y);
-                cur->x.push_back(x); cur->y.push_back(y);
-                std::size_t vertices = 1;
-                for (std::size_t s = 0; s < k; ++s)
-                {
-                    cur->segs.push_back({cf + ranges[s].first, cf + ranges[s].second});
-                    if (s + 1 == k)
-                    {
-                        endOnBeam(fits[s], cf + ranges[s].second, x, y);
-                        cur->x.push_back(x); cur->y.push_back(y); ++vertices;
-                        break;
-                    }
-                    const std::size_t a = cf + ranges[s].second, b = cf + ranges[s + 1].first;
-                    const double reach = cost_ + std::hypot(px_[b] - px_[a], py_[b] - py_[a]);
-                    // A corner stays in the wedge of the boundary beams and their outer neighbours (within the chain):
-                    // farther round, it would fold its segments over other beams, or hide beams of other chains.
-                    const std::size_t wa = a > cf ? a - 1 : a, wb = b < cl ? b + 1 : b;
-                    if (corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y) 
-                        && scan_polylines::AngularSpan::of(px_[wa], py_[wa], px_[wb], py_[wb]).contains(std::atan2(y, x), 0))
-                    {
-                        cur->x.push_back(x); cur->y.push_back(y); ++vertices;
-                        continue;
-                    }
-                    endOnBeam(fits[s], a, x, y);
-                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
-                    cur = &cand.next();   // a break: the next range starts a new polyline
-                    endOnBeam(fits[s + 1], b, x, y);
-                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
-                }
+                forced_.assign(k, 0);
+                const std::size_t vertices = assemble(c, newCandidate(c), &corners_);
                 if (vertices > max_vertices_) continue;
-                double cost = chainCost(cand, cf, cl);
-                if (refine_candidates_ > 0)
+                const double base = offerCandidate(c, vertices, opts, scan_polylines::kNaN);
+                if (break_rounds_ == 0 || corners_.empty()) continue;
+                // Corners whose break would explain the boundary beams better, best first: each conversion costs one
+                // vertex, and the knapsack decides whether it is worth it (a corner at a depth step predicts one
+                // side's boundary beams by the other side's line).
+                std::sort(corners_.begin(), corners_.end(), [](const auto &u, const auto &v) { return u.second > v.second; });
+                // Their cost is the partition's minus the local gains (a break changes only which line predicts the
+                // boundary beams), so they need no hit test of their own; the chosen map is hit-tested in full.
+                double cost = base;
+                for (std::size_t b = 0; b < corners_.size() && b < static_cast<std::size_t>(break_rounds_); ++b)
                 {
-                    Candidate refined = cand;
-                    scan_polylines::RadialRefinement lm;
-                    lm.setMaxIterations(refine_candidates_);
-                    const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
-                    for (std::size_t p = 0; p < refined.used; ++p)
-                        lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
-                    const double c2 = chainCost(refined, cf, cl);
-                    if (c2 < cost) { cost = c2; std::swap(cand, refined); }
+                    if (!(corners_[b].second > 0) || vertices + b + 1 > max_vertices_) break;
+                    forced_[corners_[b].first] = 1;
+                    cost -= corners_[b].second;
+                    offerCandidate(c, assemble(c, newCandidate(c), nullptr), opts, exact_breaks_ ? scan_polylines::kNaN : cost);
                 }
-                opts.push_back({vertices, cost});
-                ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
             }
+        }
+
+        Candidate &newCandidate(std::size_t c)
+        {
+            if (candidate_count_[c] == candidates_[c].size()) candidates_[c].emplace_back();
+            Candidate &cand = candidates_[c][candidate_count_[c]];
+            cand.used = 0;
+            return cand;
+        }
+
+        //! Offers the candidate last made by newCandidate(c) to the budget with the given cost, or (when it is NaN)
+        //! its hit-tested cost; returns the cost offered.
+        double offerCandidate(std::size_t c, std::size_t vertices, std::vector<scan_polylines::BudgetOption> &opts, double known)
+        {
+            const auto [cf, cl] = chains_[c];
+            Candidate &cand = candidates_[c][candidate_count_[c]];
+            double cost = std::isnan(known) ? chainCost(cand, cf, cl) : known;
+            if (refine_candidates_ > 0) cost = refineCandidate(c, candidate_count_[c], refine_candidates_, cost);
+            opts.push_back({vertices, cost});
+            ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
+            return cost;
+        }
+
+        //! Radially refines candidate `index` of chain c (at most `iterations` LM iterations per polyline) and keeps the
+        //! result when its hit-tested cost is below `cost`; returns the candidate's cost.
+        double refineCandidate(std::size_t c, std::size_t index, int iterations, double cost)
+        {
+            const auto [cf, cl] = chains_[c];
+            Candidate &cand = candidates_[c][index];
+            Candidate refined = cand;
+            scan_polylines::RadialRefinement lm;
+            lm.setMaxIterations(iterations);
+            const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
+            for (std::size_t p = 0; p < refined.used; ++p)
+                lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+            const double c2 = chainCost(refined, cf, cl);
+            if (c2 < cost) { cost = c2; std::swap(cand, refined); }
+            return cost;
+        }
+
+        //! Squared radial error of beam i predicted by line f (the unexplained cost squared where f does not cross
+        //! the beam in front of the sensor).
+        double lineError(const scan_polylines::TlsFit &f, std::size_t i) const
+        {
+            const double t = f.d / (f.nx * ux_[i] + f.ny * uy_[i]);
+            if (!(std::isfinite(t) && t > 0)) return cost_ * cost_;
+            return (range_[i] - t) * (range_[i] - t);
+        }
+
+        //! Local gain of a break instead of the corner (x, y) between ranges ending at beam a and starting at beam b:
+        //! only the beams within one of the boundary change line (the corner stays in that wedge).
+        double breakGain(const scan_polylines::TlsFit &f, const scan_polylines::TlsFit &g, std::size_t a, std::size_t b,
+                         std::size_t cf, std::size_t cl, double x, double y) const
+        {
+            const double dir = ux_[a] * uy_[b] - uy_[a] * ux_[b] > 0 ? 1.0 : -1.0;
+            double gain = 0;
+            for (std::size_t i = a > cf ? a - 1 : a; i <= std::min(cl, b + 1); ++i)
+            {
+                const bool before = (ux_[i] * y - uy_[i] * x) * dir > 0;   // on the first range's side of the corner
+                const bool own = i <= a;                                   // the break predicts i by its own range's line
+                if (before == own) continue;
+                gain += (before ? lineError(f, i) : lineError(g, i)) - (own ? lineError(f, i) : lineError(g, i));
+            }
+            return gain;
+        }
+
+        //! Builds the polylines of the partition ranges_ / fits_ of chain c into `cand` (breaks at boundaries where
+        //! forced_ is set, and wherever no usable corner exists); returns the vertex count. When `corners` is given,
+        //! it receives every corner's boundary index and the local gain of a break there.
+        std::size_t assemble(std::size_t c, Candidate &cand, std::vector<std::pair<std::size_t, double>> *corners)
+        {
+            const auto [cf, cl] = chains_[c];
+            const std::vector<BeamRange> &ranges = ranges_;
+            const std::vector<scan_polylines::TlsFit> &fits = fits_;
+            const std::size_t k = ranges.size();
+            if (corners) corners->clear();
+            Polyline *cur = &cand.next();
+            double x, y;
+            endOnBeam(fits[0], cf + ranges[0].first, x, y);
+            cur->x.push_back(x); cur->y.push_back(y);
+            std::size_t vertices = 1;
+            for (std::size_t s = 0; s < k; ++s)
+            {
+                cur->segs.push_back({cf + ranges[s].first, cf + ranges[s].second});
+                if (s + 1 == k)
+                {
+                    endOnBeam(fits[s], cf + ranges[s].second, x, y);
+                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                    break;
+                }
+                const std::size_t a = cf + ranges[s].second, b = cf + ranges[s + 1].first;
+                const double reach = cost_ + std::hypot(px_[b] - px_[a], py_[b] - py_[a]);
+                // A corner stays in the wedge of the boundary beams and their outer neighbours (within the chain):
+                // farther round, it would fold its segments over other beams, or hide beams of other chains.
+                const std::size_t wa = a > cf ? a - 1 : a, wb = b < cl ? b + 1 : b;
+                if (!forced_[s] && corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y)
+                    && scan_polylines::AngularSpan::of(px_[wa], py_[wa], px_[wb], py_[wb]).contains(std::atan2(y, x), 0))
+                {
+                    if (corners) corners->push_back({s, breakGain(fits[s], fits[s + 1], a, b, cf, cl, x, y)});
+                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                    continue;
+                }
+                endOnBeam(fits[s], a, x, y);
+                cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                cur = &cand.next();   // a break: the next range starts a new polyline
+                endOnBeam(fits[s + 1], b, x, y);
+                cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+            }
+            return vertices;
         }
 
         //! Weights that turn a point's squared orthogonal distance into its squared radial error, 1 / cos^2 of the
@@ -414,6 +521,11 @@ namespace rtl
         double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
         bool refine_ = true, radial_weights_ = false;
         int refine_candidates_ = 0;
+        int break_rounds_ = 2;
+        std::size_t neighbour_window_ = 0;
+        bool exact_breaks_ = false;
+        std::vector<char> forced_;
+        std::vector<std::pair<std::size_t, double>> corners_;
 
         std::vector<double> px_, py_, ux_, uy_, range_, angle_, local_, weight_;
         std::vector<bool> returned_;
