@@ -11,6 +11,13 @@
 //   corner is the best and the search stops there.
 // Ranges are bounded by sigma: the total squared residual T of [x, y) never decreases as y grows, so once it
 // exceeds (N - x) sigma^2 no longer range from x can fit, and no end z with (z - x) sigma^2 < T can (skipped).
+// Identical points: a range whose points are all equal has residual exactly 0, so it fits iff it has 2 points or
+// sigma^2 > 0, decided from the points (runs marked in O(N)), not from its prefix sums, whose rounding far from
+// the origin is noise well above sigma^2 (such ranges used to fit at random, and the search visited O(N^2) of
+// them). A chain that one range fits is answered by that range without the search (it is the unique partition
+// with no break and one range, hence the optimum): one fit. Both keep every other result bit for bit. Left
+// quadratic: a long run of identical points inside a chain that no single range fits (all O(L^2) ranges within
+// the run fit; see docs/vect-partition-search.md).
 // Corners: the few cheapest incoming lines are tried first (they usually meet). When they do not, a boundary
 // with many lines uses chords: every line crossing the disc of radius delta about the boundary midpoint cuts a
 // chord from it, and two lines cross inside the disc iff their chords' ends alternate around the circle, so the
@@ -168,6 +175,17 @@ namespace rtl
             const size_t n = a.size() > 0 ? a.size() - 1 : 0;
             if (n < 2 || n > pts.size() || n >= none)
                 return false;
+            markRuns(pts, n);
+            // A chain that one range fits: that range is the optimum (no break, one range: no other partition
+            // has as few), found without the search, which would visit every fitting range first.
+            ComputeType whole_total;
+            if (fits(a, 0, n, whole_total))
+            {
+                indices.emplace_back(0, n);
+                lines.emplace_back(a.sums(0, n));
+                starts.push_back(0);
+                return true;
+            }
             // Most searches are small: first an unbounded round that gives up beyond a state cap; then, strict
             // mode only, rounds bounded by a range budget (see the file comment), then the unbounded one, which
             // alone proves that no partition exists (and finds the failure corner).
@@ -237,6 +255,7 @@ namespace rtl
             const size_t n = a.size() > 0 ? a.size() - 1 : 0;
             if (n < 2 || n > pts.size())
                 return false;
+            markRuns(pts, n);
             const Cost unreached{std::numeric_limits<size_t>::max(), ComputeType(0)};
             cover_cost.assign(n + 1, unreached);
             cover_from.assign(n + 1, 0);
@@ -370,6 +389,7 @@ namespace rtl
         std::vector<Approximation> cand_lines;
         static constexpr uint32_t unknown = none - 1;
         std::vector<size_t> far, remaining, first_within;
+        std::vector<size_t> same_end;   // markRuns
         CornerReport failure_;
 
         struct Cost
@@ -408,9 +428,27 @@ namespace rtl
             return p.error < q.error;
         }
 
+        //! Marks the runs of identical points: same_end[i] is the end of the run of points equal to pts[i] from i.
+        void markRuns(const std::vector<VectorType> &pts, size_t n)
+        {
+            same_end.resize(n + 1);
+            same_end[n] = n;
+            for (size_t i = n; i-- > 0;)
+                same_end[i] = i + 1 < n && pts[i + 1] == pts[i] ? same_end[i + 1] : i + 1;
+        }
+
+        //! [b, e) is one run of identical points: its residual is exactly 0, whatever rounding its sums carry (far
+        //! from the origin they cancel into noise, which made such ranges fit at random: the quadratic cliff).
+        bool identical(size_t b, size_t e) const { return e <= same_end[b]; }
+
         bool fits(const SumArray &a, size_t b, size_t e, ComputeType &total)
         {
             ++work_.fits;
+            if (identical(b, e))
+            {
+                total = ComputeType(0);
+                return e - b == 2 || sigma2 > ComputeType(0);
+            }
             const auto s = a.sums(b, e);
             total = e - b <= 2 ? ComputeType(0) : Approximation::errorSquaredCompute(s) * static_cast<ComputeType>(e - b);
             return e - b == 2 || Approximation::errorBelow(s, sigma2);
@@ -578,7 +616,14 @@ namespace rtl
             {
                 ++work_.fits;
                 const auto sums = a.sums(x, y);
-                const bool ok = y - x == 2 || Approximation::errorBelow(sums, sigma2);
+                const bool same = identical(x, y);
+                const bool ok = y - x == 2 || (same ? sigma2 > ComputeType(0) : Approximation::errorBelow(sums, sigma2));
+                if (same && !ok)
+                {
+                    // A zero sigma: no range of > 2 identical points fits; go on past the run.
+                    y = same_end[x];
+                    continue;
+                }
                 ComputeType total = 0;
                 if (!ok)
                     total = Approximation::errorSquaredCompute(sums) * static_cast<ComputeType>(y - x);
@@ -591,7 +636,7 @@ namespace rtl
                 {
                     const ComputeType reach = total / (ComputeType(1.01) * sigma2);
                     if (reach > static_cast<ComputeType>(y - x + 1))
-                        y = std::max(y, x + std::min(static_cast<size_t>(reach), n - x) - 1);
+                        y = std::max(y, x + (reach >= static_cast<ComputeType>(n - x) ? n - x : static_cast<size_t>(reach)) - 1);
                 }
             }
         }
