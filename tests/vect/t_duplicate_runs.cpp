@@ -135,4 +135,49 @@ namespace
         expectOneRangeCheaply(tiny, 1e-3, 0.1, "tiny extent");
         expectOneRangeCheaply(straight, 0.05, 0.1, "straight");
     }
+
+    TEST(DuplicateRuns, RunInsideAChainCostsLinearWork)
+    {
+        // A straight piece, N/3 copies of one point, another straight piece: the optimum needs three ranges, and
+        // every one of the ~N^2 / 18 ranges within the run fits. Before: the first round enumerated them all
+        // (117 fits per point at N = 2,000, 230 at 4,000) while adding almost no state.
+        for (size_t n : {600u, 2000u, 4000u})
+        {
+            std::vector<rtl::Vector2d> pts;
+            for (size_t i = 0; i < n; ++i)
+            {
+                const double x = 0.01 * static_cast<double>(i < n / 3 || i >= 2 * n / 3 ? i : n / 3);
+                pts.emplace_back(x, i < n / 3 ? 0.0 : i >= 2 * n / 3 ? 1.0 : 0.5);
+            }
+            rtl::PrecArrayBlocked<2, double, double> a;
+            a.resize(n);
+            a.precompute(pts);
+            rtl::PartitionSearch2D<rtl::PrecArrayBlocked<2, double, double>, rtl::ApproximationTlsLine2D<double, double>> s, full;
+            for (auto *search : {&s, &full})
+            {
+                search->setSigma(0.033);
+                search->setDelta(1.0);
+            }
+            full.setBoundedRounds(false);
+            std::vector<rtl::ApproximationTlsLine2D<double, double>> lines, full_lines;
+            std::vector<std::pair<size_t, size_t>> idx, full_idx;
+            ASSERT_TRUE(s(pts, a, lines, idx)) << n;
+            EXPECT_EQ(idx.size(), 3u) << n;
+            if (n >= 2000)
+                EXPECT_LE(s.work().fits, 32 * n) << n;
+            else
+            {
+                // The same optimum, bit for bit, as the search without bounded rounds (which visits every fitting
+                // range; at 600 points the first round's fit cap, 16 N + 4096, already stops it).
+                EXPECT_EQ(s.work().bounded, 1u);
+                ASSERT_TRUE(full(pts, a, full_lines, full_idx));
+                EXPECT_EQ(idx, full_idx);
+                for (size_t r = 0; r < idx.size() && r < full_idx.size(); ++r)
+                {
+                    EXPECT_EQ(lines[r].point().x(), full_lines[r].point().x());
+                    EXPECT_EQ(lines[r].direction().y(), full_lines[r].direction().y());
+                }
+            }
+        }
+    }
 }

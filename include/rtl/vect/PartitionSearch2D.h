@@ -16,9 +16,10 @@
 // first one that meets is the pick. Corners with many lines use chords: two lines cross inside the disc of radius
 // delta about the boundary midpoint iff their chords' ends alternate around the circle, so the cheapest meeting line
 // is a 2D range-minimum query; every comparison is widened by the angles' rounding bound and each candidate is
-// confirmed by the exact test. Strict mode runs rounds bounded by a range budget (a state is kept only if its
-// ranges plus a lower bound on the ranges of the rest fit the budget: first a fits-only bound, then a corner-aware
-// one from a backward pass), then, only if they fail, the unbounded round that alone proves infeasibility.
+// confirmed by the exact test. Strict mode first runs the unbounded round up to N + 1024 states or 16 N + 4096
+// fits, then rounds bounded by a range budget (a state is kept only if its ranges plus a lower bound on the ranges
+// of the rest fit the budget: first a fits-only bound, then a corner-aware one from a backward pass), then, only if
+// they fail, the first round continued without a cap, which alone proves infeasibility.
 //
 // Invariants (why the result does not depend on the rounds): every lower bound used never exceeds the true count,
 // and a state's cheapest predecessor has at most one range less, so a round whose budget is >= the optimum's range
@@ -31,8 +32,9 @@
 //
 // Complexity: O(N) to mark runs and for a chain that one range fits; otherwise O(F) fits and O(F log F) corner work
 // for the F fitting ranges, with F up to N * L for ranges of up to L points that fit sigma (work() counts it). F is
-// quadratic on long straight runs whose corners no line pair meets, and inside a long run of identical points that
-// no single range spans (every range within the run fits). Memory O(N + F) (backward pass).
+// quadratic on long straight runs whose corners no line pair meets, and inside a long run of identical points (every
+// range within the run fits); where the bounded rounds then find the optimum (a tight bound: e.g. a run of identical
+// points between two straight pieces), the first round's fit cap keeps the search linear. Memory O(N + F).
 //
 // cover() is split mode's last resort, for chains that no partition fits at all (e.g. 3 points forming a corner).
 // Consecutive ranges may then share their boundary point (range [s, e) followed by [e - 1, e')), so 2-point ranges
@@ -143,7 +145,12 @@ namespace rtl
             // mode only, rounds bounded by a range budget (see the file comment), then the unbounded one, which
             // alone proves that no partition exists (and finds the failure corner).
             const bool bounded = !allow_breaks && prune_;
-            if (!searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded))
+            // The first round also gives up past a number of fits: where most fitting ranges meet no incoming
+            // line (e.g. inside a long run of identical points) it enumerates them without adding states.
+            fit_limit = bounded ? work_.fits + fit_cap * n + 4096 : unbounded;
+            const bool first_done = searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded);
+            fit_limit = unbounded;
+            if (!first_done)
             {
                 // Kept aside: the unbounded round, should it be needed, goes on from where this one stopped.
                 swapFirstRound();
@@ -319,6 +326,8 @@ namespace rtl
         static constexpr size_t unbounded = std::numeric_limits<size_t>::max();
         static constexpr size_t block = 8;   // range starts per end bound (lowerBounds)
         static constexpr size_t state_cap = 1;   // states per point (+ 1024) of the first, unbounded round
+        static constexpr size_t fit_cap = 16;   // fits per point (+ 4096) of the first round
+        size_t fit_limit{unbounded};   // work_.fits beyond which the current round stops (the first round only)
         static constexpr size_t rest_cap = 4;   // states per point (+ 1024) of a round on the backward pass's bound
         // Rounds on the backward pass's bound: r and r + 1. On the corpus (direct strict searches of all 300 inputs)
         // the optimum was found at r 154 times, at r + 1 7 times, at r + 2 twice (seeds 169, 288), while a third
@@ -443,7 +452,7 @@ namespace rtl
             {
                 if (x == 0 || !incoming[x].empty())
                     extend(pts, a, x, n, budget);
-                if (states.size() > cap)
+                if (states.size() > cap || work_.fits > fit_limit)
                 {
                     stopped_at = x + 1;
                     return false;
