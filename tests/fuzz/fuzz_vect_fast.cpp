@@ -4,8 +4,8 @@
 // number of further copies of it) and extreme parameters (bit 5: sigma and delta anywhere in the element type's
 // range, subnormal and huge included, instead of relative to the coordinate scale); byte 1 sigma and byte 2 delta
 // (mantissa and exponent); byte 3 the coordinate scale (a power of two) or, with its top bit, raw coordinates (any
-// bit pattern: NaN, inf, subnormal, huge); then the points (at most max_points = 600). Checked (what the API
-// documents):
+// bit pattern: NaN, inf, subnormal, huge); then the points (at most max_points = 600; 1,600 with runs). Checked
+// (what the API documents):
 // - false for fewer than 2 points, a non-finite point, sigma or delta not positive and finite;
 // - strict mode true: indices() partition [0, N) in order, >= 2 points each, every range's mean squared residual
 //   (long double) below sigma^2 up to rounding, one polyline of segments + 1 finite vertices, and every vertex
@@ -69,6 +69,8 @@ namespace
     }
 
     constexpr size_t max_points = 600;
+    //! With runs of repeated points (byte 0 bit 4): the cliffs of identical points showed from ~1,000 points on.
+    constexpr size_t max_repeated_points = 1600;
 
     //! A parameter anywhere in T's positive range: (1 + mantissa) * 2^exponent, the exponent spread over the
     //! smallest subnormal (code 0) to the largest binade (float: 2^-149 .. 2^127; double: 2^-1074 .. 2^1023).
@@ -223,7 +225,7 @@ namespace
         const int max_exp = sizeof(T) == 4 ? 100 : 900;
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
         std::vector<rtl::VectorND<2, T>> pts;
-        while (in.n > 0 && pts.size() < max_points)
+        while (in.n > 0 && pts.size() < (mode & 16 ? max_repeated_points : max_points))
         {
             rtl::VectorND<2, T> v;
             for (int k = 0; k < 2; ++k)
@@ -244,7 +246,7 @@ namespace
             }
             pts.push_back(v);
             if (mode & 16)
-                for (int copies = in.next(); copies > 0 && pts.size() < max_points; --copies)
+                for (int copies = in.next(); copies > 0 && pts.size() < max_repeated_points; --copies)
                     pts.push_back(v);
         }
         // sigma and delta: (1 + mantissa) * 2^exponent times the coordinate unit (raw: times 1); extreme: anywhere.
@@ -307,7 +309,7 @@ namespace
         const int max_exp = sizeof(T) == 4 ? 60 : 300;   // squared moments stay finite in double
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
         std::vector<rtl::VectorND<3, T>> pts;
-        while (in.n > 0 && pts.size() < max_points)
+        while (in.n > 0 && pts.size() < (mode & 16 ? max_repeated_points : max_points))
         {
             rtl::VectorND<3, T> v;
             for (int k = 0; k < 3; ++k)
@@ -328,7 +330,7 @@ namespace
             }
             pts.push_back(v);
             if (mode & 16)
-                for (int copies = in.next(); copies > 0 && pts.size() < max_points; --copies)
+                for (int copies = in.next(); copies > 0 && pts.size() < max_repeated_points; --copies)
                     pts.push_back(v);
         }
         const T sigma = mode & 32 ? extreme<T>(sigma_code)
