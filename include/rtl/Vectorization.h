@@ -276,6 +276,8 @@ namespace rtl
     namespace vect_detail
     {
         //! Prefix sums -> fast extraction -> [total-error optimizer] -> projected end points, for 3D primitives.
+        //! False also when ElementType cannot hold the result (an errSquared() or output vertex overflows it: float
+        //! points beyond ~1.8e19 can give that; see PostprocessorProjectEndpoints::representable).
         template<class Approximation, bool optimize>
         class VectorizerFast3D : public VectorizerBase<Approximation>
         {
@@ -307,7 +309,8 @@ namespace rtl
                     if (!optimizer(pts, prec, this->approx, this->idx))
                         return failAll(pts);
                 }
-                return post(pts, this->approx, this->idx) || failAll(pts);
+                // A result ElementType cannot hold (float coordinates beyond ~1.8e19) is rejected: false.
+                return (post(pts, this->approx, this->idx) && post.representable(this->approx)) || failAll(pts);
             }
 
         protected:

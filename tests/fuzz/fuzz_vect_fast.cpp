@@ -1,15 +1,21 @@
-// libFuzzer harness for the prefix-sum vectorizers: FTLS and AFTLS 2D polylines (strict and split mode) and FTLS /
-// AFTLS 3D lines, float / double. Input: byte 0 picks the vectorizer (bits 0-2) and split mode (bit 3); byte 1
-// sigma and byte 2 delta (mantissa and exponent, relative to the coordinate scale); byte 3 the coordinate scale
-// (a power of two) or, with its top bit, raw coordinates (any bit pattern: NaN, inf, huge); then the points (at
-// most max_points = 600). Checked (what the API documents):
+// libFuzzer harness for the prefix-sum vectorizers: FTLS and AFTLS 2D polylines (strict and split mode), FTLS /
+// AFTLS 3D lines and AFTLS 3D planes, float / double. Input: byte 0 picks the vectorizer (bits 0-2), split mode
+// (bit 3; 3D AFTLS: planes instead of lines), runs of repeated points (bit 4: each point is followed by a byte, the
+// number of further copies of it) and extreme parameters (bit 5: sigma and delta anywhere in the element type's
+// range, subnormal and huge included, instead of relative to the coordinate scale); byte 1 sigma and byte 2 delta
+// (mantissa and exponent); byte 3 the coordinate scale (a power of two) or, with its top bit, raw coordinates (any
+// bit pattern: NaN, inf, subnormal, huge); then the points (at most max_points = 600; 1,600 with runs). Checked
+// (what the API documents):
 // - false for fewer than 2 points, a non-finite point, sigma or delta not positive and finite;
 // - strict mode true: indices() partition [0, N) in order, >= 2 points each, every range's mean squared residual
 //   (long double) below sigma^2 up to rounding, one polyline of segments + 1 finite vertices, and every vertex
 //   (a crossing) within delta of its corner's boundary midpoint up to rounding; AFTLS's total squared error never
 //   above FTLS's on the same input; split mode: ranges in order, adjoining or sharing one point, true for every
 //   valid input at moderate coordinates, polylineOffsets consistent with breaks();
-// - 3D: a partition whose ranges fit sigma, finite segments;
+// - 3D: a partition whose ranges fit sigma, finite segments or polygons and finite errSquared() (a result the
+//   element type cannot hold is rejected);
+// - linear work where every range fits: a chain that one range fits (a run of identical points, or any chain
+//   that fits sigma with a margin at moderate coordinates) costs the exact search at most 4 N + 64 fits;
 // - the work budget (deterministic, not a time): the exact search's corner work stays within a log factor of its
 //   fits (testing every incoming line against every candidate range broke this once), the search
 //   runs at most once per FTLS call and once per AFTLS call (both branches share it), and at moderate coordinates
@@ -63,6 +69,24 @@ namespace
     }
 
     constexpr size_t max_points = 600;
+    //! With runs of repeated points (byte 0 bit 4): the cliffs of identical points showed from ~1,000 points on.
+    constexpr size_t max_repeated_points = 1600;
+
+    //! A parameter anywhere in T's positive range: (1 + mantissa) * 2^exponent, the exponent spread over the
+    //! smallest subnormal (code 0) to the largest binade (float: 2^-149 .. 2^127; double: 2^-1074 .. 2^1023).
+    template<typename T>
+    T extreme(int code)
+    {
+        const int lo = sizeof(T) == 4 ? -146 : -1071, hi = sizeof(T) == 4 ? 127 : 1023;
+        return static_cast<T>(std::ldexp(static_cast<double>(1 + (code & 7)) / 8, lo + ((code >> 3) * (hi - lo)) / 31));
+    }
+
+    template<int d, typename T>
+    bool oneRun(const std::vector<rtl::VectorND<d, T>> &p)
+    {
+        for (const auto &q : p) if (!(q == p.front())) return false;
+        return true;
+    }
 
     //! Ranges [b, e) of >= 2 points that fit sigma (2 points, or mean squared orthogonal residual, long double,
     //! below sigma^2 with the same tolerance as the range check below): an upper bound on the states of one round.
@@ -142,6 +166,15 @@ namespace
             // The search's sums are in double for float points too.
             require(states <= 12 * n + 3072 + 5 * fittingRanges(pts, s2, 64e-14 * static_cast<double>(extent * extent)));
         }
+        // Linear where one range fits: copies of one point (residual exactly 0 whatever the sums' rounding, when
+        // sigma^2 is not 0), or at moderate coordinates a chain that fits sigma with a margin.
+        if (valid && n >= 2)
+        {
+            const double s2c = static_cast<double>(sigma) * static_cast<double>(sigma);
+            const bool one_fits = (oneRun(pts) && s2c > 0) ||
+                                  (moderate && meanSquared(pts, 0, n) < s2c * (1 - 1e-3) - 64e-14 * static_cast<double>(extent * extent));
+            if (one_fits) require(fits <= 4 * n + 64);
+        }
         const auto &idx = v.indices();
         const auto &off = v.polylineOffsets();
         if (!ok)
@@ -192,7 +225,7 @@ namespace
         const int max_exp = sizeof(T) == 4 ? 100 : 900;
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
         std::vector<rtl::VectorND<2, T>> pts;
-        while (in.n > 0 && pts.size() < max_points)
+        while (in.n > 0 && pts.size() < (mode & 16 ? max_repeated_points : max_points))
         {
             rtl::VectorND<2, T> v;
             for (int k = 0; k < 2; ++k)
@@ -212,11 +245,14 @@ namespace
                 }
             }
             pts.push_back(v);
+            if (mode & 16)
+                for (int copies = in.next(); copies > 0 && pts.size() < max_repeated_points; --copies)
+                    pts.push_back(v);
         }
-        // sigma and delta: (1 + mantissa) * 2^exponent times the coordinate unit (raw: times 1).
+        // sigma and delta: (1 + mantissa) * 2^exponent times the coordinate unit (raw: times 1); extreme: anywhere.
         const double unit = raw ? 1.0 : scale * 64;
-        const T sigma = static_cast<T>((1 + (sigma_code & 7)) * std::ldexp(1.0, (sigma_code >> 3) - 24) * unit);
-        const T delta = static_cast<T>((1 + (delta_code & 7)) * std::ldexp(1.0, (delta_code >> 3) - 20) * unit);
+        const T sigma = mode & 32 ? extreme<T>(sigma_code) : static_cast<T>((1 + (sigma_code & 7)) * std::ldexp(1.0, (sigma_code >> 3) - 24) * unit);
+        const T delta = mode & 32 ? extreme<T>(delta_code) : static_cast<T>((1 + (delta_code & 7)) * std::ldexp(1.0, (delta_code >> 3) - 20) * unit);
         bool all_finite = true;
         LD extent = 0;
         for (const auto &p : pts)
@@ -227,7 +263,8 @@ namespace
         auto okParam = [](T x) { return x > 0 && std::isfinite(x); };
         const bool valid = pts.size() >= 2 && all_finite && okParam(sigma) && okParam(delta);
         // Moderate: integer coordinates well inside the element type, sigma and delta not sub-normal against them.
-        const bool moderate = !raw && std::abs(std::log2(scale)) < (sizeof(T) == 4 ? 40 : 300) && sigma_code >= 40 && delta_code >= 40;
+        const bool moderate = !raw && !(mode & 32) && std::abs(std::log2(scale)) < (sizeof(T) == 4 ? 40 : 300) && sigma_code >= 40 &&
+                              delta_code >= 40;
         if (mode & 2)
         {
             Aftls<T> a;
@@ -247,31 +284,78 @@ namespace
         }
     }
 
-    template<typename T, bool optimize>
-    void run3D(Bytes in, int sigma_code, int scale_code)
+    //! A 3D vectorizer's output (segments or polygons) finite.
+    template<class V>
+    auto outputFinite(const V &v) -> decltype(v.lineSegments(), bool())
     {
+        for (const auto &s : v.lineSegments()) if (!finite(s.beg()) || !finite(s.end())) return false;
+        return v.lineSegments().size() == v.indices().size();
+    }
+    template<class V>
+    auto outputFinite(const V &v) -> decltype(v.polygons(), bool())
+    {
+        for (const auto &p : v.polygons())
+        {
+            if (!std::isfinite(p.distance())) return false;
+            for (const auto &q : p.points()) if (!finite(q)) return false;
+        }
+        return v.polygons().size() == v.indices().size();
+    }
+
+    template<typename T, bool optimize, bool planes>
+    void run3D(Bytes in, int mode, int sigma_code, int scale_code)
+    {
+        const bool raw = scale_code & 0x80;
         const int max_exp = sizeof(T) == 4 ? 60 : 300;   // squared moments stay finite in double
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
         std::vector<rtl::VectorND<3, T>> pts;
-        while (in.n > 0 && pts.size() < max_points)
+        while (in.n > 0 && pts.size() < (mode & 16 ? max_repeated_points : max_points))
         {
             rtl::VectorND<3, T> v;
             for (int k = 0; k < 3; ++k)
             {
-                const auto hi = in.next(), lo = in.next();
-                v[k] = static_cast<T>(static_cast<std::int16_t>(hi << 8 | lo) * scale);
+                if (raw)
+                {
+                    unsigned char b[sizeof(T)];
+                    for (auto &c : b) c = in.next();
+                    T x;
+                    std::memcpy(&x, b, sizeof(T));
+                    v[k] = x;
+                }
+                else
+                {
+                    const auto hi = in.next(), lo = in.next();
+                    v[k] = static_cast<T>(static_cast<std::int16_t>(hi << 8 | lo) * scale);
+                }
             }
             pts.push_back(v);
+            if (mode & 16)
+                for (int copies = in.next(); copies > 0 && pts.size() < max_repeated_points; --copies)
+                    pts.push_back(v);
         }
-        const T sigma = static_cast<T>((1 + (sigma_code & 7)) * std::ldexp(1.0, (sigma_code >> 3) - 24) * scale * 64);
+        const T sigma = mode & 32 ? extreme<T>(sigma_code)
+                                  : static_cast<T>((1 + (sigma_code & 7)) * std::ldexp(1.0, (sigma_code >> 3) - 24) * (raw ? 1.0 : scale * 64));
         LD extent = 0;
-        for (const auto &p : pts) for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs((LD)p[k]));
-        std::conditional_t<optimize, rtl::VectorizerAFTLSProjections3D<T, double>, rtl::VectorizerFTLSProjections3D<T, double>> v;
+        bool all_finite = true;
+        for (const auto &p : pts)
+        {
+            all_finite &= finite(p);
+            for (int k = 0; k < 3; ++k) if (std::isfinite(p[k])) extent = std::max(extent, std::abs((LD)p[k]));
+        }
+        std::conditional_t<planes, rtl::VectorizerAFTLSPlaneProjections3D<T, double>,
+                           std::conditional_t<optimize, rtl::VectorizerAFTLSProjections3D<T, double>, rtl::VectorizerFTLSProjections3D<T, double>>> v;
         v.setSigma(sigma);
         const bool ok = v(pts);
-        const bool valid = pts.size() >= 2 && sigma > 0 && std::isfinite(sigma);
+        const bool valid = pts.size() >= 2 && all_finite && sigma > 0 && std::isfinite(sigma);
         if (!valid) require(!ok);
-        if (!ok) return;
+        if (!ok)
+        {
+            require(v.indices().empty() && v.approximations().empty());
+            return;
+        }
+        // What the element type cannot hold is rejected, never returned (float points beyond ~1.8e19).
+        for (const auto &a : v.approximations()) require(std::isfinite(a.errSquared()));
+        require(outputFinite(v));
         const auto &idx = v.indices();
         require(!idx.empty() && idx.front().first == 0 && idx.back().second == pts.size());
         const double s2 = static_cast<double>(sigma) * static_cast<double>(sigma);
@@ -280,11 +364,10 @@ namespace
         {
             require(idx[r].second >= idx[r].first + 2);
             if (r > 0) require(idx[r].first == idx[r - 1].second);
-            if (idx[r].second - idx[r].first > 2)
+            // The residual model is the lines' (two minor eigenvalues), at coordinates whose squares double holds.
+            if (!planes && !raw && idx[r].second - idx[r].first > 2)
                 require(meanSquared(pts, idx[r].first, idx[r].second) <= s2 * (1 + 1e-3) + 64 * ulp * static_cast<double>(extent * extent));
         }
-        require(v.lineSegments().size() == idx.size());
-        for (const auto &s : v.lineSegments()) require(finite(s.beg()) && finite(s.end()));
     }
 }
 
@@ -296,10 +379,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     {
     case 0: case 2: run2D<float>(in, mode, sigma_code, delta_code, scale_code); break;
     case 1: case 3: run2D<double>(in, mode, sigma_code, delta_code, scale_code); break;
-    case 4: run3D<float, false>(in, sigma_code, scale_code); break;
-    case 5: run3D<double, false>(in, sigma_code, scale_code); break;
-    case 6: run3D<float, true>(in, sigma_code, scale_code); break;
-    default: run3D<double, true>(in, sigma_code, scale_code); break;
+    case 4: run3D<float, false, false>(in, mode, sigma_code, scale_code); break;
+    case 5: run3D<double, false, false>(in, mode, sigma_code, scale_code); break;
+    case 6:
+        if (mode & 8) run3D<float, true, true>(in, mode, sigma_code, scale_code);
+        else run3D<float, true, false>(in, mode, sigma_code, scale_code);
+        break;
+    default:
+        if (mode & 8) run3D<double, true, true>(in, mode, sigma_code, scale_code);
+        else run3D<double, true, false>(in, mode, sigma_code, scale_code);
+        break;
     }
     return 0;
 }

@@ -3,7 +3,8 @@
 // type; byte 1 the epsilon (mantissa and exponent); byte 2 the coordinate scale (a power of two) or, with its top
 // bit, raw coordinates (any bit pattern: NaN, inf, huge); then the points. Checked:
 // - DP, RW: kept indices ascending, first and last kept, non-finite points never kept (DP), output finite for
-//   finite input; for finite input, equality with a brute-force long-double model of the documented rule whenever
+//   finite input, each segment's direction the unit vector along it (however short or long; coincident end points
+//   the first base vector); for finite input, equality with a brute-force long-double model of the documented rule whenever
 //   the model decides the same at epsilon -+ a rounding margin (no near-tie);
 // - simplifyCompatibleIndices: equal to a recursive transcription of simplify-js on doubles (no near-tie needed:
 //   same arithmetic), std::invalid_argument exactly for non-finite input;
@@ -28,6 +29,30 @@ namespace
 {
     using fuzz::Bytes;
     using fuzz::require;
+
+    //! A segment's direction is the unit vector along end - beg (long double, rescaled so that subnormal and huge
+    //! differences count), or the first base vector for coincident end points (the documented degenerate case).
+    template<int d, typename T>
+    bool directionAlong(const rtl::LineSegmentND<d, T> &s)
+    {
+        long double diff[d], m = 0, len2 = 0;
+        for (int k = 0; k < d; ++k)
+        {
+            diff[k] = (long double)s.end()[k] - (long double)s.beg()[k];
+            m = std::max(m, std::abs(diff[k]));
+        }
+        const auto dir = s.direction();
+        if (m == 0)
+        {
+            for (int k = 0; k < d; ++k) if (dir[k] != (k == 0 ? T(1) : T(0))) return false;
+            return true;
+        }
+        for (int k = 0; k < d; ++k) len2 += (diff[k] / m) * (diff[k] / m);
+        const long double tol = sizeof(T) == 4 ? 1e-5L : 1e-13L;
+        for (int k = 0; k < d; ++k)
+            if (std::abs((long double)dir[k] - diff[k] / m / std::sqrt(len2)) > tol) return false;
+        return true;
+    }
 
     using LD = long double;
 
@@ -295,7 +320,7 @@ namespace
                     for (size_t q = 1; q + 1 < keys.size(); ++q) require(finite(pts[keys[q]]));
                 if (all_finite)
                 {
-                    for (const auto &s : segs) require(finite(s.beg()) && finite(s.end()));
+                    for (const auto &s : segs) require(finite(s.beg()) && finite(s.end()) && directionAlong(s));
                     // Compared as vertex sequences: with duplicate points the indices matched back are ambiguous.
                     bool same = keys.size() == model_lo.size();
                     for (size_t q = 0; same && q < keys.size(); ++q) same = pts[keys[q]] == pts[model_lo[q]];

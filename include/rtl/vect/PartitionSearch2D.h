@@ -1,86 +1,48 @@
-// PartitionSearch2D: the exact feasibility search behind FTLS/AFTLS 2D (issue 11 items 5, 6; issue 12 item 1).
+// PartitionSearch2D: the exact feasibility search behind FTLS/AFTLS 2D.
 //
-// A valid result partitions the chain [0, N) into ranges of >= 2 points, each fitting sigma exactly as in
+// What: the best partition of the chain [0, N) into ranges of >= 2 points, each fitting sigma exactly as in
 // ExtractorChainFast (2 points always fit, otherwise mean squared residual < sigma^2), with every pair of
 // consecutive lines crossing within delta of the midpoint of the two boundary points (OptimizerContinuity2D's
-// criterion, vect_detail::crossingDistanceSquared). Prefix sums make each range's fit O(1), so a dynamic programme
-// over the breakpoints decides exactly whether such a partition exists, for chains of any length:
-//   state = a fitting range [x, y) that ends a valid partition of [0, y); its cost = (breaks, ranges, total
-//   squared residual), compared lexicographically; a state extends by any fitting range [y, z) whose line meets
-//   its own within delta. Incoming states of a boundary are tried cheapest first, so the first one that meets the
-//   corner is the best and the search stops there.
-// Ranges are bounded by sigma: the total squared residual T of [x, y) never decreases as y grows, so once it
-// exceeds (N - x) sigma^2 no longer range from x can fit, and no end z with (z - x) sigma^2 < T can (skipped).
-// Corners: the few cheapest incoming lines are tried first (they usually meet). When they do not, a boundary
-// with many lines uses chords: every line crossing the disc of radius delta about the boundary midpoint cuts a
-// chord from it, and two lines cross inside the disc iff their chords' ends alternate around the circle, so the
-// cheapest meeting line is a 2D range-minimum query (a sweep over one end angle, a min-tree over the other), with
-// every comparison widened by the angles' rounding bound and each candidate confirmed by the exact test. Lines
-// within 0.1 % of tangent to the disc are tried one by one; lines clearly missing it never meet. The cost is
-// O(F) fits and O(F log F) corner work for the F fitting ranges (issue 15 item 7: it was O(F * incoming) when
-// corners fail). F itself is up to N * L for ranges of up to L points that fit sigma: on long straight runs
-// with corners that no line pair meets the search stays quadratic in L (work() counts it).
-// Bounded rounds (strict mode, issue 15 item 7a): the optimum has the fewest ranges R, so a state [x, y) with r
-// ranges can only be on an optimal path if r + remaining[y] <= R, where remaining[y] is a lower bound on the
-// ranges of any partition of [y, N) into fitting ranges (corners ignored; from bounds on how far a fitting range
-// can reach, see lowerBounds). A round with budget U drops every other state and, because remaining[] does not
-// increase along the chain, skips the fits of ends too close to x. If R <= U the round finds the same optimum:
-// every state on a path of at most U ranges keeps its cheapest predecessor (that one has one range less and
-// remaining[x] <= 1 + remaining[y]), and incoming states are ordered by (cost, range start), a total order, so the
-// pick at each corner is the one the unbounded search makes. A search first runs unbounded up to N + 1024 states
-// (most are that small); beyond, rounds with budgets remaining[0] and remaining[0] + 1, then the unbounded one,
-// which alone proves that no partition exists (the first round continued from where its cap stopped it: its states
-// are kept aside meanwhile, and a round stopped and continued does exactly what an uninterrupted one does; on the
-// corpus's infeasible inputs 213, 47, 233, 90, 74 this saves 2-6 % of the call). This removes most states where the optimum needs about as many
-// ranges as the fits alone (a long chain of few long ranges: 13x fewer states); where corners force extra short
-// "bridge" ranges the bound is loose and the search stays N x L (a corner-aware bound would be needed).
-// Measured on the corpus's slowest bridge inputs (tests/vect/t_fast_corpus.h seeds 115, 299, 40, 257, 297, 84): a
-// single round with the budget equal to the optimum's R (known beforehand) still keeps 69-93 % of the unbounded
-// search's states: the fits-only bound falls short of R by about the number of bridges (R - remaining[0] = 4-9), and
-// that slack lets nearly every fitting range in, so no schedule of budgets helps there; on the worst 600-point prefixes
-// an FTLS call's states are 0.97-1.03 x the number F of fitting ranges. Nor would a bound that only skips boundaries
-// where no pair of fitting lines meets (not measured): 2- and 3-point ranges point almost anywhere and meet at most
-// boundaries; bridges are forced because the long lines on either side of a corner miss each other, so a useful bound
-// has to tell long ranges from short ones at every corner.
-// Backward pass (issue 15 item 7): when both bounded rounds fail, every fitting range gets a corner-aware lower bound
-// to_end on the ranges of a valid partition of the rest that starts with it (backward(): from the end; at each corner
-// only the ranges with the least count are tested, the others assumed to meet), and rounds keep a state only if its
-// predecessor's ranges + to_end fit the budget, from the bound for the whole chain up (at most 2 budgets, each given
-// up past 4 N + 1024 states), before the unbounded round. Exact as above: to_end never exceeds the true count, and a
-// predecessor that meets has at most one more. On the bridge seeds 35, 115, 299, 40, 257, 297, 84, 117
-// (R - remaining[0] = 3, 7, 9, 8, 4, 6, 9, 5) the bound for the chain is R and that round keeps 0.1-1.9 states per
-// point: the optimum's paths are few, the cost is the pass itself, which visits all F fitting ranges (78-95 per
-// point; since corner-testing only the ranges whose lower bound can matter, see backward(), it fits them all but
-// tests a fraction). Callgrind, the search on seeds 35, 117, 297, 115, 84: 0.60, 0.51, 0.72, 0.80, 0.91 x the instructions
-// before (an exact count, testing every candidate, was 0.99-1.28 x). It costs more where no strict partition exists
-// and the forward search dies early (seed 213: at corner 301 of 875, 28.7M -> 89.8M instructions): the pass covers the
-// whole chain first. Left: F itself; a bound that certifies the bridges without visiting every fitting range (e.g.
-// from a per-corner summary of the lines ending and starting there), and a cheap infeasibility test before the pass.
-// Corner scans (issue 15 item 7): most corner tests run in firstMeeting, one loop over a boundary's candidate lines
-// with the crossing tested unchecked (ApproximationTlsLine2D::crossingDistanceSquaredUnchecked: parallel or non-finite
-// crossings give +inf or NaN, which a finite delta rejects as the checked +inf) and the work counted once per scan.
-// Callgrind, FTLS on the corpus: max/median 61.9 -> 53.9 (seed 254 54.1k -> 47.1k instructions per point). Measured
-// and not kept: leaving a boundary's ranges of its least count unevaluated until a query misses the known candidates
-// (30 % fewer lines built in the pass on seeds 35/25, but the rounds then evaluate them: +5 % in all); two SSE2 lanes
-// per scan step (-2 to -4 % on the backward-pass seeds, +2 % on 47/233: short scans pay the setup); skipping the
-// r + 1 round on the fits-only bound (seed 25 -17 %, seed 254 3.5x: its optimum is found there, the pass is dear).
-// The rest is mostly building lines (two hypot per line, ~13 %) and fits; F itself is the bound.
-// Decisions within rounding of the disc's edge may differ from testing every pair in cost order only where the
-// crossing itself is not resolved by ComputeType (near-parallel lines whose computed crossing lands in the disc).
+// criterion, vect_detail::crossingDistanceSquared). Best = fewest breaks (split mode only), then fewest ranges, then
+// least total squared residual. Without breaks a false return proves that no valid partition exists, and failure()
+// says where: the furthest corner reached (the largest boundary b, 2 <= b <= N-2, ending a valid partition of
+// [0, b)) with the smallest crossing distance over all line pairs tried there. With breaks allowed (split mode) a
+// range may also start a new polyline where no incoming line meets it, so the result has the fewest breaks (none
+// iff a strict result exists).
 //
-// With breaks allowed (split mode), a range may also start a new polyline where no incoming line meets it; the
-// cost counts such breaks first, so the result has the fewest breaks (none iff a strict result exists), then the
-// fewest ranges, then the least squared error. Without breaks, a false return proves that no valid partition
-// exists, and failure() says where: the furthest corner the search reached (the largest boundary b, 2 <= b <= N-2,
-// ending a valid partition of [0, b)) with the smallest crossing distance over all line pairs tried there.
+// How: a dynamic programme over the breakpoints, each range's fit O(1) from prefix sums. A state is a fitting range
+// [x, y) that ends a valid partition of [0, y); a state extends by any fitting range [y, z) whose line meets its own
+// within delta. Incoming states of a boundary are tried cheapest first (ties by range start, a total order), so the
+// first one that meets is the pick. Corners with many lines use chords: two lines cross inside the disc of radius
+// delta about the boundary midpoint iff their chords' ends alternate around the circle, so the cheapest meeting line
+// is a 2D range-minimum query; every comparison is widened by the angles' rounding bound and each candidate is
+// confirmed by the exact test. Strict mode first runs the unbounded round up to N + 1024 states or 16 N + 4096
+// fits, then rounds bounded by a range budget (a state is kept only if its ranges plus a lower bound on the ranges
+// of the rest fit the budget: first a fits-only bound, then a corner-aware one from a backward pass), then, only if
+// they fail, the first round continued without a cap, which alone proves infeasibility.
 //
-// cover() is split mode's last resort, for chains that no partition fits at all (e.g. 3 points forming a corner:
-// a range needs 2 points, so [0, 2) [2, 3) is impossible). Consecutive ranges may then share their boundary point
-// (range [s, e) followed by [e - 1, e')), so 2-point ranges always exist and a cover always exists for N >= 2. The
-// same kind of dynamic programme finds the fewest ranges, then the least total squared residual (each range fits
-// sigma, >= 2 points); state = the chain prefix [0, y) covered by ranges whose last one ends at y, extended by a
-// fitting range starting at y or at y - 1. Corners are judged afterwards as everywhere (cornerDistanceSquared; at a
-// shared point the reference is that point): within delta the polyline continues, else it breaks there.
+// Invariants (why the result does not depend on the rounds): every lower bound used never exceeds the true count,
+// and a state's cheapest predecessor has at most one range less, so a round whose budget is >= the optimum's range
+// count keeps the optimum's path and picks at each corner what the unbounded search picks. A range of identical
+// points is decided from the points (residual exactly 0: it fits iff it has 2 points or sigma^2 > 0), not from its
+// prefix sums, whose rounding far from the origin is noise above sigma^2. A chain that one range fits is answered by
+// that range without the search (the unique partition with no break and one range). Decisions within rounding of
+// the disc's edge may differ from testing every pair in cost order only where ComputeType does not resolve the
+// crossing itself (near-parallel lines whose computed crossing lands in the disc).
+//
+// Complexity: O(N) to mark runs and for a chain that one range fits; otherwise O(F) fits and O(F log F) corner work
+// for the F fitting ranges, with F up to N * L for ranges of up to L points that fit sigma (work() counts it). F is
+// quadratic on long straight runs whose corners no line pair meets, and inside a long run of identical points (every
+// range within the run fits); where the bounded rounds then find the optimum (a tight bound: e.g. a run of identical
+// points between two straight pieces), the first round's fit cap keeps the search linear. Memory O(N + F).
+//
+// cover() is split mode's last resort, for chains that no partition fits at all (e.g. 3 points forming a corner).
+// Consecutive ranges may then share their boundary point (range [s, e) followed by [e - 1, e')), so 2-point ranges
+// always exist and a cover always exists for N >= 2: the fewest ranges, then the least total squared residual, each
+// range fitting sigma with >= 2 points. Corners are judged afterwards (cornerDistanceSquared; at a shared point the
+// reference is that point): within delta the polyline continues, else it breaks there.
+//
+// Measurements, the schedule of rounds and what was tried and not kept: docs/vect-partition-search.md.
 #pragma once
 
 #include <algorithm>
@@ -168,11 +130,27 @@ namespace rtl
             const size_t n = a.size() > 0 ? a.size() - 1 : 0;
             if (n < 2 || n > pts.size() || n >= none)
                 return false;
+            markRuns(pts, n);
+            // A chain that one range fits: that range is the optimum (no break, one range: no other partition
+            // has as few), found without the search, which would visit every fitting range first.
+            ComputeType whole_total;
+            if (fits(a, 0, n, whole_total))
+            {
+                indices.emplace_back(0, n);
+                lines.emplace_back(a.sums(0, n));
+                starts.push_back(0);
+                return true;
+            }
             // Most searches are small: first an unbounded round that gives up beyond a state cap; then, strict
             // mode only, rounds bounded by a range budget (see the file comment), then the unbounded one, which
             // alone proves that no partition exists (and finds the failure corner).
             const bool bounded = !allow_breaks && prune_;
-            if (!searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded))
+            // The first round also gives up past a number of fits: where most fitting ranges meet no incoming
+            // line (e.g. inside a long run of identical points) it enumerates them without adding states.
+            fit_limit = bounded ? work_.fits + fit_cap * n + 4096 : unbounded;
+            const bool first_done = searchRound(pts, a, n, unbounded, bounded ? state_cap * n + 1024 : unbounded);
+            fit_limit = unbounded;
+            if (!first_done)
             {
                 // Kept aside: the unbounded round, should it be needed, goes on from where this one stopped.
                 swapFirstRound();
@@ -237,6 +215,7 @@ namespace rtl
             const size_t n = a.size() > 0 ? a.size() - 1 : 0;
             if (n < 2 || n > pts.size())
                 return false;
+            markRuns(pts, n);
             const Cost unreached{std::numeric_limits<size_t>::max(), ComputeType(0)};
             cover_cost.assign(n + 1, unreached);
             cover_from.assign(n + 1, 0);
@@ -347,6 +326,8 @@ namespace rtl
         static constexpr size_t unbounded = std::numeric_limits<size_t>::max();
         static constexpr size_t block = 8;   // range starts per end bound (lowerBounds)
         static constexpr size_t state_cap = 1;   // states per point (+ 1024) of the first, unbounded round
+        static constexpr size_t fit_cap = 16;   // fits per point (+ 4096) of the first round
+        size_t fit_limit{unbounded};   // work_.fits beyond which the current round stops (the first round only)
         static constexpr size_t rest_cap = 4;   // states per point (+ 1024) of a round on the backward pass's bound
         // Rounds on the backward pass's bound: r and r + 1. On the corpus (direct strict searches of all 300 inputs)
         // the optimum was found at r 154 times, at r + 1 7 times, at r + 2 twice (seeds 169, 288), while a third
@@ -370,6 +351,7 @@ namespace rtl
         std::vector<Approximation> cand_lines;
         static constexpr uint32_t unknown = none - 1;
         std::vector<size_t> far, remaining, first_within;
+        std::vector<size_t> same_end;   // markRuns
         CornerReport failure_;
 
         struct Cost
@@ -408,9 +390,27 @@ namespace rtl
             return p.error < q.error;
         }
 
+        //! Marks the runs of identical points: same_end[i] is the end of the run of points equal to pts[i] from i.
+        void markRuns(const std::vector<VectorType> &pts, size_t n)
+        {
+            same_end.resize(n + 1);
+            same_end[n] = n;
+            for (size_t i = n; i-- > 0;)
+                same_end[i] = i + 1 < n && pts[i + 1] == pts[i] ? same_end[i + 1] : i + 1;
+        }
+
+        //! [b, e) is one run of identical points: its residual is exactly 0, whatever rounding its sums carry (far
+        //! from the origin they cancel into noise, which made such ranges fit at random: the quadratic cliff).
+        bool identical(size_t b, size_t e) const { return e <= same_end[b]; }
+
         bool fits(const SumArray &a, size_t b, size_t e, ComputeType &total)
         {
             ++work_.fits;
+            if (identical(b, e))
+            {
+                total = ComputeType(0);
+                return e - b == 2 || sigma2 > ComputeType(0);
+            }
             const auto s = a.sums(b, e);
             total = e - b <= 2 ? ComputeType(0) : Approximation::errorSquaredCompute(s) * static_cast<ComputeType>(e - b);
             return e - b == 2 || Approximation::errorBelow(s, sigma2);
@@ -452,7 +452,7 @@ namespace rtl
             {
                 if (x == 0 || !incoming[x].empty())
                     extend(pts, a, x, n, budget);
-                if (states.size() > cap)
+                if (states.size() > cap || work_.fits > fit_limit)
                 {
                     stopped_at = x + 1;
                     return false;
@@ -578,7 +578,14 @@ namespace rtl
             {
                 ++work_.fits;
                 const auto sums = a.sums(x, y);
-                const bool ok = y - x == 2 || Approximation::errorBelow(sums, sigma2);
+                const bool same = identical(x, y);
+                const bool ok = y - x == 2 || (same ? sigma2 > ComputeType(0) : Approximation::errorBelow(sums, sigma2));
+                if (same && !ok)
+                {
+                    // A zero sigma: no range of > 2 identical points fits; go on past the run.
+                    y = same_end[x];
+                    continue;
+                }
                 ComputeType total = 0;
                 if (!ok)
                     total = Approximation::errorSquaredCompute(sums) * static_cast<ComputeType>(y - x);
@@ -591,7 +598,7 @@ namespace rtl
                 {
                     const ComputeType reach = total / (ComputeType(1.01) * sigma2);
                     if (reach > static_cast<ComputeType>(y - x + 1))
-                        y = std::max(y, x + std::min(static_cast<size_t>(reach), n - x) - 1);
+                        y = std::max(y, x + (reach >= static_cast<ComputeType>(n - x) ? n - x : static_cast<size_t>(reach)) - 1);
                 }
             }
         }
@@ -602,7 +609,7 @@ namespace rtl
         //! meets, else 2 + v if any range from y has another count that is not none (assumed to meet), else none.
         //! So to_end[] never exceeds the exact count, and a range's predecessor has at most one more, which the
         //! bounded rounds need. Returns the bound for the whole chain (unbounded if no valid partition exists).
-        //! Evaluated on demand (toEnd, boundaryCounts; issue 15 item 7): to_end[r] lies in {1 + v_min[z], 2 + v_min[z],
+        //! Evaluated on demand (toEnd, boundaryCounts): to_end[r] lies in {1 + v_min[z], 2 + v_min[z],
         //! none} for r's end z, so lowerEnd(r) = 1 + v_min[z] bounds it from below without a corner test. The least
         //! count at y only needs the ranges from y whose lowerEnd does not exceed it (the others can neither have
         //! the least count nor be candidates), and a round only the ranges whose lowerEnd fits its budget; the rest

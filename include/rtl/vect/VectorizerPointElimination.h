@@ -24,14 +24,30 @@ namespace rtl
 {
     namespace vect_detail
     {
-        //! Segment a -> b; coincident end points get the first base vector as direction instead of NaN.
+        //! Segment a -> b whose direction is the unit vector along b - a however short or long the segment: it is
+        //! normalised after rescaling by its largest |component| (a subnormal difference, whose squares underflow to
+        //! 0, still points along the segment; a difference that overflows is taken as b / 2 - a / 2). Only
+        //! coincident end points (a degenerate segment, no direction of its own) get the first base vector.
+        //! Precondition: finite a and b.
         template<class Segment, class Vector>
         Segment makeSegment(const Vector &a, const Vector &b)
         {
+            typedef typename Vector::ElementType E;
             Vector d = b - a;
-            const auto len = d.length();
-            if (len > 0)
-                d /= len;
+            const int dims = static_cast<int>(d.data().size());
+            bool finite_d = true;
+            for (int q = 0; q < dims; ++q)
+                finite_d &= static_cast<bool>(std::isfinite(d[q]));
+            if (!finite_d)
+                d = b * E(0.5) - a * E(0.5);
+            E m = 0;
+            for (int q = 0; q < dims; ++q)
+                m = std::max(m, static_cast<E>(std::abs(d[q])));
+            if (m > 0 && std::isfinite(m))
+            {
+                d /= m;
+                d /= d.length();
+            }
             else
             {
                 d = Vector::zeros();
