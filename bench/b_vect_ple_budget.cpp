@@ -44,7 +44,7 @@ namespace
     struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
-    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1;
+    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1;
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
     {
@@ -54,6 +54,7 @@ namespace
         if (g_break_candidates >= 0) ex.setBreakCandidates(g_break_candidates);
         if (g_exact_breaks >= 0) ex.setExactBreakCosts(g_exact_breaks > 0);
         if (g_window >= 0) ex.setNeighbourRefinement(static_cast<std::size_t>(g_window));
+        if (g_trim >= 0) ex.setEndTrimming(g_trim > 0);
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -163,6 +164,7 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--data=", 7) == 0) dir = argv[i] + 7;
         else if (std::strncmp(argv[i], "--reps=", 7) == 0) reps = std::max(1, std::atoi(argv[i] + 7));
         else if (std::strncmp(argv[i], "--breaks=", 9) == 0) g_break_candidates = std::atoi(argv[i] + 9);
+        else if (std::strncmp(argv[i], "--trim=", 7) == 0) g_trim = std::atoi(argv[i] + 7);
         else if (std::strncmp(argv[i], "--window=", 9) == 0) g_window = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
     }

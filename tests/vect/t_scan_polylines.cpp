@@ -230,6 +230,35 @@ TEST(ScanPolylines2D, RealExcerptScoreMatchesTheMeasuredFigure)
     EXPECT_NEAR(f, 0.908772, 0.005);
 }
 
+TEST(ScanPolylines2D, EndTrimmingLeavesClutterAtAChainEndOut)
+{
+    // A wall y = 2 seen by beams at 45..135 degrees (1-degree steps), its first 10 returns 0.8 m short (clutter within
+    // the 1 m link distance, so one chain). With J = 2 (one segment) the plain extractor must span the clutter; with
+    // end trimming the segment starts at the wall and the 10 beams are left unexplained at 0.5^2 each.
+    std::vector<rtl::Vector2d> scan;
+    for (int d = 45; d <= 135; ++d)
+    {
+        const double a = d * M_PI / 180, r = 2 / std::sin(a) - (d < 55 ? 0.8 : 0.0);
+        scan.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    const double n = static_cast<double>(scan.size());
+    rtl::ScanPolylines2D<double> plain, trimmed;
+    plain.setMaxVertices(2);
+    trimmed.setMaxVertices(2);
+    trimmed.setEndTrimming(true);
+    ASSERT_TRUE(plain(scan));
+    ASSERT_TRUE(trimmed(scan));
+    EXPECT_NEAR(plain.explainedFraction(), 1.0, 1e-12);
+    EXPECT_NEAR(trimmed.explainedFraction(), (n - 10) / n, 1e-12);
+    EXPECT_NEAR(trimmed.score(), 10 * 0.25 / n, 1e-6);   // the wall itself is explained exactly
+    EXPECT_LT(trimmed.score(), 0.8 * plain.score());   // plain: about 0.040 (its line and LM compromise)
+    for (std::size_t i = 0; i < 10; ++i) EXPECT_TRUE(std::isnan(trimmed.expectedRanges()[i])) << i;
+    ASSERT_EQ(trimmed.polylines().size(), 1u);
+    ASSERT_EQ(trimmed.polylines()[0].size(), 2u);
+    EXPECT_NEAR(trimmed.polylines()[0][0].y(), 2.0, 1e-6);   // end vertices on their own (wall) beams
+    EXPECT_NEAR(trimmed.polylines()[0][1].y(), 2.0, 1e-6);
+}
+
 TEST(ScanPolylines2D, BadParametersThrowInvalidArgument)
 {
     rtl::ScanPolylines2D<double> ex;

@@ -46,6 +46,21 @@ namespace
         rec(0, k, 0.0);
         return best;
     }
+
+    //! Minimum over every choice of left-out head [0, a) and tail [b, n) (skip each per point) and every partition of
+    //! the rest into k ranges of >= 2 points.
+    double bruteForceTrimmed(const std::vector<double> &x, const std::vector<double> &y, std::size_t k, double skip)
+    {
+        const std::size_t n = x.size();
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a + 2 * k; b <= n; ++b)
+            {
+                const std::vector<double> xs(x.begin() + a, x.begin() + b), ys(y.begin() + a, y.begin() + b);
+                best = std::min(best, bruteForce(xs, ys, k) + skip * static_cast<double>(a + n - b));
+            }
+        return best;
+    }
 }
 
 TEST(ScanPolylinesPartition, MatchesBruteForceOnSmallChains)
@@ -87,6 +102,53 @@ TEST(ScanPolylinesPartition, MatchesBruteForceOnSmallChains)
             EXPECT_NEAR(sum, part.cost(k), 1e-9 * (1 + sum));
         }
     }
+}
+
+TEST(ScanPolylinesPartition, EndSkippingMatchesBruteForce)
+{
+    std::mt19937 rng(11);
+    std::normal_distribution<double> noise(0.0, 0.05);
+    std::uniform_real_distribution<double> turn(-1.5, 1.5), clutter(-0.6, 0.6);
+    std::size_t trimmed = 0;
+    for (int trial = 0; trial < 40; ++trial)
+    {
+        const std::size_t n = 3 + static_cast<std::size_t>(trial % 9);   // 3..11 points
+        std::vector<double> x(n), y(n);
+        double px = 3, py = 1, heading = turn(rng);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            if (i % 4 == 0) heading += turn(rng);
+            px += 0.2 * std::cos(heading); py += 0.2 * std::sin(heading);
+            x[i] = px + noise(rng); y[i] = py + noise(rng);
+        }
+        // clutter at one end or both, which a line fits worse than leaving it out
+        if (trial % 3 != 1) { x[0] += clutter(rng); y[0] += clutter(rng); }
+        if (trial % 3 != 0) { x[n - 1] += clutter(rng); y[n - 1] += clutter(rng); }
+        const double skip = 0.01;
+        ChainPartition part;
+        part.load(x.data(), y.data(), n);
+        part.setEndSkipCost(skip);
+        part.solve(10);
+        for (std::size_t k = 1; k <= part.maxSegments(); ++k)
+        {
+            const double brute = bruteForceTrimmed(x, y, k, skip);
+            EXPECT_NEAR(part.cost(k), brute, 1e-9 * (1 + brute)) << "n " << n << " k " << k;
+            EXPECT_LE(part.cost(k), bruteForce(x, y, k) + 1e-12);
+            // contiguous ranges of >= 2 points whose costs plus the left-out ends add up to cost(k)
+            const auto ranges = part.ranges(k);
+            ASSERT_EQ(ranges.size(), k);
+            double sum = skip * static_cast<double>(ranges.front().first + (n - 1 - ranges.back().second));
+            if (ranges.front().first > 0 || ranges.back().second < n - 1) ++trimmed;
+            for (std::size_t s = 0; s < k; ++s)
+            {
+                EXPECT_GE(ranges[s].second, ranges[s].first + 1);
+                if (s > 0) { EXPECT_EQ(ranges[s].first, ranges[s - 1].second + 1); }
+                sum += tlsError(x, y, ranges[s].first, ranges[s].second);
+            }
+            EXPECT_NEAR(sum, part.cost(k), 1e-9 * (1 + sum));
+        }
+    }
+    EXPECT_GT(trimmed, 10u);   // the clutter is really left out, so the skipping path is exercised
 }
 
 TEST(ScanPolylinesPartition, WeightedRangeCostIsTheWeightedTlsError)

@@ -101,6 +101,9 @@ namespace rtl
         //! Before the final allocation, candidates within this many vertices of each chain's first choice are refined
         //! and the budget allocated again on their refined costs (default 0: off).
         void setNeighbourRefinement(std::size_t window) { neighbour_window_ = window; }
+        //! Partitions may leave a chain's end beams out (each at the unexplained cost squared) when a line fits them
+        //! worse: clutter and curved ends at no vertex (true), or every partition spans its whole chain (false, default).
+        void setEndTrimming(bool on) { trim_ends_ = on; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
@@ -275,6 +278,7 @@ namespace rtl
             if (n < 2) return;
             radialWeights(cf, cl);
             part_.load(&px_[cf], &py_[cf], n, radial_weights_ ? weight_.data() : nullptr);
+            part_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
             part_.solve(max_vertices_ - 1);
             std::vector<scan_polylines::TlsFit> &fits = fits_;
             std::vector<BeamRange> &ranges = ranges_;
@@ -522,6 +526,7 @@ namespace rtl
         bool refine_ = true, radial_weights_ = false;
         int refine_candidates_ = 0;
         int break_rounds_ = 2;
+        bool trim_ends_ = false;
         std::size_t neighbour_window_ = 0;
         bool exact_breaks_ = false;
         std::vector<char> forced_;

@@ -6,6 +6,11 @@
 //   F[k][j] = min over i of F[k-1][i] + cost(points i..j-1),
 // gives every k's optimum in one pass: O(n^2) range costs, then at most O(K n^2) additions (the scan over the last
 // range stops as soon as that range's own error reaches the best total, see solve); O(n^2 + K n) memory.
+//
+// Optionally (setEndSkipCost) the ranges need not reach the chain's ends: points before the first range and after the
+// last are left out at a fixed cost each, so a chain's clutter or curved ends are dropped when a line fits them worse
+// than leaving them unexplained. The same programme, started from F[0][i] = i s and ended at min over j of
+// F[k][j] + (n - j) s: no extra order of work.
 #pragma once
 
 #include <algorithm>
@@ -47,6 +52,10 @@ namespace rtl::scan_polylines
         }
 
         [[nodiscard]] std::size_t size() const { return n_; }
+
+        //! Cost per point left out before the first range or after the last (> 0; 0 or less, the default: ranges
+        //! cover the whole chain). Takes effect at the next solve.
+        void setEndSkipCost(double s) { skip_ = s; }
 
         //! TLS error of points first..last (inclusive, last > first).
         [[nodiscard]] double rangeCost(std::size_t first, std::size_t last) const
@@ -94,6 +103,8 @@ namespace rtl::scan_polylines
             best_.assign((K_ + 1) * w, kInf);
             from_.assign((K_ + 1) * w, 0);
             best_[0] = 0;
+            if (skip_ > 0)
+                for (std::size_t i = 1; i <= n; ++i) best_[i] = static_cast<double>(i) * skip_;
             for (std::size_t k = 1; k <= K_; ++k)
             {
                 const double *prev = &best_[(k - 1) * w];
@@ -118,10 +129,25 @@ namespace rtl::scan_polylines
                     arg[j] = static_cast<std::uint32_t>(at);
                 }
             }
+            // Where the last range ends: the chain's end, or (skipping) wherever the left-out tail costs least.
+            end_.assign(K_ + 1, n);
+            total_.assign(K_ + 1, kInf);
+            for (std::size_t k = 0; k <= K_; ++k)
+            {
+                const double *row = &best_[k * w];
+                total_[k] = row[n];
+                if (skip_ > 0)
+                    for (std::size_t j = 2 * k; j < n; ++j)
+                    {
+                        const double v = row[j] + static_cast<double>(n - j) * skip_;
+                        if (v < total_[k]) { total_[k] = v; end_[k] = j; }
+                    }
+            }
         }
 
         [[nodiscard]] std::size_t maxSegments() const { return K_; }
-        [[nodiscard]] double cost(std::size_t k) const { return k <= K_ ? best_[k * (n_ + 1) + n_] : kInf; }
+        //! Optimum with k ranges, the left-out end points' cost included.
+        [[nodiscard]] double cost(std::size_t k) const { return k <= K_ ? total_[k] : kInf; }
 
         [[nodiscard]] std::vector<std::pair<std::size_t, std::size_t>> ranges(std::size_t k) const
         {
@@ -134,7 +160,7 @@ namespace rtl::scan_polylines
         void ranges(std::size_t k, std::vector<std::pair<std::size_t, std::size_t>> &out) const
         {
             out.resize(k);
-            std::size_t j = n_;
+            std::size_t j = end_[k];
             for (std::size_t s = k; s > 0; --s)
             {
                 const std::size_t i = from_[s * (n_ + 1) + j];
@@ -158,7 +184,9 @@ namespace rtl::scan_polylines
         }
 
         std::size_t n_ = 0, K_ = 0;
-        double x0_ = 0, y0_ = 0;
+        double x0_ = 0, y0_ = 0, skip_ = 0;
+        std::vector<std::size_t> end_;
+        std::vector<double> total_;
         std::vector<double> sums_, costs_, best_;
         std::vector<std::uint32_t> from_;
     };
