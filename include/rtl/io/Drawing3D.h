@@ -38,7 +38,8 @@ namespace rtl
         struct MarkItem
         {
             V3 p;
-            std::string mark;   // registered mark command, e.g. `\MarkA`
+            std::string mark;    // registered mark command, e.g. `\MarkA`
+            std::string style;   // registered name of the mark's style (for back-ends that do not run templates)
             float rotation, radius;
         };
         struct LineItem
@@ -163,9 +164,11 @@ namespace rtl
             V3 p = pos.data().cast<double>();
             if (!p.allFinite() || mark_style.empty() || mark_template.empty())
                 return;
-            // 3D marks take the perspective scale as a fourth argument.
-            mark_items.push_back({p, names.mark(mark_style, mark_template, "", "[4]", "shift={(#1,#2)}, rotate=#3, scale=#4"),
-                                  rotation, mark_radius});
+            // 3D marks take the perspective scale as a fourth argument. The mark registers its style first anyway, so
+            // naming the style here first changes no name.
+            std::string style = names.style(mark_style);
+            std::string mark = names.mark(mark_style, mark_template, "", "[4]", "shift={(#1,#2)}, rotate=#3, scale=#4");
+            mark_items.push_back({p, std::move(mark), std::move(style), rotation, mark_radius});
         }
         void addLine(const LineSegment3f &ls, const std::string &style)
         {
