@@ -204,8 +204,8 @@ namespace rtl
                       [](const CameraItem3D &a, const CameraItem3D &b) { return a.depth() > b.depth(); });
         }
 
-        //! Visits the tree back to front: onPoly(const CameraPoly3D &) for each polygon, onItems(const
-        //! std::vector<CameraItem3D> &) for each item list, sorted far to near (the lists are sorted in place).
+        //! Visits the tree back to front: `onPoly(const CameraPoly3D &)` for each polygon,
+        //! `onItems(const std::vector<CameraItem3D> &)` for each item list, sorted far to near (in place).
         template<class OnPoly, class OnItems>
         void paintBackToFront3D(DepthNode3D *node, OnPoly &&onPoly, OnItems &&onItems)
         {

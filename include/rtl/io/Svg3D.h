@@ -3,9 +3,9 @@
 //
 // Layout: 1 user unit = 1 cm; the picture is width x height cm with its centre at the centre of the SVG, y up in
 // the scene and down in SVG, a border around it, everything drawn clipped to the clip rectangle. Each face fill is
-// one <polygon>, each face outline run one <polyline>, each line (or piece of a line split by a face) one <line>,
-// each mark one <circle> (a dot of radius 0.1 cm times its perspective scale, filled with the style's fill or
-// draw colour: SVG cannot run TikZ mark templates), each axis label one <text>. The mark budget thins marks as in
+// one `<polygon>`, each face outline run one `<polyline>`, each line (or piece of a line split by a face) one `<line>`,
+// each mark one `<circle>` (a dot of radius 0.1 cm times its perspective scale, filled with the style's fill or
+// draw colour: SVG cannot run TikZ mark templates), each axis label one `<text>`. The mark budget thins marks as in
 // TikZ; TeX's dimensions do not apply.
 // Complexity: that of the depth ordering plus text linear in what is drawn. Output is deterministic (same scene,
 // same bytes) and independent of the locale.
