@@ -1,4 +1,4 @@
-// Segmenters at the same work as the published figures (issue 17): CAR at step 3 and at the paper's step 10, IA at
+// Segmenters at the same work as the published figures: CAR at step 3 and at the paper's step 10, IA at
 // step 3 and 10, bounds 0.01 - 0.1, closed synthetic scans with about 10 and about 10,000 clusters, 2D float.
 // Each time is a ratio to a floor measured in the same run that does the minimal work of the algorithm: for a window
 // of w points, the w lagged squared distances per point, compared with a per-point threshold and summed into a
@@ -8,18 +8,8 @@
 // so that the same source built against an older commit measures the speed-up at identical clusters:
 //     ROUNDS=7 bench/trace_overhead.sh bench/b_seg_same_work.cpp <base-commit>
 // Options: --smoke (tiny, for CTest), --reps=R, --sizes=100000,1000000,10000000 (default 100k and 1M).
-// Callgrind at de0a03f, instructions per IA scan (a fresh IA per scan, as here): step 10 ~10,000 clusters 36.5M at
-// 100k (c26034c 42.9M; 1ed97c0's message says 28.1M, a subtraction error: it was 44.9M -> 36.5M), 110M at 1M
-// (c26034c 311M). Its 10-point clusters never fill the window: every point takes the slot path.
-// Issue 17 item 2 (the window test ORs one tag word per lane, the evicted slot is not cleared before putSlot rewrites
-// it, closedClustersAvailable() reads a count): 36.4M -> 31.9M at 100k, 108.9M -> 97.8M at 1M; step 10 ~10 clusters
-// (tail mode) 7.35M -> 6.65M at 100k (GCC 12 -O3, the scan loop of b_seg_common.h's segmentIa, same clusters).
-// Issue 17 item 2, second pass (95161fa..22b28a0: parked alive lists, addToRing, evictFromRing/closeFromRing, the
-// last valid point's record as the window test's guess), counted on segmentIa's loop alone: 31.7M -> 26.3M at 100k
-// ~10,000 clusters step 10 (step 3 19.2M -> 17.7M), 95.7M -> 88.4M at 1M; tail mode 6.45M -> 6.25M. Time ratio to
-// c26034c at 100k ~10,000 clusters step 10: 0.86 -> 0.76. The tail-mode rows (~10 clusters, and 1M/10M) of this
-// binary move by +-10 % with the heap layout alone (one extra allocation before the IA rows swaps which of b9dd06b
-// and 22b28a0 is faster): compare them with a second layout before reading a few per cent into them.
+// Instruction counts and timings of the IA window's successive versions, and how far the tail-mode rows move with
+// the heap layout alone, are in docs/seg.md ("IA segmenter at the same work").
 #include <cmath>
 #include <cstdint>
 #include <cstdio>

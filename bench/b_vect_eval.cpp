@@ -1,4 +1,4 @@
-// FTLS/AFTLS on every cluster of real CARMEN logs (issue 11 items 5, 6; issue 12 item 1): segment each scan with
+// FTLS/AFTLS on every cluster of real CARMEN logs: segment each scan with
 // CAR (step 2, bounds 0.1 .. 0.5 m: the package defaults), vectorize every cluster of >= 3 points at sigma 0.03,
 // delta 0.3 (the package defaults) and count
 //   - false returns, split by the exact feasibility search's verdict (feasible = a valid partition exists),

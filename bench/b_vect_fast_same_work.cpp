@@ -1,10 +1,11 @@
-// FTLS/AFTLS at the same work as their floors (issue 17 items 1 and 3): the paper's semicircle (radius 8, noise
+// FTLS/AFTLS at the same work as their floors: the paper's semicircle (radius 8, noise
 // 0.01, sigma 0.03, delta 3) at 1e5, 1e6 and 1e7 points. Each figure is the median time of a vectorizer call on a
 // reused object divided by the median time of its floor, measured in interleaved rounds of the same run:
 //   2D floor: one pass accumulating x, y, x^2, y^2, xy in double (the 5 prefix-sum moments);
 //   3D floor: the 9 moments of a 3D point (semicircle in the xy plane, noise on all three axes).
 // AFTLS linear in n means its ratio stays flat from 1e5 to 1e7. --smoke: 1e3 points, one round. Also prints the
-// `time_ns` / `check` lines of bench/trace_overhead.sh (e.g. ROUNDS=7 bench/trace_overhead.sh bench/b_vect_fast_same_work.cpp c26034c).
+// `time_ns` / `check` lines of bench/trace_overhead.sh (e.g. ROUNDS=7 bench/trace_overhead.sh
+// bench/b_vect_fast_same_work.cpp <base-commit>).
 // Times are the thread's CPU time (CLOCK_THREAD_CPUTIME_ID): on the shared 2-core VM wall time also counts the
 // time the thread waits for a core (at load ~7 one wall-time run put AFTLS 2D at 5.5x the floor at 1M, the
 // CPU-time run right after at 1.45x).

@@ -1,4 +1,4 @@
-// FTLS/AFTLS 2D worst case against the typical case at the same n (issue 15 item 7): a corpus of 300 inputs like the
+// FTLS/AFTLS 2D worst case against the typical case at the same n: a corpus of 300 inputs like the
 // fuzz corpus's (300-1,500 points: noisy polylines with random corners, arcs, steps and spikes; sigma 0.01-0.06,
 // delta 0.05-3), each timed on a reused vectorizer (median of 3 calls, thread CPU time). Reported per vectorizer: the median and
 // the maximum time per point over the corpus and their ratio, the five slowest inputs (with their generator

@@ -1,9 +1,10 @@
 // Zero cost of the FTLS/AFTLS trace hooks when unused: the untraced API only, so the same source compiles against the
-// headers before tracing (commit 01fd332) and after; bench/trace_overhead.sh compares both builds in one run. Cases:
-// the semicircle of bench/b_vect_2d.cpp (r = 8, noise 0.01, 1e5 points) and the laser chains of tests/data (runs of
-// >= 10 finite points split at gaps > 0.5 m), sigma 0.03, delta 3. Prints `time_ns <case> <median ns per pass>` and
-// `check <case> <segments> <checksum>` (both builds must agree). AFTLS after the fix of issue 11.5 also runs FTLS's
-// continuity pass on a copy (it keeps the better result), so its ratio includes that work, not only the hooks.
+// headers before tracing (the base commit given to trace_overhead.sh) and after; bench/trace_overhead.sh compares both
+// builds in one run. Cases: the semicircle of bench/b_vect_2d.cpp (r = 8, noise 0.01, 1e5 points) and the laser chains
+// of tests/data (runs of >= 10 finite points split at gaps > 0.5 m), sigma 0.03, delta 3. Prints `time_ns <case>
+// <median ns per pass>` and `check <case> <segments> <checksum>` (both builds must agree). AFTLS (which keeps the
+// better of its own and FTLS's result) also runs FTLS's continuity pass on a copy, so its ratio includes that work,
+// not only the hooks.
 #include <cmath>
 #include <cstdio>
 #include <random>

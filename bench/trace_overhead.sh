@@ -3,7 +3,7 @@
 # base commit (before tracing) and against the current headers, with identical flags, run alternately in the same
 # session; prints the median time of each and the ratio current / base per case.
 #
-#   bench/trace_overhead.sh <bench-source.cpp> [base-commit, default 01fd332]
+#   bench/trace_overhead.sh <bench-source.cpp> [base-commit, default: the last commit before tracing, set below]
 #   environment: ROUNDS (runs of each binary, default 7), CXX (default g++), CXXFLAGS_EXTRA (added to both builds),
 #                BENCH_ARGS (passed to both binaries, e.g. --smoke), INSTRUCTIONS=1 (also count the instructions each
 #                binary executes, once, under valgrind's callgrind: deterministic, immune to the machine's load)

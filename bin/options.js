@@ -37,6 +37,12 @@ const SPEC = {
   dim: { value: true },
   camera: { value: true },
   output: { short: 'o', value: true },
+  topic: { value: true },
+  start: { value: true },
+  end: { value: true },
+  jobs: { short: 'j', value: true },
+  progress: {},
+  'no-progress': {},
   help: { short: 'h' },
   version: {},
 };
@@ -44,7 +50,18 @@ const SHORT = Object.fromEntries(Object.entries(SPEC).filter(([, s]) => s.short)
 
 export const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
 const FORMATS = ['json', 'svg', 'tikz'];
-const TYPES = ['carmen', 'bin', 'csv'];
+const TYPES = ['carmen', 'bin', 'csv', 'mcap', 'bag'];
+const LOG_TYPES = ['mcap', 'bag'];
+
+export function typeOfFile(file) {
+  const ext = extname(file).toLowerCase();
+  if (ext === '.log' || ext === '.carmen' || ext === '.clf') return 'carmen';
+  if (ext === '.bin') return 'bin';
+  if (ext === '.csv' || ext === '.txt' || ext === '.xyz') return 'csv';
+  if (ext === '.mcap') return 'mcap';
+  if (ext === '.bag') return 'bag';
+  return undefined;
+}
 
 function editDistance(a, b) {
   let prev = Array.from({ length: b.length + 1 }, (_, j) => j);
@@ -119,8 +136,12 @@ function camera(text) {
 export function parseCommandLine(argv) {
   const { values: v, positionals } = splitArgv(argv);
   if (v.help || v.version) return { help: v.help, version: v.version };
-  if (positionals.length !== 1) {
-    throw new UsageError(positionals.length === 0 ? 'missing input file' : `expected one input file, got ${positionals.length}: ${positionals.join(' ')}`);
+  if (positionals.length === 0) throw new UsageError('missing input file');
+  // Several inputs: robot logs only (each one processed whole, --jobs at a time).
+  if (positionals.length > 1) {
+    const forced = v.type?.toLowerCase();
+    const notLog = positionals.find((f) => !LOG_TYPES.includes(forced ?? typeOfFile(f)));
+    if (notLog !== undefined) throw new UsageError(`expected one input file, got ${positionals.length}: ${positionals.join(' ')} (several inputs must all be .mcap or .bag logs; "${notLog}" is not)`);
   }
 
   const num = (name, def, { min = -Infinity, integer = false, positive = false } = {}) => {
@@ -143,18 +164,23 @@ export function parseCommandLine(argv) {
   const file = positionals[0];
   let type = oneOf('type', TYPES, undefined);
   if (!type) {
-    const ext = extname(file).toLowerCase();
-    if (ext === '.log' || ext === '.carmen' || ext === '.clf') type = 'carmen';
-    else if (ext === '.bin') type = 'bin';
-    else if (ext === '.csv' || ext === '.txt' || ext === '.xyz') type = 'csv';
-    else throw new UsageError(`cannot tell the input type of "${file}" from its extension; pass --type carmen|bin|csv`);
+    type = typeOfFile(file);
+    if (!type) throw new UsageError(`cannot tell the input type of "${file}" from its extension; pass --type carmen|bin|csv|mcap|bag`);
   }
+  const isLog = LOG_TYPES.includes(type);
   const noSegment = Boolean(v['no-segment'] || v.raw);
   if (noSegment && v.segment) throw new UsageError(`--segment and ${v.raw ? '--raw' : '--no-segment'} contradict each other`);
   const segmenter = oneOf('segmenter', ['car', 'ia'], 'car');
   const opts = {
     file,
+    files: positionals,
     type,
+    isLog,
+    topic: v.topic,
+    start: num('start', undefined, { min: 0 }),
+    end: num('end', undefined, { min: 0 }),
+    jobs: num('jobs', undefined, { min: 1, integer: true }),
+    progress: v['no-progress'] ? false : v.progress ? true : undefined,
     scan: num('scan', 0, { min: 0, integer: true }),
     maxRange: num('max-range', undefined, { positive: true }),
     beams: num('beams', undefined, { integer: true, positive: true }),
@@ -191,8 +217,21 @@ export function parseCommandLine(argv) {
       if (v[k] !== undefined) throw new UsageError(`--${k} applies to segmentation, not with ${v.raw ? '--raw' : '--no-segment'}`);
     }
   }
+  if (isLog) {
+    for (const k of ['beams', 'layout']) if (v[k] !== undefined) throw new UsageError(`--${k} applies to binary scans only (a log's PointCloud2 says its own)`);
+    if (opts.ring !== undefined && opts.column !== undefined) throw new UsageError('pass either --ring or --column, not both');
+    if (opts.start !== undefined && opts.end !== undefined && opts.end < opts.start) throw new UsageError(`--end (${opts.end}) must not be before --start (${opts.start})`);
+    if (v.progress && v['no-progress']) throw new UsageError('--progress and --no-progress contradict each other');
+    if (opts.format !== 'json') {
+      if (!opts.output || !opts.output.includes('%d')) throw new UsageError(`--format ${opts.format} on a log writes one file per scan: pass --output with %d (the scan index), e.g. -o scan-%d.${opts.format === 'svg' ? 'svg' : 'tex'}`);
+      if (positionals.length > 1 && !opts.output.includes('%f')) throw new UsageError('several logs with --format svg/tikz: --output needs %f (the log name) as well as %d');
+    }
+    if (positionals.length > 1 && opts.format === 'json' && opts.output?.includes('%f')) throw new UsageError('JSON Lines of several logs go to one file (each line names its log): --output must not contain %f');
+  } else {
+    for (const k of ['topic', 'start', 'end', 'jobs', 'progress', 'no-progress']) if (v[k] !== undefined) throw new UsageError(`--${k} applies to robot logs (.mcap, .bag) only`);
+  }
   if (opts.type !== 'bin') {
-    for (const k of ['beams', 'ring', 'column', 'layout']) if (v[k] !== undefined) throw new UsageError(`--${k} applies to binary scans only`);
+    if (!isLog) for (const k of ['beams', 'ring', 'column', 'layout']) if (v[k] !== undefined) throw new UsageError(`--${k} applies to binary scans only`);
   } else {
     if (opts.beams === undefined) throw new UsageError('a binary scan needs --beams N (the number of rings)');
     if (opts.ring !== undefined && opts.column !== undefined) throw new UsageError('pass either --ring or --column, not both');

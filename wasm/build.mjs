@@ -135,6 +135,16 @@ copyFileSync(join(JS, 'index.d.ts'), join(DIST, 'index.d.ts'));
 writeFileSync(join(DIST, 'index.d.cts'), commonJsTypes(readFileSync(join(JS, 'index.d.ts'), 'utf8')));
 copyFileSync(join(ROOT, 'wasm', 'NOTICE.md'), join(DIST, 'NOTICE.md'));
 
+// ---- ROS subpath exports (rtl-wasm/ros, rtl-wasm/logs, rtl-wasm/log-worker): plain ES modules copied as they are into
+// dist/ros/. They import the optional peer dependencies (@mcap/*, @foxglove/*) at run time, so they are not bundled.
+{
+  const { readdirSync } = await import('node:fs');
+  mkdirSync(join(DIST, 'ros'), { recursive: true });
+  for (const f of readdirSync(join(JS, 'ros')).filter((n) => n.endsWith('.js') || n.endsWith('.d.ts')))
+    copyFileSync(join(JS, 'ros', f), join(DIST, 'ros', f));
+}
+// ---- end of the ROS subpath exports
+
 console.log(`dist/ ready (rtl-wasm ${pkg.version}): rtl.wasm ${readFileSync(join(DIST, 'rtl.wasm')).length} bytes`);
 // The size as issue 14's goal counts it (tests/js/pack.test.mjs asserts it): what a browser loads, each file by gzip -9.
 if (hasCommand('gzip')) {

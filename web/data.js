@@ -9,6 +9,7 @@ export const DATASETS = {
 
 export function createData(rtl) {
   const cache = new Map();
+  const done = new Map();   // data sets read to the end: name -> scans (for synchronous use after load())
 
   // Every scan of a data set: { points (x,y interleaved, NaN = no return), x, y, theta } (robot frame + pose).
   async function load(name) {
@@ -24,9 +25,20 @@ export function createData(rtl) {
         for (let c = 0; c < cloud.columns; c++) { points[2 * c] = ring[3 * c]; points[2 * c + 1] = ring[3 * c + 1]; }
         return { points, x: 0, y: 0, theta: 0, ring: b };
       });
-    })());
+    })().then((scans) => { done.set(name, scans); return scans; }));
     return cache.get(name);
   }
+
+  // A data set read elsewhere (the user's own file, web/open-data.js): `scans` as load() gives them. Replaces an
+  // earlier one of the same name.
+  function addDataset(name, { label, unit = 'scan', scans }) {
+    DATASETS[name] = { label, unit, user: true };
+    cache.set(name, Promise.resolve(scans));
+    done.set(name, scans);
+  }
+
+  // The scans of a data set already read by load(), or null (not read yet).
+  const loaded = (name) => done.get(name) ?? null;
 
   // The cloud itself (for the 3D view), read once.
   async function loadCloud(name = 'rellis') {
@@ -76,5 +88,5 @@ export function createData(rtl) {
 
   const describe = (name, index) => `${DATASETS[name].label}, ${DATASETS[name].unit} ${index}`;
 
-  return { DATASETS, load, loadCloud, scan, beams, gather, finite, cluster, describe };
+  return { DATASETS, addDataset, load, loaded, loadCloud, scan, beams, gather, finite, cluster, describe };
 }

@@ -19,6 +19,8 @@ export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2
 //                                                         both points (bounded: only between them)
 //   { type: 'marker', x, y, colour?, size?, shape? }       a highlighted point (size in CSS px), shape 'ring' | 'dot' | 'x'
 //   { type: 'label', x, y, text, colour?, bold?, offset? }  offset: [dx, dy] CSS px from the point (default 6, -6)
+// Any item may carry `q: name`, the quantity of the explanation it draws (web/text-link.js): the figure draws the
+// items of its highlighted quantity over a halo.
 // and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
 export class Scene {
   constructor(title = '') { this.title = title; this.items = []; this.inset = null; }
@@ -31,6 +33,18 @@ export class Scene {
   marker(x, y, opts = {}) { return this.add({ type: 'marker', x, y, ...opts }); }
   label(x, y, text, opts = {}) { return this.add({ type: 'label', x, y, text, ...opts }); }
   setInset(chart) { this.inset = chart; return this; }
+}
+
+// The same item, wider and in the halo colour, drawn under it when its quantity is highlighted.
+const HALO = '#FFC400';
+function haloOf(it) {
+  const h = { ...it, colour: HALO, dash: false, width: (it.width ?? 1.5) + 6 };
+  if (it.type === 'points') h.radius = (it.radius ?? 2.5) + 3.5;
+  if (it.type === 'marker') { h.size = (it.size ?? 7) + 3; h.shape = it.shape === 'x' ? 'x' : 'dot'; }
+  if (it.type === 'label') h.bold = true;
+  if (it.type === 'strip') h.colour = '#FFC400';
+  if (it.type === 'circle') h.fill = undefined;
+  return h;
 }
 
 // The two ends, far outside any view, of the line through (x0, y0) and (x1, y1) (for strips and unbounded lines).
@@ -47,6 +61,8 @@ export class Figure {
     this.home = { minX: -1, maxX: 1, minY: -1, maxY: 1 };   // the extent the lesson asked for
     this.zoom = null;                                           // the user's extent after zoom/pan, or null
     this.view = null;                                           // world <-> canvas transform of the last draw
+    this.highlighted = null;                                    // the quantity (item.q) drawn with a halo
+    this.overlay = [];                                          // items over the scene (setOverlay)
     this.wire();
     // redraw after layout, not inside the observer (a canvas resize there would re-enter the layout loop)
     this.resizeObserver = new ResizeObserver(() => requestAnimationFrame(() => this.render()));
@@ -118,7 +134,17 @@ export class Figure {
 
   // ---- drawing --------------------------------------------------------------------------------------------------
 
-  show(scene) { this.scene = scene; this.render(); }
+  show(scene) { this.scene = scene; this.overlay = []; this.render(); }
+
+  // Items drawn over the scene until the next show() (a question's candidate points, web/predict.js).
+  setOverlay(items) { this.overlay = items; this.render(); }
+
+  // Draws the items of quantity `name` (item.q) over a halo; null: none.
+  highlight(name) {
+    if (name === this.highlighted) return;
+    this.highlighted = name;
+    this.render();
+  }
 
   layout() {
     const c = this.canvas, dpr = window.devicePixelRatio || 1;
@@ -128,7 +154,11 @@ export class Figure {
     const scale = Math.min(W / Math.max(e.maxX - e.minX, 1e-9), H / Math.max(e.maxY - e.minY, 1e-9));
     const cx = (e.minX + e.maxX) / 2, cy = (e.minY + e.maxY) / 2;
     const minX = cx - W / scale / 2, maxX = cx + W / scale / 2, minY = cy - H / scale / 2, maxY = cy + H / scale / 2;
-    this.view = { W, H, dpr, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
+    // text size: CSS decides (--figure-text-scale, e.g. larger in lecture mode); t = pixels per CSS px of text
+    // and marks (points, markers, line widths): --figure-mark-scale; m = pixels per CSS px of a mark
+    const css = getComputedStyle(c);
+    const textScale = Number(css.getPropertyValue('--figure-text-scale')) || 1, markScale = Number(css.getPropertyValue('--figure-mark-scale')) || 1;
+    this.view = { W, H, dpr, t: dpr * textScale, m: dpr * markScale, scale, minX, maxX, minY, maxY, X: (x) => (x - minX) * scale, Y: (y) => (maxY - y) * scale };
   }
 
   render() {
@@ -139,14 +169,18 @@ export class Figure {
     ctx.fillStyle = '#ffffff';
     ctx.fillRect(0, 0, v.W, v.H);
     this.drawScale();
-    for (const item of this.scene.items) this.drawItem(item);
+    for (const item of this.scene.items) {
+      if (this.highlighted && item.q === this.highlighted) this.drawItem(haloOf(item));
+      this.drawItem(item);
+    }
+    for (const item of this.overlay) this.drawItem(item);
     if (this.scene.inset) this.drawInset(this.scene.inset);
     this.drawTitle();
   }
 
   // The scene's title on top, as in the exported SVG/TikZ (shortened with an ellipsis when it does not fit).
   drawTitle() {
-    const { ctx } = this, v = this.view, d = v.dpr, t = this.scene.title;
+    const { ctx } = this, v = this.view, d = v.t, t = this.scene.title;
     if (!t) return;
     ctx.font = `${12 * d}px system-ui, sans-serif`;
     let text = t;
@@ -159,7 +193,7 @@ export class Figure {
   }
 
   drawItem(it) {
-    const { ctx } = this, v = this.view, d = v.dpr;
+    const { ctx } = this, v = this.view, d = v.m;
     ctx.setLineDash(it.dash ? [5 * d, 4 * d] : []);
     ctx.lineWidth = (it.width ?? 1.5) * d;
     ctx.strokeStyle = it.colour ?? INK.segment;
@@ -219,7 +253,7 @@ export class Figure {
         break;
       }
       case 'label':
-        ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * d}px system-ui, sans-serif`;
+        ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * v.t}px system-ui, sans-serif`;
         ctx.fillStyle = it.colour ?? INK.segment;
         ctx.fillText(it.text, v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d);
         break;
@@ -237,7 +271,7 @@ export class Figure {
     const x = 12 * d, y = v.H - 12 * d;
     ctx.strokeStyle = '#5a6475'; ctx.fillStyle = '#5a6475'; ctx.lineWidth = 2 * d;
     ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + len * v.scale, y); ctx.stroke();
-    ctx.font = `${11 * d}px system-ui, sans-serif`;
+    ctx.font = `${11 * v.t}px system-ui, sans-serif`;
     ctx.fillText(len >= 1 ? `${len} m` : `${Math.round(len * 1000)} mm`, x, y - 5 * d);
   }
 

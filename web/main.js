@@ -7,6 +7,11 @@ import { createData } from './data.js';
 import { Figure } from './figure.js';
 import { Player } from './player.js';
 import { download, exportArguments, figureSvg, figureTikz } from './export.js';
+import { wireLecture } from './lecture.js';
+import { Predict } from './predict.js';
+import { wireTextLink } from './text-link.js';
+import { wireOpenData } from './open-data.js';
+import { applyControls, formatHash, parseHash, readControls } from './link-state.js';
 import LESSONS from './lessons/index.js';
 
 const $ = (id) => document.getElementById(id);
@@ -19,7 +24,7 @@ const hook = (window.__rtl = {
 window.addEventListener('error', (e) => { if (!/^ResizeObserver loop/.test(e.message)) hook.errors.push(String(e.message)); });
 window.addEventListener('unhandledrejection', (e) => hook.errors.push(String(e.reason?.message ?? e.reason)));
 
-const state = { rtl: null, data: null, lesson: null, instance: null, figure: null, player: null, opening: 0 };
+const state = { rtl: null, data: null, lesson: null, instance: null, figure: null, player: null, opening: 0, written: null, source: null };
 
 function setStatus(text, isError = false) {
   const el = $('status');
@@ -51,7 +56,40 @@ function showStep(k) {
   }
   const e = entry(lesson.id);
   e.step = k;
+  state.predict?.stepped(k);
+  writeLink();
   hook.revision += 1;
+}
+
+// The view's link: the open lesson, its form's parameters and the step (web/link-state.js). Written in place
+// (replaceState), so stepping does not fill the history, and remembered so that our own write is not reopened.
+function currentHash() {
+  const { lesson, player } = state;
+  const steps = entry(lesson.id).steps;
+  return formatHash(lesson.id, readControls($('lesson-controls')), steps > 0 ? player.step + 1 : null, state.source);
+}
+function writeLink() {
+  if (!state.instance || !state.lesson) return;
+  const hash = currentHash();
+  if (hash === location.hash) return;
+  state.written = hash;
+  history.replaceState(history.state, '', hash);
+}
+
+async function copyLink() {
+  writeLink();
+  const url = location.href, out = $('link-status');
+  try {
+    await navigator.clipboard.writeText(url);
+    out.textContent = 'Link copied: it opens this lesson with these parameters at this step.';
+  } catch {
+    // no clipboard (permission refused, insecure origin): show the link selected, ready for Ctrl+C
+    out.replaceChildren('Copy this link: ');
+    const field = Object.assign(document.createElement('input'), { type: 'text', readOnly: true, value: url, className: 'link-field' });
+    field.setAttribute('aria-label', 'Link to this view');
+    out.append(field);
+    field.select();
+  }
 }
 
 function reportError(e) {
@@ -61,6 +99,7 @@ function reportError(e) {
 }
 
 // Recomputes the open lesson's trace (after a parameter change) and reloads the player, keeping its place.
+// keepAt: 'start' = the lesson's own first step (or its jump); { exact: k } = step k whatever the lesson says (a link).
 function recompute(keepAt) {
   const { instance, lesson } = state;
   if (!instance) return;
@@ -71,16 +110,28 @@ function recompute(keepAt) {
     reportError(e);
   }
   entry(lesson.id).steps = steps;
-  state.player.load(steps, keepAt === 'start' ? jump ?? start : jump ?? keepAt ?? state.player.step);
+  state.predict.attach(instance);   // a new trace: its questions start afresh
+  const at = keepAt?.exact ?? (keepAt === 'start' ? jump ?? start : jump ?? keepAt ?? state.player.step);
+  state.player.load(steps, at);
 }
 
-async function open(id) {
-  const lesson = LESSONS.find((l) => l.id === id) ?? LESSONS[0];
+// Opens the lesson of a hash ("#dp", or a link "#dp?epsilon=0.06&at=5": its parameters and step restored).
+async function open(hash) {
+  const link = parseHash(hash);
+  const lesson = LESSONS.find((l) => l.id === link.id) ?? LESSONS[0];
+  // a link's data source: a bundled log, or a file opened in this page (a file cannot travel in a link)
+  let sourceNote = '';
+  if (link.src) {
+    const d = state.data.DATASETS[link.src.dataset];
+    if (d && d.unit === 'scan' || state.data.loaded(link.src.dataset)) state.source = link.src;
+    else sourceNote = `This link's data (${link.src.dataset}) is a file opened in another page: open the file here to see it. `;
+  }
   const ticket = ++state.opening;
   state.player.pause();
   if (state.instance) { try { state.instance.dispose(); } catch (e) { reportError(e); } }
   state.figure?.dispose();
   state.instance = null;
+  state.predict.attach(null);
   state.lesson = lesson;
   hook.current = lesson.id;
   for (const a of $('lesson-menu').querySelectorAll('a')) {
@@ -101,7 +152,7 @@ async function open(id) {
   $('canvas-box').replaceChildren(canvas);
   state.figure = new Figure(canvas);
   const host = {
-    rtl: state.rtl, data: state.data, figure: state.figure,
+    rtl: state.rtl, data: state.data, figure: state.figure, source: state.source,
     controls: $('lesson-controls'), text: $('lesson-text'), stage: $('lesson-stage'),
     onParamsChanged: () => { if (state.instance && state.lesson === lesson) recompute(); },
     goTo: (k) => { state.player.pause(); state.player.go(k); },
@@ -110,9 +161,11 @@ async function open(id) {
   try {
     const instance = await lesson.create(host);
     if (ticket !== state.opening) { instance.dispose(); return; }
+    // a link's parameters go into the form before the first trace (the lesson reads its form in recompute())
+    const refused = applyControls(host.controls, link.params);
     state.instance = instance;
-    recompute('start');
-    setStatus('');
+    recompute(link.at ? { exact: link.at - 1 } : 'start');
+    setStatus(sourceNote + (refused.length ? `This link's ${refused.join(', ')} do not apply to this lesson; the defaults are shown.` : ''), Boolean(sourceNote));
   } catch (e) {
     reportError(e);
   }
@@ -123,6 +176,8 @@ async function open(id) {
 async function main() {
   buildMenu();
   state.player = new Player($('player'), showStep);
+  state.predict = new Predict({ root: $('predict'), toggle: $('your-turn'), player: state.player, figure: () => state.figure });
+  hook.predict = () => ({ on: state.predict.on, step: state.predict.pending ? state.predict.pending.step : null, score: { ...state.predict.score } });
   try {
     state.rtl = await init();
   } catch (e) {
@@ -144,8 +199,24 @@ async function main() {
   $('dl-svg').addEventListener('click', () => download(`${name()}.svg`, 'image/svg+xml', figureSvg(state.rtl, state.figure)));
   $('dl-tikz').addEventListener('click', () => download(`${name()}.tex`, 'text/x-tex', figureTikz(state.rtl, state.figure)));
   $('reset-view').addEventListener('click', () => state.figure?.resetView());
-  window.addEventListener('hashchange', () => open(location.hash.slice(1)));
-  await open(location.hash.slice(1));
+  $('copy-link').addEventListener('click', copyLink);
+  // the user's own data: the lesson reopens (its defaults) on the chosen scan
+  wireOpenData({
+    data: state.data, input: $('open-file'), progressBar: $('open-progress'), message: $('open-message'), chooser: $('scan-chooser'),
+    onSource: (src) => { state.source = src; $('own-data').open = true; const hash = formatHash(state.lesson.id, [], null, src); state.written = hash; history.pushState(null, '', hash); open(hash); },
+  });
+  hook.source = () => state.source && { ...state.source };
+  const textLink = wireTextLink($('lesson-text'), () => state.figure);
+  hook.highlighted = () => textLink.current();
+  hook.lecture = wireLecture({ player: state.player, button: $('lecture'), onChange: () => state.figure?.render() });
+  // a parameter the lesson redraws without a new trace (a selected point) changes the link too
+  $('lesson-controls').addEventListener('input', () => queueMicrotask(writeLink));
+  hook.link = () => { writeLink(); return location.href; };
+  // a new hash (a link, the menu, Back/Forward over our replaced entries) opens its view; our own writes do not
+  const navigate = () => { if (location.hash !== state.written) { state.written = location.hash; open(location.hash); } };
+  window.addEventListener('hashchange', navigate);
+  window.addEventListener('popstate', navigate);
+  await open(location.hash);
 }
 
 main();

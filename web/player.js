@@ -10,6 +10,7 @@ export class Player {
     this.steps = 0;
     this.step = 0;
     this.timer = null;
+    this.gate = null;   // (from, to) => the step a forward move may reach (web/predict.js)
     root.classList.add('player');
     root.innerHTML = `
       <div class="player-buttons">
@@ -59,7 +60,9 @@ export class Player {
 
   go(k, force = false) {
     if (this.steps === 0) { this.step = 0; this.render(); this.onStep(-1); return; }
-    const next = Math.min(Math.max(0, k), this.steps - 1);
+    let next = Math.min(Math.max(0, k), this.steps - 1);
+    // a forward move asks the gate first (the "your turn" mode stops before a step it asks about)
+    if (!force && this.gate && next > this.step) next = this.gate(this.step, next);
     if (next === this.step && !force) return;
     this.step = next;
     this.render();

@@ -5,9 +5,8 @@
 //     adapter code (wasm/src/*_ops.h) in tests/tools/rtl_native ($RTL_NATIVE_BUILD_DIR/tools, default build/native)
 //     with the JS defaults (FTLS split at corners), the median of 5 calls per round on objects reused between them
 //     (the first, cold call is the slowest and never the median); wasm = the library's own time of the call
-//     (lastComputeMs: the kept objects are reused too), also the median of 5 calls in a row per round. (Until
-//     issue 17's stop 26 the wasm side made one call per round, right after the native process had run: on cold
-//     caches, against the native side's warm median, e.g. DP at 100k 1.63x native that way, 1.2x with both warm.) Two ratios per case (issue 17 item 4's goals):
+//     (lastComputeMs: the kept objects are reused too), also the median of 5 calls in a row per round. (Why five:
+//     docs/bench.md, "Measuring wasm against native".) Two ratios per case, each with its goal:
 //     wasm library / native (<= 1.25) and time outside the library / library (< 10 % at 100k), the outside time
 //     being the whole JS call minus its library time, per round. The kept counts (segments, clusters) of both
 //     sides are checked equal. The native tool is one process for the whole run (see native() below). "faults":

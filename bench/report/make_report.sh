@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed report of ./run bench (issue 17.6; bench/report/README.md): times the vectorizers and segmenters
+# The speed report of ./run bench (bench/report/README.md): times the vectorizers and segmenters
 # natively (speed_native) and through the package (speed_wasm.mjs, dist/), size by size so that both sides of one
 # size are measured seconds apart, draws the figures (speed_figure: TikZ and SVG), compiles the TikZ with pdflatex
 # and writes report.md with the tables and the machine.

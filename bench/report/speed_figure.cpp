@@ -1,4 +1,4 @@
-// Draws the speed report's figures and tables from the TSVs of speed_native and speed_wasm.mjs (issue 17.6), with
+// Draws the speed report's figures and tables from the TSVs of speed_native and speed_wasm.mjs, with
 // the library's own Drawing2D written by its TikZ and SVG back-ends: time per point against the number of points,
 // log-log, one colour and mark per algorithm, native solid, wasm dashed, the floors in grey, a legend in the
 // corner the curves leave free. Two figures: the paper's "Speed benchmark of vectorization algorithms" (FTLS,

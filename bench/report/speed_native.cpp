@@ -1,4 +1,4 @@
-// The paper's speed figure, native side (issue 17.6): time per point of FTLS, incremental TLS, Douglas-Peucker,
+// The paper's speed figure, native side: time per point of FTLS, incremental TLS, Douglas-Peucker,
 // Reumann-Witkam on the paper's semicircle (radius 8, noise 0.01; sigma 0.03, delta 3, epsilon 0.09) and of the
 // CAR and IA segmenters at RTL's step 10, bounds 0.01-0.1, on a closed scan of 10 walls (the semicircle's 0.01
 // noise is the lower bound itself: it would cut it into a number of clusters that grows with n), at n = 10, 30,

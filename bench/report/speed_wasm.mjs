@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// The paper's speed figure, package side (issue 17.6): the calls of speed_native.cpp through rtl-wasm (dist/, built
+// The paper's speed figure, package side: the calls of speed_native.cpp through rtl-wasm (dist/, built
 // by `npm run build`) on the same points, which speed_native wrote with --points=DIR: FTLS (sigma 0.03, delta 3,
 // strict as RTL), incremental TLS (sigma 0.03), Douglas-Peucker and Reumann-Witkam (epsilon 0.09) on the
 // semicircle; segment() (CAR, step 10, bounds 0.01-0.1) and a StreamSegmenter (IA, step 9 with CAR step 10's

@@ -1,8 +1,10 @@
 // Umbrella header of the transformation module: N-D translations, rotations and rigid transformations, the generic
-// GeneralTf holder, transformation chains and trees, and the 2D/3D aliases (rtl-api §3.4).
+// GeneralTf holder, transformation chains and trees, and the 2D/3D aliases
+// (docs/reference.md, "Transformation aliases").
 #pragma once
 
-// Standard headers that code using the transformation module (and its tests) relies on transitively (rtl-api §1.2).
+// Standard headers that code using the transformation module (and its tests) relies on transitively
+// (docs/reference.md, "Umbrella headers and transitive includes").
 #include <limits>
 #include <list>
 #include <map>

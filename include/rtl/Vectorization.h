@@ -36,6 +36,7 @@
 #include "rtl/vect/PrecArray.h"
 #include "rtl/vect/PrecArrayBlocked.h"
 #include "rtl/vect/PrecSums.h"
+#include "rtl/vect/ScanPolylines2D.h"
 #include "rtl/vect/SimplifyCompatible.h"
 #include "rtl/vect/SimplifyTrace.h"
 #include "rtl/vect/VectorizerPointElimination.h"

@@ -157,7 +157,8 @@ TEST(StdLib, CoreFormats)
 
 TEST(StdLib, RvalueStreamIdiomFindsOperatorsByAdl)
 {
-    // Regression (published defect, rtl-api §1.5): with the operators at global scope this did not compile.
+    // Regression (published defect; docs/reference.md, "Stream operators and argument-dependent lookup"): with the
+    // operators at global scope this did not compile.
     const rtl::Vector2f v1(1, 2);
     const rtl::Matrix22f m = rtl::Matrix22f::identity();
     const std::string s = static_cast<std::ostringstream &&>((std::ostringstream() << "v = " << v1 << ", m = " << m)).str();

@@ -11,7 +11,7 @@
 //   valid input at moderate coordinates, polylineOffsets consistent with breaks();
 // - 3D: a partition whose ranges fit sigma, finite segments;
 // - the work budget (deterministic, not a time): the exact search's corner work stays within a log factor of its
-//   fits (testing every incoming line against every candidate range, issue 15 item 7, broke this), the search
+//   fits (testing every incoming line against every candidate range broke this once), the search
 //   runs at most once per FTLS call and once per AFTLS call (both branches share it), and at moderate coordinates
 //   its states stay within what PartitionSearch2D guarantees: each round pushes every fitting range at most once
 //   (F of them, counted here in long double), the first round stops past 2 N + 1024 states, then at most two

@@ -1,5 +1,6 @@
-// LaTeXDoc's steps and captions, observed through its replaceable hooks (no pdflatex needed): rtl-api 4.6 says
-// compile, move and remove are best-effort and always all called, in that order; captions are written as given.
+// LaTeXDoc's steps and captions, observed through its replaceable hooks (no pdflatex needed): RTL documents compile,
+// move and remove as best-effort (docs/reference.md, "LaTeXDoc") and always all called, in that order; captions are
+// written as given.
 #include <gtest/gtest.h>
 
 #include <filesystem>

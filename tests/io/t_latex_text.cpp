@@ -597,7 +597,8 @@ TEST(LaTeXTikz3D, AxesAreCroppedToTheRegionAndLabelled)
 
 TEST(LaTeXTikz3D, NothingToDrawWritesNothing)
 {
-    // rtl-api 4.5: without objects and without a min region writeTEX writes nothing (no file, no text).
+    // RTL (docs/reference.md, "LaTeXTikz3D"): without objects and without a min region writeTEX writes nothing (no
+    // file, no text).
     namespace fs = std::filesystem;
     fs::path dir = fs::path(RTL_TEST_OUTPUT_DIR) / "latex" / "tikz3d-empty";
     fs::create_directories(dir);
@@ -658,7 +659,8 @@ TEST(LaTeXTikz3D, RepeatedWritesAreIdenticalAndFollowTheView)
 
 TEST(LaTeXTable, WritesTheDocumentedLayout)
 {
-    // rtl-api 4.3: cells and caption as given, joined by " & ", each row ending with "\\" (no space before it).
+    // RTL (docs/reference.md, "LaTeXTable"): cells and caption as given, joined by " & ", each row ending with "\\"
+    // (no space before it).
     LaTeXTable t;
     t.setColumnStyle("c|c");
     EXPECT_EQ(t.columnsStyle(), "c|c");

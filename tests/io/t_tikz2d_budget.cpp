@@ -1,4 +1,4 @@
-// Drawings beyond pdflatex's memory (issue 14 item 3): the TikZ writer thins them to Drawing2D::texMarkLimit() mark
+// Drawings beyond pdflatex's memory: the TikZ writer thins them to Drawing2D::texMarkLimit() mark
 // equivalents with a note in the picture, keeps drawings within it byte for byte, and throws std::length_error where
 // nothing can be thinned; 1, 15,000 and ~3x the measured limit (9,000 dot marks) of scan points with clusters and
 // segments compile with the real pdflatex (one batched run) and the note is in the PDF.

@@ -1,4 +1,4 @@
-// Hostile inputs for the 2D writers (issue 15 items 2, 3, 8 and issue 14 item 3): tick generation ends and is capped,
+// Hostile inputs for the 2D writers: tick generation ends and is capped,
 // number labels are defined for every double, the escaper turns any bytes into compilable ASCII LaTeX, and the
 // documents for extreme coordinates, hostile text and many marks compile with the real pdflatex (one batched run);
 // the SVG of the same drawings is well-formed XML.
@@ -212,7 +212,7 @@ TEST(Tikz2DRobust, ExtremeDocumentsCompileWithPdflatex)
         d.addAxisY("draw=black", "%u", LaTeXTikz2D::position_left, 1.0f, -2.0f);
         d.addPlot(std::vector<Vector2f>{Vector2f(-3, -3), Vector2f(3, 3)}, "draw=black");
     });
-    add([](LaTeXTikz2D &d) {                 // the issue inputs
+    add([](LaTeXTikz2D &d) {                 // the reported inputs
         d.addText("t", "", Vector2f(0, 7.7e31f));
         d.addAxisY("draw=black", "%d", LaTeXTikz2D::position_left, 1.0f);
         d.addLine(Vector2f(1e16f, 0), Vector2f(1e16f, 1), "draw=black");

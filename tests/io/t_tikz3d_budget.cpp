@@ -1,4 +1,4 @@
-// 3D scenes beyond pdflatex's memory (issue 14): LaTeXTikz3D writes every k-th mark with a note above
+// 3D scenes beyond pdflatex's memory: LaTeXTikz3D writes every k-th mark with a note above
 // texMarkLimit(), scenes within it byte for byte as before, and throws std::length_error before writing anything when
 // the lines, axes and faces alone exceed it; a scene of 12,000 dot marks (10,000 compiled, 11,000 failed with "TeX
 // capacity exceeded" before) compiles with the real pdflatex and the note is in the PDF.

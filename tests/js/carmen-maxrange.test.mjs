@@ -1,4 +1,4 @@
-// readCarmenLog's no-return value (issue 12.2): detected from the log by default (PARAM lines, or the top range that
+// readCarmenLog's no-return value: detected from the log by default (PARAM lines, or the top range that
 // recurs), an explicit maxRange overrides it, and every scan reports the value used and where it came from.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

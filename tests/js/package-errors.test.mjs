@@ -1,4 +1,4 @@
-// Packaging and error contract (issue 12.5): every error message starts with the name of the function called;
+// Packaging and error contract: every error message starts with the name of the function called;
 // init() with a bad wasmBinary throws the package's own TypeError and prints nothing, from each entry; maxSize beyond
 // what 2 GB of wasm memory can hold is a RangeError before any allocation, and a large valid one does not grow the
 // memory; fitLine and vectorize reject coordinates whose squares would overflow and are exact near that limit.

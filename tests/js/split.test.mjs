@@ -1,4 +1,4 @@
-// vectorize() split mode (issue 12.1): FTLS/AFTLS break the polyline where a corner cannot be met within delta
+// vectorize() split mode: FTLS/AFTLS break the polyline where a corner cannot be met within delta
 // (the JS default), so real clusters never come back empty; split: false is RTL's strict behaviour, whose failure
 // names the corner. polylineOffsets/breaks/failure for every method; drawings with several polylines per cluster.
 import { test } from 'node:test';

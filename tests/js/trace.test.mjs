@@ -1,4 +1,4 @@
-// Traces (issue 13.1): segment(points, { trace: true }), vectorize(points, { ..., trace: true }) and the stream
+// Traces: segment(points, { trace: true }), vectorize(points, { ..., trace: true }) and the stream
 // segmenter's { trace: true } + takeTrace() return the steps the C++ algorithms took, as plain objects. On every
 // scan in tests/data: the traced result equals the untraced one, a replay of the trace ends in the returned
 // result, and the same call gives the same trace (deterministic step counts).

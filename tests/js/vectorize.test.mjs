@@ -188,7 +188,8 @@ test('vectorize on real scan clusters: valid ranges, unit normals, rms <= sigma 
     }
   }
   for (const m of ['itls', 'dp', 'rw']) assert.equal(tally[m].ok, tally[m].all, `${m} always succeeds`);
-  // rtl-api 6.10 defect 4: FTLS/AFTLS may fail when the continuity repair cannot split a short pair.
+  // Published RTL defect 4 (docs/reference.md, "Vectorization defects fixed here"): FTLS/AFTLS may fail when the
+  // continuity repair cannot split a short pair.
   for (const m of ['ftls', 'aftls']) assert.ok(tally[m].ok >= 0.9 * tally[m].all, `${m}: ${tally[m].ok} of ${tally[m].all}`);
 });
 

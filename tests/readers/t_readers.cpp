@@ -170,7 +170,7 @@ TEST(CarmenLog, MalformedLinesNameTheLine)
     EXPECT_TRUE(rtl::readCarmenLog<double>(empty).empty());
 }
 
-// ---- the no-return value of a log (issue 12 item 2)
+// ---- the no-return value of a log
 
 namespace
 {
@@ -502,7 +502,7 @@ TEST(CarmenNoReturn, OnlyRuntimeErrorForHugeCountsAndNonFiniteFields)
 {
     const std::string max = std::to_string(std::numeric_limits<size_t>::max());
     const std::vector<std::string> bad = {
-        "FLASER 18446744073709551610 5 1 1",                 // the issue's input (n + 11 wraps to 5)
+        "FLASER 18446744073709551610 5 1 1",                 // the first reported input (n + 11 wraps to 5)
         "FLASER 18446744073709551605 0 0 0 0 0 0 0 0 0",     // n + 11 wraps to 0: exactly as many fields as n + 11
         "FLASER " + max,
         "FLASER " + max + " 1 2 3 4 5 6 7 8 9",

@@ -1,4 +1,4 @@
-// Every code block of README.md runs as written (issue 12.3), where a user would run it:
+// Every code block of README.md runs as written, where a user would run it:
 //   ```js        an .mjs file (a `.cjs` one when its first line is `// CommonJS`) run with node in an empty project
 //                where the `npm pack` tarball of this repository is installed, next to copies of tests/data's intel.log,
 //                csail.log and rellis3d-os1-4x2048.bin; it must exit 0 (and print nothing on stderr)

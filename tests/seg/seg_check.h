@@ -1,11 +1,12 @@
 // Test helpers for the segmenters: a brute-force reference segmentation and invariant checks that map the clusters
 // back to scan indices.
 //
-// Windows (rtl-api §5.1, §5.2): CAR at step s compares each point with the s - 1 previous points (cyclically), IA at
-// step s with the s previous points. The helpers below take the window (how many previous points) explicitly;
-// checkCar and checkIa derive it from the step. IA at step s and CAR at step s + 1 therefore compare the same pairs,
-// and with IA's scaling set to CAR's (s + 1) * 2 pi / N they apply the same threshold: checkIa uses that scaling,
-// so that checkAgreement can compare the stream result at step s with the batch result at step s + 1.
+// Windows (docs/reference.md, "CAR_Segmenter", "IA_Segmenter"): CAR at step s compares each point with the s - 1
+// previous points (cyclically), IA at step s with the s previous points. The helpers below take the window (how many
+// previous points) explicitly; checkCar and checkIa derive it from the step. IA at step s and CAR at step s + 1
+// therefore compare the same pairs, and with IA's scaling set to CAR's (s + 1) * 2 pi / N they apply the same
+// threshold: checkIa uses that scaling, so that checkAgreement can compare the stream result at step s with the batch
+// result at step s + 1.
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Copies and moves of the segmenters (issue 15.1): a copy taken mid-stream continues on its own exactly as the source
+// Copies and moves of the segmenters: a copy taken mid-stream continues on its own exactly as the source
 // would (the source destroyed first, so that ASan sees any iterator left pointing into it), moves are noexcept, and
 // a growing std::vector of segmenters moves them rather than copying.
 #include <cmath>

@@ -1,6 +1,6 @@
 // CAR_Segmenter and IA_Segmenter on synthetic scans: known answers (2D arcs, 3D helix), regressions for the known
-// defects of the published implementation (rtl-api §5.3), bad input, and random scans against a brute-force
-// reference.
+// defects of the published implementation (docs/reference.md, "Segmentation defects fixed here"), bad input, and random
+// scans against a brute-force reference.
 #include <cmath>
 #include <limits>
 #include <random>
@@ -152,7 +152,7 @@ TYPED_TEST(HelixTest, KnownBreaks)
     segcheck::checkAgreement(pts, V::zeros(), 3, typename V::ElementType(0.7), typename V::ElementType(0.8), car, ia, "helix");
 }
 
-// §5.1 (issue 11.1): CAR at step s compares each point with the s - 1 previous points, cyclically; the threshold
+// CAR_Segmenter's window: CAR at step s compares each point with the s - 1 previous points, cyclically; the threshold
 // scales with s. IA's window stays the s previous points.
 TEST(Regression, CarWindowIsStepMinusOne)
 {
@@ -193,7 +193,7 @@ TEST(Regression, CarWindowIsStepMinusOne)
     EXPECT_EQ(carIndices(scan({{5, V2d(10, 0)}, {7, V2d(10, 40)}}), 3, 0.0, inf), (Clusters{{5}, {7}}));   // 38.9 < 40
 }
 
-// §5.3 defect 1: a point that links two long clusters merges them completely.
+// Published defect 1 (see the file comment): a point that links two long clusters merges them completely.
 TEST(Regression, RetroactiveMergeIsComplete)
 {
     // two previous points compared (CAR step 3, IA step 2): even indices on y = 0, odd indices on y = 1.5, 0.5 m
@@ -212,7 +212,7 @@ TEST(Regression, RetroactiveMergeIsComplete)
     EXPECT_EQ(carIndices(pts, 3, 1.0, 1.0).size(), 4u);
 }
 
-// §5.3 defect 2: the seam uses the origin, compares point 0 with point N - 1, and rotates at the right index.
+// Published defect 2: the seam uses the origin, compares point 0 with point N - 1, and rotates at the right index.
 TEST(Regression, SeamUsesOriginAndLastPoint)
 {
     const V2d o(100, 50);
@@ -271,7 +271,7 @@ TEST(Regression, SeamJoinedRunsCoveringTheScanStayInOrder)
     EXPECT_EQ(car.grabCluster(), (std::vector<V2d>{pts[2], pts[0], pts[1]}));
 }
 
-// §5.3 defect 3: one segmenter object, growing and shrinking clouds, no setMaxSize.
+// Published defect 3: one segmenter object, growing and shrinking clouds, no setMaxSize.
 TEST(Regression, LargerCloudWithoutSetMaxSize)
 {
     std::mt19937 rng(3);
@@ -296,7 +296,7 @@ TEST(Regression, LargerCloudWithoutSetMaxSize)
     }
 }
 
-// §5.3 defect 4: nothing stuck or lost in the stream segmenter, whatever the grab pattern.
+// Published defect 4: nothing stuck or lost in the stream segmenter, whatever the grab pattern.
 TEST(Regression, StreamLosesNothingWhateverTheGrabPattern)
 {
     std::mt19937 rng(4);

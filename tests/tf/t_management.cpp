@@ -93,8 +93,8 @@ namespace
     static_assert(VariantResultType<>::alternatives_cnt == 0);
     static_assert(!std::is_default_constructible_v<VariantResultType<Translation2f, RigidTf2f>>);
 
-    // random() is SFINAE-friendly: it accepts only nullary callables, so has_random reports the truth (rtl-api §2.3 row
-    // "random" = T for every transformation, F for a non-callable or void generator).
+    // random() is SFINAE-friendly: it accepts only nullary callables, so has_random reports the truth (true for
+    // every transformation, false for a non-callable or void generator; docs/reference.md, "Type traits").
     static_assert(rtl::has_random_v<Translation2f> && rtl::has_random_v<Rotation2f> && rtl::has_random_v<RigidTf2f>);
     static_assert(rtl::has_random_v<rtl::RigidTfND<4, double>, tf_test::Gen>);
     static_assert(!rtl::has_random_v<RigidTf2f, int> && !rtl::has_random_v<rtl::Rotation3d, void>);
@@ -408,7 +408,7 @@ namespace
         const RigidTf3d expected = fromRoot(tree, to)(fromRoot(tree, from).inverted());
         EXPECT_LE((tfDistance<3, double>(chain.squash(), expected)), tolerance) << from << " -> " << to;
         const Vector3d v(0.3, -0.2, 0.5);
-        if (from == to)     // the empty chain: squash() is the identity, applying it throws (rtl-api §3.7)
+        if (from == to)     // empty chain: squash() is the identity, applying it throws (docs/reference.md)
             EXPECT_THROW(static_cast<void>(chain(v)), std::out_of_range);
         else
             EXPECT_LE(dist(chain(v), expected(v)), tolerance) << from << " -> " << to;

@@ -1,5 +1,6 @@
-// Applying transformations to Core objects equals applying them to the objects' points, the transformation columns
-// of the Core trait table (rtl-api §2.3), and the legacy Transformation2D/3D (not in the umbrella header).
+// Applying transformations to Core objects equals applying them to the objects' points, the transformation columns of
+// the Core trait table (docs/reference.md, "Type traits"), and the legacy Transformation2D/3D (not in the umbrella
+// header).
 #include <gtest/gtest.h>
 
 #include <algorithm>

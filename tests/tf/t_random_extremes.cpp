@@ -1,5 +1,5 @@
-// random() and the vector/axis/quaternion constructors with elements near the limits of the element type (issue 11
-// item 7: RigidTf2D<float>::random() with elements near +-1e30 gave a NaN rotation matrix, because the cross and dot
+// random() and the vector/axis/quaternion constructors with elements near the limits of the element type
+// (RigidTf2D<float>::random() with elements near +-1e30 gave a NaN rotation matrix, because the cross and dot
 // products of the raw elements overflow; 3D and N-D silently gave the identity because the squared norm overflows).
 // A rotation depends only on the directions of its vectors, so scaling every drawn element by any factor must give
 // the same rotation as the unscaled draws.

@@ -29,7 +29,7 @@ namespace
     template<int d, typename E> using Rot = rtl::RotationND<d, E>;
     template<int d, typename E> using Rig = rtl::RigidTfND<d, E>;
 
-    // ---- composition result types (rtl-api §3.0 table) -------------------------------------------------------------
+    // ---- composition result types (docs/reference.md, "Composition rules") ------------------------------------------
     template<int d, typename E>
     void checkCompositionTypes()
     {
@@ -219,7 +219,7 @@ namespace
         EXPECT_LE((r(v).data() + v.data()).norm(), tol<E>());
     }
 
-    //! The general algorithm equals the 2D/3D specialised constructors (rtl-api §3.2).
+    //! The general algorithm equals the 2D/3D specialised constructors (docs/reference.md, "RotationND").
     template<int d, typename E>
     void checkGeneralEqualsSpecialised()
     {

@@ -1,5 +1,6 @@
 // Extractors, optimizers, postprocessors and the Vectorizer classes on synthetic chains: semicircles, polygons
-// with known corners, staircases, helices and box faces; bad input; the known defects of rtl-api 6.10.
+// with known corners, staircases, helices and box faces; bad input; the known defects of the
+// published version (docs/reference.md, "Vectorization defects fixed here").
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -221,7 +222,7 @@ TEST(VectorizerFTLS, PolygonsWithKnownCorners)
     }
 }
 
-// rtl-api 6.10 item 1: a noise-free L along the axes made FTLS and AFTLS return false.
+// Published defect 1: a noise-free L along the axes made FTLS and AFTLS return false.
 TEST(VectorizerFTLS, NoiseFreeAxisAlignedL)
 {
     std::vector<rtl::Vector2f> pts;
@@ -242,7 +243,7 @@ TEST(VectorizerFTLS, NoiseFreeAxisAlignedL)
     }
 }
 
-// rtl-api 6.10 items 3 and 4: parallel consecutive lines (no crossing) made the published continuity optimizer
+// Published defects 3 and 4: parallel consecutive lines (no crossing) made the published continuity optimizer
 // split ranges across the jump (RMS far above sigma) or give up on short pairs.
 TEST(OptimizerContinuity2D, StaircasesStayValid)
 {

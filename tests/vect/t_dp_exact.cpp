@@ -1,4 +1,4 @@
-// Douglas-Peucker over the whole finite range (issue 15.5) and its segment-distance option: the issue's inputs
+// Douglas-Peucker over the whole finite range and its segment-distance option: the reported inputs
 // (far points dropped when eps^2 |u|^2 and the squared cross product both overflowed), a brute-force long-double
 // reference at scales from 1e-30 to 1e300, farthest points tied in Element rounding, and segment mode against
 // simplifyCompatibleIndices.

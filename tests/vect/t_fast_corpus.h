@@ -1,4 +1,4 @@
-// The FTLS/AFTLS worst-case corpus (issue 15 item 7): input `seed` of bench/b_vect_fast_worst_case.cpp's 300, shared
+// The FTLS/AFTLS worst-case corpus: input `seed` of bench/b_vect_fast_worst_case.cpp's 300, shared
 // by that benchmark and the tests that pin its slowest inputs' work. 300-1,500 points: noisy polylines with random
 // corners (shape 0), arcs (1), steps (2) or spikes (3); sigma 0.01-0.06, delta 0.05-3. Deterministic (mt19937 and
 // the standard distributions' libstdc++ sequences).

@@ -1,4 +1,4 @@
-// The exact search's corner test in its hot loops (issue 15 item 7): ApproximationTlsLine2D::
+// The exact search's corner test in its hot loops: ApproximationTlsLine2D::
 // crossingDistanceSquaredUnchecked compared with a finite bound must decide exactly as the checked crossing
 // (vect_detail::crossingDistanceSquared) does, for every line pair; with an infinite delta the search must keep the
 // checked path (there the checked +infinity is accepted, the unchecked NaN of parallel lines would not be).

@@ -1,4 +1,4 @@
-// The results of FTLS and AFTLS on all 300 inputs of the worst-case corpus (issue 15 item 7), strict and split, and
+// The results of FTLS and AFTLS on all 300 inputs of the worst-case corpus, strict and split, and
 // of the exact search called directly, pinned as digests: the speed-ups of the continuity repair and of the exact
 // search must not change a single decision. Two digests:
 // - decisions: every success/failure, range, polyline offset, break and failure boundary (integers): exact on every

@@ -1,4 +1,4 @@
-// The exact search's work on the slowest inputs of the FTLS/AFTLS worst-case corpus (issue 15 item 7a): bounded
+// The exact search's work on the slowest inputs of the FTLS/AFTLS worst-case corpus: bounded
 // rounds (PartitionSearch2D.h) keep only states whose range count plus a lower bound for the rest of the chain
 // fits a budget. Pinned here with work counts, not times: on the inputs where the optimum needs about as many
 // ranges as the fits alone, the states and fits per point are a small fraction of the unbounded search's (which
@@ -110,7 +110,7 @@ TEST(PartitionSearch2D, CorpusBridgeInputsFallBackToTheSameOptimum)
     }
 }
 
-// Bridge inputs (issue 15 item 7): the backward pass's corner-aware bound equals the optimum's R, so the round on it
+// Bridge inputs: the backward pass's corner-aware bound equals the optimum's R, so the round on it
 // keeps only states on paths of R ranges (0.1-1.9 per point); the pass tests at each corner only the ranges with the
 // least count. Corner work 0.38-0.70 x the unbounded search's; before the pass the last round was the unbounded
 // one, ~1.0x (this test fails there).
@@ -158,7 +158,7 @@ TEST(VectorizerFTLS, CorpusWorstInputThroughTheVectorizers)
 }
 
 // The backward pass tests a range's corner only when its lower bound (1 + the least count at its end) can matter:
-// for the least count at its start or for a round's budget (issue 15 item 7). On the bridge inputs the search then
+// for the least count at its start or for a round's budget. On the bridge inputs the search then
 // does 0.07-0.28 x the unbounded search's corner tests (it was 0.38-1.22 x, seed 84 the most, when every fitting
 // range was tested at its end), for the same optimum. t_fast_corpus_identity pins the results on all 300 inputs
 // (a planted off-by-one in the rule, skipping ranges whose bound equals the least count, changes 17 of them).

@@ -1,4 +1,4 @@
-// FTLS/AFTLS next to huge values (issue 15 item 7): exact range sums after a far-off point (compensated blocked
+// FTLS/AFTLS next to huge values: exact range sums after a far-off point (compensated blocked
 // prefix sums), and no infinite numbers in a result that returns true.
 #include <cmath>
 #include <random>

@@ -1,5 +1,5 @@
 // The exact feasibility search of FTLS/AFTLS 2D (PartitionSearch2D), AFTLS never worse than FTLS, failure reports
-// and split mode (issue 11 items 5 and 6, issue 12 item 1).
+// and split mode.
 #include <cmath>
 #include <limits>
 #include <random>
@@ -185,7 +185,7 @@ TEST(PartitionSearch2D, AgreesWithBruteForceOnSmallRandomChains)
     EXPECT_GT(with_breaks, 50u);
 }
 
-// Issue 11 item 6: a 232-point chain (a CSAIL cluster of 44 points continued by a straight wall of 188) that has a
+// A 232-point chain (a CSAIL cluster of 44 points continued by a straight wall of 188) that has a
 // valid partition; the previous code gave up (its exhaustive fallback stopped at 160 points).
 TEST(VectorizerFTLS, LongChainWithAValidPartitionIsFound)
 {
@@ -219,7 +219,7 @@ TEST(VectorizerFTLS, LongChainWithAValidPartitionIsFound)
     EXPECT_LE(totalError(pts, af.indices()), totalError(pts, f.indices()) * (1 + 1e-9));
 }
 
-// Issue 11 item 5: an Intel cluster where the continuity repair after the optimizer raised AFTLS's total squared
+// An Intel cluster where the continuity repair after the optimizer raised AFTLS's total squared
 // error to 1.6 times FTLS's (9.06e-5 against 5.56e-5).
 TEST(VectorizerAFTLS, NeverWorseThanFtlsOnARealCluster)
 {
@@ -240,7 +240,7 @@ TEST(VectorizerAFTLS, NeverWorseThanFtlsOnARealCluster)
     EXPECT_LE(ea, ef * (1 + 1e-9));
 }
 
-// Issue 12 item 1 on the noise-free L of the issue: strict mode names the corner (the crossing (3, 0) lies 0.5 from
+// The noise-free L that strict FTLS rejects: strict mode names the corner (the crossing (3, 0) lies 0.5 from
 // the boundary midpoint, delta 0.3), split mode breaks the polyline there and covers all seven points.
 TEST(VectorizerFTLS, FailureReportAndSplitModeOnANoiseFreeL)
 {

@@ -1,4 +1,4 @@
-// FTLS/AFTLS traces (FtlsTrace.h, issue 13 item 1): the replayed trace ends in exactly the untraced result on every
+// FTLS/AFTLS traces (FtlsTrace.h): the replayed trace ends in exactly the untraced result on every
 // chain of tests/data (strict and split mode, three settings, split mode's cover with shared points included), and
 // the events' numbers agree with independent recomputation (trial errors, corner distances, optimizer totals, the
 // AFTLS choice).

@@ -1,4 +1,4 @@
-// Reumann-Witkam over the whole range (issue 15.6): epsilon kept at full precision for double vectorizers, strip
+// Reumann-Witkam over the whole range: epsilon kept at full precision for double vectorizers, strip
 // directions of tiny segments, and chains near the top of the range (rescaled), against a long-double reference.
 #include <cmath>
 #include <limits>

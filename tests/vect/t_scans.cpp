@@ -1,5 +1,6 @@
 // Every vectorizer on chains cut from the real scans in tests/data (Intel and CSAIL laser logs, four rings of an
-// Ouster scan): always true and a valid result (rtl-api 6.10 item 4), every range within sigma (item 3).
+// Ouster scan): always true and a valid result, every range within sigma
+// (docs/reference.md, "Vectorization defects fixed here", defects 4 and 3).
 #include <cmath>
 #include <string>
 #include <vector>

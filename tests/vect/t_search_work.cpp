@@ -1,4 +1,4 @@
-// The exact partition search's bounded corner work (issue 15 item 7): on chains of long straight runs joined by
+// The exact partition search's bounded corner work: on chains of long straight runs joined by
 // steps that no line pair meets (where each boundary had to test every incoming line against every outgoing one),
 // PartitionSearch2D finds the same optimum as a dynamic programme that tests every pair, with corner work within
 // a log factor of its fits, by default and with the chord query at every boundary; AFTLS runs the exact search

@@ -1,4 +1,4 @@
-// Split mode's cover (issue 12 item 1): where no partition into ranges of >= 2 points fits sigma (3 points forming
+// Split mode's cover: where no partition into ranges of >= 2 points fits sigma (3 points forming
 // a corner, short zigzags), FTLS/AFTLS in split mode cover the chain with ranges that may share one point, so a
 // real scan never comes back empty; strict mode keeps RTL's false return and its failure report.
 #include <cmath>

@@ -173,7 +173,8 @@ TEST(ApproximationTlsLine2D, MatchesIndependentFit)
     }
 }
 
-// rtl-api 6.10 item 1: exactly axis-aligned sets got a direction 90 degrees off (or a zero normal).
+// Published defect 1 (docs/reference.md, "Vectorization defects fixed here"): exactly axis-aligned sets got a direction
+// 90 degrees off (or a zero normal).
 TEST(ApproximationTlsLine2D, ExactlyAxisAlignedSets)
 {
     using L = rtl::ApproximationTlsLine2D<float, double>;
@@ -221,7 +222,7 @@ TEST(ApproximationTlsLine2D, CollinearWithOffset)
     }
 }
 
-// rtl-api 6.10 item 2: crossings of nearly parallel lines must be computed in the compute type.
+// Published defect 2: crossings of nearly parallel lines must be computed in the compute type.
 TEST(ApproximationTlsLine2D, CrossingInComputeType)
 {
     using L = rtl::ApproximationTlsLine2D<float, double>;

@@ -12,7 +12,7 @@ export const DATA = join(REPO, 'tests', 'data');
 export const RESULTS = join(REPO, 'test-results');
 export const CHROMIUM = process.env.RTL_CHROMIUM || '/usr/bin/chromium';
 
-// The flags of the toolchain guide (§8): no sandbox (root in CI), no GPU, no network chatter or updates.
+// Headless flags for CI: no sandbox (root in CI), no GPU, no network chatter or updates.
 export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 

@@ -6,7 +6,7 @@ import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { PAGE_TIMEOUT, openDemoPage, openLesson } from './helpers.js';
 
-const LESSONS = ['car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw', 'compare', 'tracking'];
+const LESSONS = ['overview', 'car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw', 'compare', 'tracking'];
 const box = (page, sel) => page.locator(sel).first().boundingBox();
 
 describe('lesson page layout', { timeout: 240000 }, () => {

@@ -1,6 +1,6 @@
 // The lesson page in headless Chromium: every trace lesson's step count equals the length of the trace the
 // package records in Node for the same excerpt and parameters, stepping to the end replays the untraced result,
-// and no console errors. Screenshots of every lesson at 1280x800 and 390x844 go to build/test-output/screenshots/.
+// and no console errors. Screenshots of every lesson at 1280x800, 390x844 and 1920x1080 go to build/test-output/screenshots/.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -104,9 +104,9 @@ describe('lesson page: traces, final states, screenshots', { timeout: 300000 }, 
     assert.equal(fixed.untraced.ok, rtl.vectorize(new Float64Array(s.chain), { method: 'ftls', sigma: 0.03, delta: fixed.params.delta, split: false }).ok);
   });
 
-  test('screenshots of every lesson at 1280x800 and 390x844', async () => {
+  test('screenshots of every lesson at 1280x800, 390x844 and 1920x1080', async () => {
     const ids = await page.evaluate(() => window.__rtl.lessons.map((l) => l.id));
-    for (const [w, h] of [[1280, 800], [390, 844]]) {
+    for (const [w, h] of [[1280, 800], [390, 844], [1920, 1080]]) {
       await page.setViewportSize({ width: w, height: h });
       for (const id of ids) {
         const e = await openLesson(page, id);

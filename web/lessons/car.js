@@ -2,11 +2,13 @@
 // true }); events of rtl/seg/SegTrace.h: scan, gap, threshold, compare, link, merge, start, seam, cluster): the
 // threshold circle around the current point, each comparison in its window, links, retroactive merges, the seam.
 import { INK, Scene } from '../figure.js';
-import { readParams, traced, explainNoSteps } from './common.js';
+import { fromSource, readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, drawClusters, segFields } from './seg-common.js';
 import { m, note } from './ui.js';
+import { compareQuestions } from './predict-questions.js';
 
-const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
+// decisive: the comparison the note is about (the overview links to it)
+export const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36, decisive: { i: 39, j: 38 },
   why: 'The whole scan is segmented (the threshold depends on the beam count); the view shows a wall that, at step 2, breaks between beams 38 and 39: they are 0.132 m apart and the threshold there is the lower bound, 0.100 m. At step 3 the threshold grows with the step (0.135 m) and each point also looks two points back, so the wall stays one cluster (6 clusters of 3+ points become 4).' };
 
 // Labels after events 0..k: start{i} labels i as i, link{i, cluster} gives i j's label, merge{from, into}
@@ -37,11 +39,12 @@ export default {
   title: 'CAR segmentation',
   summary: 'Cut a scan into clusters: each point is compared with up to step − 1 previous points, with a threshold that grows with range.',
   async create(host) {
-    const scan = await host.data.scan(EXCERPT.dataset, EXCERPT.scan);
+    const ex = fromSource(host, EXCERPT);
+    const scan = await host.data.scan(ex.dataset, ex.scan);
     const points = scan.points, n = points.length / 2;
-    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)} (${n} beams). ${EXCERPT.why}`);
+    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(ex.dataset, ex.scan)} (${n} beams). ${ex.why}`);
     const fields = segFields(host, { step: 2, stepLabel: 'step s (compares up to s − 1 previous points)' });
-    host.figure.fitPoints(host.data.beams(points, ...EXCERPT.focusBeams));
+    host.figure.fitPoints(ex.focusBeams ? host.data.beams(points, ...ex.focusBeams) : points);
     let missing = null, trace = [], untraced = null, params = null;
     const first = new Map();   // point -> first event about it (clicking a point jumps there)
     host.figure.onPick = (x, y) => {
@@ -50,6 +53,7 @@ export default {
       if (best >= 0 && first.has(best)) host.goTo?.(first.get(best));
     };
     return {
+      predict: compareQuestions({ get trace() { return trace; } }, points),
       recompute() {
         params = readParams(fields, (v) => checkBounds(v));
         if (!params) { trace = []; missing = null; untraced = null; return { steps: 0 }; }
@@ -58,11 +62,11 @@ export default {
         ({ trace, missing } = traced(() => host.rtl.segment(points, { ...opts, trace: true }), 'CAR segmentation'));
         first.clear();
         trace.forEach((e, k) => { if (e.i !== undefined && !first.has(e.i)) first.set(e.i, k); });
-        return { steps: trace.length, start: first.get(EXCERPT.startAt) ?? 0 };
+        return { steps: trace.length, start: first.get(ex.startAt) ?? 0 };
       },
       show(k) {
         this.step = k;
-        const s = new Scene(`CAR segmentation, step ${params?.step ?? '–'}, bounds ${params?.lowerBound ?? '–'}–${params?.upperBound ?? '–'} m: ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)}`);
+        const s = new Scene(`CAR segmentation, step ${params?.step ?? '–'}, bounds ${params?.lowerBound ?? '–'}–${params?.upperBound ?? '–'} m: ${host.data.describe(ex.dataset, ex.scan)}`);
         if (k < 0) { if (untraced) drawClusters(s, points, Array.from(untraced.labels)); else s.points(points, { label: -1 }); host.figure.show(s); explainNoSteps(host, missing); return; }
         const e = trace[k], { labels, clusters } = replay(trace, n, k);
         drawClusters(s, points, labels);
@@ -75,8 +79,8 @@ export default {
         let thr = null;
         if (e.i !== undefined) for (let q = k; q >= 0; q--) if (trace[q].kind === 'threshold' && trace[q].i === e.i) { thr = trace[q]; break; }
         if (thr && ['threshold', 'compare', 'link', 'merge', 'start', 'seam'].includes(e.kind)) {
-          s.circle(...P(thr.i), thr.threshold, { colour: INK.candidate, dash: true });
-          s.marker(...P(thr.i), { colour: INK.current });
+          s.circle(...P(thr.i), thr.threshold, { colour: INK.candidate, dash: true, q: 'threshold' });
+          s.marker(...P(thr.i), { colour: INK.current, q: 'current' });
           for (let d = 1; d <= w; d++) { const j = (thr.i - d + n) % n; if (Number.isFinite(points[2 * j])) s.marker(...P(j), { colour: INK.muted, size: 5 }); }
         }
         switch (e.kind) {
@@ -89,8 +93,8 @@ export default {
             html = `<p>Point <b>${e.i}</b> at range ${m(e.range, 2)}: ${e.raw < e.threshold ? `scaling · range = ${m(e.raw)} is below the lower bound, so the threshold is ${m(e.threshold)}` : e.raw > e.threshold ? `scaling · range = ${m(e.raw)} is above the upper bound, so the threshold is ${m(e.threshold)}` : `threshold = scaling · range = ${m(e.threshold)}`}.</p><p class="why">The dashed circle has that radius: an earlier point of the window (grey rings) inside it is close.</p>`;
             break;
           case 'compare': case 'seam':
-            s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5 });
-            html = `<p>${e.kind === 'seam' ? 'Seam pass: point' : 'Point'} <b>${e.i}</b> vs point ${e.j}${e.kind === 'seam' ? ' across the end of the scan' : ` (${e.i - e.j} back)`}: distance ${m(e.distance)} ${e.linked ? '≤' : '>'} threshold ${m(e.threshold)}.</p>` +
+            s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5, q: 'distance' });
+            html = `<p>${e.kind === 'seam' ? 'Seam pass: point' : 'Point'} <b data-q="current">${e.i}</b> vs point ${e.j}${e.kind === 'seam' ? ' across the end of the scan' : ` (${e.i - e.j} back)`}: <span data-q="distance">distance ${m(e.distance)}</span> ${e.linked ? '≤' : '>'} <span data-q="threshold">threshold ${m(e.threshold)}</span>.</p>` +
               `<p class="why">${e.linked ? 'Close: they belong to the same cluster.' : 'Too far: no link from this comparison.'}</p>`;
             break;
           case 'link': html = `<p>Point <b>${e.i}</b> joins the cluster of point ${e.j} (label ${e.cluster}).</p>`; break;

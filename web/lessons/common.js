@@ -5,6 +5,15 @@ import { note, numberField } from './ui.js';
 // The excerpt: cluster `cluster` of `scan` of `dataset` segmented with `segment` (the package's segment()), or the
 // beams `beams: [first, last]` of that scan. Adds the lesson's note (which excerpt and why) to host.controls.
 export async function loadExcerpt(host, ex) {
+  ex = fromSource(host, ex);
+  const { scan, chain, indices, where } = await excerptChain(host, ex);
+  note(host.controls, `<strong>Excerpt:</strong> ${where}. ${ex.why}`);
+  return { scan, chain, indices, where };
+}
+
+// The excerpt's chain of points without the note: { scan, chain, indices, where } (the overview measures the lessons'
+// own excerpts with it to name the step its links land on).
+export async function excerptChain(host, ex) {
   const scan = await host.data.scan(ex.dataset, ex.scan);
   let chain, indices;
   if (ex.beams) {
@@ -15,7 +24,11 @@ export async function loadExcerpt(host, ex) {
   } else {
     // the cluster holding beam `clusterAt` when the scan is segmented with `segment`
     const { clusters } = host.rtl.segment(scan.points, ex.segment);
-    const k = clusters.findIndex((c) => c.indices.includes(ex.clusterAt));
+    if (!clusters.length) throw new RangeError(`${host.data.describe(ex.dataset, ex.scan)} has no cluster (no point with a return)`);
+    // no clusterAt (the user's own scan): the largest cluster
+    const k = ex.clusterAt === undefined
+      ? clusters.reduce((best, c, i) => (c.indices.length > clusters[best].indices.length ? i : best), 0)
+      : clusters.findIndex((c) => c.indices.includes(ex.clusterAt));
     indices = Array.from(clusters[k].indices);
     chain = host.data.gather(scan.points, indices);
     ex = { ...ex, cluster: k };
@@ -23,8 +36,17 @@ export async function loadExcerpt(host, ex) {
   const seg = ex.segment ? `, segmented with step ${ex.segment.step}, bounds ${ex.segment.lowerBound}–${ex.segment.upperBound} m` : '';
   const where = `${host.data.describe(ex.dataset, ex.scan)}, ` +
     (ex.beams ? `beams ${ex.beams[0]}–${ex.beams[1]}` : `cluster ${ex.cluster + 1}${seg}`) + ` (${chain.length / 2} points, beams ${indices[0]}–${indices[indices.length - 1]})`;
-  note(host.controls, `<strong>Excerpt:</strong> ${where}. ${ex.why}`);
   return { scan, chain, indices, where };
+}
+
+// The lesson's excerpt, or the scan the user chose (host.source: { dataset, scan }, e.g. their own file): then the
+// scan's largest cluster (a chain lesson) or the whole scan (a segmentation lesson) is the excerpt.
+export function fromSource(host, ex) {
+  const src = host.source;
+  if (!src) return ex;
+  return { ...ex, dataset: src.dataset, scan: src.scan, beams: undefined, clusterAt: undefined, focusBeams: null, startAt: null,
+    decisive: undefined, segment: ex.segment ?? { step: 3, lowerBound: 0.1, upperBound: 0.5 },
+    why: ex.segment || ex.beams || ex.clusterAt !== undefined ? 'Your chosen scan: its largest cluster.' : 'Your chosen scan, whole.' };
 }
 
 // The trace of a traced package call: { trace, missing }. missing is the reason when this build of the package

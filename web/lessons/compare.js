@@ -28,10 +28,15 @@ export default {
   title: 'Compare the methods',
   summary: 'The same cluster and tolerances for all five vectorizers: how many segments each needs, and how well they fit.',
   async create(host) {
-    const scan = await host.data.scan(SCAN.dataset, SCAN.scan);
+    const SRC = host.source ?? SCAN;
+    const scan = await host.data.scan(SRC.dataset, SRC.scan);
     const { clusters } = host.rtl.segment(scan.points, SCAN.segment);
-    const big = clusters.map((c, k) => ({ k, indices: Array.from(c.indices) })).filter((c) => c.indices.length >= SCAN.minPoints);
-    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(SCAN.dataset, SCAN.scan)}, segmented with step 3, bounds 0.1–0.5 m; pick a cluster (list, or click it in the figure). The room corner of beams 0–32 starts selected: it has bends, so the methods disagree (on a straight wall they all give one segment).`);
+    const all = clusters.map((c, k) => ({ k, indices: Array.from(c.indices) }));
+    // a small scan of the user's may have no cluster of minPoints: then every cluster of 3 or more
+    let big = all.filter((c) => c.indices.length >= SCAN.minPoints);
+    if (!big.length) big = all.filter((c) => c.indices.length >= 3);
+    if (!big.length) throw new RangeError(`${host.data.describe(SRC.dataset, SRC.scan)} has no cluster of 3 or more points`);
+    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(SRC.dataset, SRC.scan)}, segmented with step 3, bounds 0.1–0.5 m; pick a cluster (list, or click it in the figure). ${host.source ? 'Your chosen scan.' : 'The room corner of beams 0–32 starts selected: it has bends, so the methods disagree (on a straight wall they all give one segment).'}`);
     const wrap = document.createElement('div');
     wrap.className = 'field wide';
     wrap.innerHTML = '<label for="cmp-cluster">cluster</label><select id="cmp-cluster" name="cluster"></select>';
@@ -99,7 +104,7 @@ export default {
       },
       show(k) {
         this.step = k;
-        const s = new Scene(`Compare: ${METHODS[Math.max(k, 0)][1]} on cluster ${Number(select.value) + 1} of ${host.data.describe(SCAN.dataset, SCAN.scan)}`);
+        const s = new Scene(`Compare: ${METHODS[Math.max(k, 0)][1]} on cluster ${Number(select.value) + 1} of ${host.data.describe(SRC.dataset, SRC.scan)}`);
         s.points(chain, { label: 0 });
         if (k >= 0) s.segments(results[k].segments, { colour: INK.segment, width: 2.5 });
         host.figure.show(s);

@@ -3,8 +3,9 @@
 import { INK, Scene } from '../figure.js';
 import { loadExcerpt, pt, vectorizerRun, explainNoSteps } from './common.js';
 import { m } from './ui.js';
+import { dpQuestions } from './predict-questions.js';
 
-const EXCERPT = {
+export const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
   why: 'A room corner with a door frame: ε = 0.02 m keeps 8 segments, 0.05 m 5, 0.2 m only 2, so ε visibly decides which bends are corners.',
 };
@@ -34,6 +35,7 @@ export default {
       field: { label: 'ε: max distance from the chord', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm' } });
     host.figure.fitPoints(chain);
     return {
+      predict: dpQuestions(run, chain),
       recompute: run.recompute,
       show(k) {
         const { params, untraced, trace, missing } = run;
@@ -44,14 +46,14 @@ export default {
         let html;
         if (e.kind === 'range') {
           const [ax, ay] = pt(chain, e.first), [bx, by] = pt(chain, e.last), [fx, fy] = pt(chain, e.farthest);
-          s.strip(ax, ay, bx, by, e.epsilon, { colour: e.split ? INK.fail : INK.ok, bounded: true });
-          s.segments([ax, ay, bx, by], { colour: INK.candidate, width: 2.5 });
+          s.strip(ax, ay, bx, by, e.epsilon, { colour: e.split ? INK.fail : INK.ok, bounded: true, q: 'epsilon' });
+          s.segments([ax, ay, bx, by], { colour: INK.candidate, width: 2.5, q: 'chord' });
           // the distance as a perpendicular from the farthest point to the chord's line
           const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy || 1, t = ((fx - ax) * dx + (fy - ay) * dy) / l2;
-          s.segments([fx, fy, ax + t * dx, ay + t * dy], { colour: INK.current, width: 2 });
-          s.marker(fx, fy, { colour: INK.current });
-          html = `<p>Range <b>${e.first}–${e.last}</b> (${e.last - e.first - 1} interior point${e.last - e.first - 1 === 1 ? '' : 's'}): the chord joins points ${e.first} and ${e.last}. ` +
-            `The farthest interior point is <b>${e.farthest}</b>, ${m(e.distance)} from the chord's line; ε = ${m(e.epsilon)}.</p>` +
+          s.segments([fx, fy, ax + t * dx, ay + t * dy], { colour: INK.current, width: 2, q: 'distance' });
+          s.marker(fx, fy, { colour: INK.current, q: 'farthest' });
+          html = `<p>Range <b>${e.first}–${e.last}</b> (${e.last - e.first - 1} interior point${e.last - e.first - 1 === 1 ? '' : 's'}): <span data-q="chord">the chord joins points ${e.first} and ${e.last}</span>. ` +
+            `The farthest interior point is <b data-q="farthest">${e.farthest}</b>, <span data-q="distance">${m(e.distance)}</span> from the chord's line; <span data-q="epsilon">ε = ${m(e.epsilon)}</span>.</p>` +
             (e.split
               ? `<p class="why">${m(e.distance)} &gt; ε: point ${e.farthest} is kept as a vertex, and the two halves ${e.first}–${e.farthest} and ${e.farthest}–${e.last} are examined next (left first).</p>`
               : `<p class="why">${m(e.distance)} ≤ ε: every point of the range lies inside the band of half-width ε around the chord, so the chord becomes one segment.</p>`);

@@ -2,9 +2,10 @@
 // takeTrace(); events of rtl/seg/SegTrace.h: add, threshold, compare, link, merge, open, slide, alive, close): the
 // window sliding over the stream, the threshold circle, comparisons, merges, and clusters closing.
 import { INK, Scene } from '../figure.js';
-import { nonNegative, readParams, traced, explainNoSteps } from './common.js';
+import { fromSource, nonNegative, readParams, traced, explainNoSteps } from './common.js';
 import { checkBounds, segFields } from './seg-common.js';
 import { m, note, numberField } from './ui.js';
+import { compareQuestions } from './predict-questions.js';
 
 const EXCERPT = { dataset: 'intel', scan: 8, focusBeams: [26, 52], startAt: 36,
   why: 'The CAR lesson\'s scan and wall, fed point by point as the sensor delivers it: no seam, and a cluster closes as soon as none of its points is left in the window.' };
@@ -35,14 +36,15 @@ export default {
   title: 'IA segmentation (streaming)',
   summary: 'Segment a stream point by point: each new point is compared with the last s points; a cluster closes when no point of it is left in that window.',
   async create(host) {
-    const scan = await host.data.scan(EXCERPT.dataset, EXCERPT.scan);
+    const ex = fromSource(host, EXCERPT);
+    const scan = await host.data.scan(ex.dataset, ex.scan);
     const points = scan.points, n = points.length / 2;
-    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)} (${n} beams, fed in beam order). ${EXCERPT.why}`);
+    note(host.controls, `<strong>Excerpt:</strong> ${host.data.describe(ex.dataset, ex.scan)} (${n} beams, fed in beam order). ${ex.why}`);
     const fields = {
       ...segFields(host, { step: 3, stepLabel: 'step s (window of the last s points)' }),
       scaling: numberField(host.controls, { key: 'scaling', label: 'scaling (threshold = scaling · range)', kind: 'number', value: 0.05, min: 0, max: 1, step: 0.005, onInput: host.onParamsChanged }),
     };
-    host.figure.fitPoints(host.data.beams(points, ...EXCERPT.focusBeams));
+    host.figure.fitPoints(ex.focusBeams ? host.data.beams(points, ...ex.focusBeams) : points);
     let missing = null, trace = [], untraced = [], params = null;
     const run = (opts, withTrace) => {
       const seg = new host.rtl.StreamSegmenter(withTrace ? { ...opts, trace: true } : opts);
@@ -53,18 +55,19 @@ export default {
       } finally { seg.dispose(); }
     };
     return {
+      predict: compareQuestions({ get trace() { return trace; } }, points),
       recompute() {
         params = readParams(fields, (v) => { const out = checkBounds(v); if (nonNegative(v.scaling)) out.scaling = nonNegative(v.scaling); return out; });
         if (!params) { trace = []; missing = null; untraced = []; return { steps: 0 }; }
         const opts = { dim: 2, step: params.step, lowerBound: params.lowerBound, upperBound: params.upperBound, scaling: params.scaling };
         untraced = run(opts, false);
         ({ trace, missing } = traced(() => run(opts, true), 'streaming (IA) segmentation'));
-        const start = trace.findIndex((e) => e.i === EXCERPT.startAt);
+        const start = trace.findIndex((e) => e.i === ex.startAt);
         return { steps: trace.length, start: Math.max(0, start) };
       },
       show(k) {
         this.step = k;
-        const s = new Scene(`IA segmentation, step ${params?.step ?? '–'}, scaling ${params?.scaling ?? '–'}: ${host.data.describe(EXCERPT.dataset, EXCERPT.scan)}`);
+        const s = new Scene(`IA segmentation, step ${params?.step ?? '–'}, scaling ${params?.scaling ?? '–'}: ${host.data.describe(ex.dataset, ex.scan)}`);
         const P = (i) => [points[2 * i], points[2 * i + 1]];
         if (k < 0) { s.points(points, { label: -1 }); host.figure.show(s); explainNoSteps(host, missing); return; }
         const e = trace[k], { window, alive, closed } = replay(trace, k);

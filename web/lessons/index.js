@@ -1,4 +1,5 @@
-// The lessons in menu order. Each module default-exports { id, title, summary, create(host) } (see README.md).
+// The lessons in menu order; the first opens when the URL names none. Each module default-exports { id, title, summary, create(host) } (see README.md).
+import overview from './overview.js';
 import tlsFit from './tls-fit.js';
 import car from './car.js';
 import ia from './ia.js';
@@ -12,4 +13,4 @@ import tfTree from './tf-tree.js';
 import tracking from './tracking.js';
 import lidar3d from './lidar3d.js';
 
-export default [tlsFit, car, ia, ftls, aftls, itls, dp, rw, compare, tfTree, tracking, lidar3d];
+export default [overview, tlsFit, car, ia, ftls, aftls, itls, dp, rw, compare, tfTree, tracking, lidar3d];

@@ -3,6 +3,7 @@
 import { INK, Scene } from '../figure.js';
 import { loadExcerpt, pt, vectorizerRun, explainNoSteps } from './common.js';
 import { m } from './ui.js';
+import { rwQuestions } from './predict-questions.js';
 
 const EXCERPT = {
   dataset: 'intel', scan: 17, segment: { step: 3, lowerBound: 0.1, upperBound: 0.5 }, clusterAt: 0,
@@ -31,6 +32,7 @@ export default {
       field: { label: 'ε: strip half-width', value: 0.05, min: 0.005, max: 0.4, step: 0.005, unit: 'm' } });
     host.figure.fitPoints(chain);
     return {
+      predict: rwQuestions(run, chain),
       recompute: run.recompute,
       show(k) {
         const { params, untraced, trace, missing } = run;

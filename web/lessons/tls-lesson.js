@@ -8,6 +8,7 @@
 import { INK, Scene } from '../figure.js';
 import { explainNoSteps, loadExcerpt, pt, readParams, positive, slice, traced } from './common.js';
 import { m, mm, numberField } from './ui.js';
+import { cornerQuestions } from './predict-questions.js';
 
 const fmtField = (k, v) => (typeof v === 'boolean' ? `${k} ${v ? 'yes' : 'no'}` : Number.isInteger(v) ? `${k} ${v}`
   : /rms|sigma|distance|delta|error/i.test(k) ? `${k} ${mm(v)}` : `${k} ${v.toPrecision(4)}`);
@@ -100,6 +101,7 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
       };
       host.text.addEventListener('click', onFix);
       return {
+        predict: cornerQuestions({ get trace() { return trace; } }, chain),
         recompute() {
           params = readParams(fields, ({ sigma, delta }) => {
             const out = {};

@@ -1,5 +1,10 @@
 // BoundingBoxND: an axis-aligned box [min, max] in any dimension >= 1. Boxes are closed: touching boxes intersect,
 // but intersection() only returns a box when the overlap has positive extent in every dimension.
+//
+// Invariant: min() <= max() in every dimension (constructors and addPoint keep it; a box is never empty, so there
+// is no default constructor). Complexity: O(dim) per point added or box compared; a rotation or rigid
+// transformation maps all 2^dim corners and takes their bounds, O(2^dim * dim^2), and transform() in place gives
+// exactly the bits of transformed(). intersection() allocates the result (a std::unique_ptr, RTL's interface).
 #pragma once
 
 #include <cstddef>

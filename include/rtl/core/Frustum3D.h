@@ -1,5 +1,9 @@
 // Frustum3D: a viewing frustum given by its apex (origin), the four corners of the near plane and the depth from
 // the near plane to the far plane (measured along the ray through the near plane's midpoint).
+//
+// Precondition: the near plane's midpoint differs from the apex (otherwise the far corners are NaN).
+// Complexity: O(1). Transformations move the apex and the near corners and keep the depth; the far corners are
+// computed on demand in one fixed formula (farPoint), so equal inputs give bit-identical corners.
 #pragma once
 
 #include <Eigen/Dense>

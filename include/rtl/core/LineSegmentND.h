@@ -2,6 +2,12 @@
 // Distances and projections refer to the infinite line through the segment unless stated otherwise.
 // Precondition for construction from endpoints: beg != end (a zero-length segment has no direction; its
 // direction() is NaN).
+//
+// Invariant: direction() is the unit vector from beg() to end(); every setter and transformation keeps it so
+// (setBegin/setEnd recompute it, moves and swaps flip or keep it, a rotation rotates it). Only the constructor that
+// takes a direction stores it as given. Caching it is the point of the class: distances and projections along the
+// line cost one dot product each.
+// Complexity: O(dimensions) per operation, no allocation; cropByHyperRect and fitToHyperRect O(dimensions).
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,10 @@
 // Matrix: a rows x cols matrix on top of Eigen (Eigen::Dynamic sizes allowed, see MatrixD in rtl/Core.h).
 // Default construction zero-initialises fixed-size matrices; a dynamic one starts empty.
+//
+// Complexity: element-wise operations O(rows * cols); products, inversion, determinant and eigen-decomposition as
+// Eigen's (O(n^3) for n x n). Fixed sizes never allocate; Eigen::Dynamic sizes allocate like Eigen::MatrixX.
+// Preconditions: invert()/inverted() need a non-singular matrix (otherwise inf/NaN elements, as Eigen); operations
+// restricted to square or fixed-size matrices are rejected at compile time (static_assert), not at run time.
 #pragma once
 
 #include <complex>

@@ -1,4 +1,7 @@
 // Polygon2D: a planar polygon as its ordered vertex list.
+//
+// No invariant is imposed on the vertices (they need not form a simple or convex polygon). Complexity: transformations
+// O(n) in the vertex count; adding a vertex amortised O(1).
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,9 @@
 // Polygon3D: a planar polygon in 3D, i.e. a plane n.x = distance (unit normal n) plus the ordered vertex list.
 // addPoint() projects vertices onto the plane; addPointDirect() stores them as given.
+//
+// Invariant: the normal is a unit vector (precondition: the constructor's normal is non-zero). Vertices added with
+// addPoint() lie on the plane; addPointDirect() trusts the caller. Transformations move the vertices and the plane
+// together. Complexity: O(n) per transformation, amortised O(1) per vertex added.
 #pragma once
 
 #include <cstddef>

@@ -3,6 +3,11 @@
 // Roll-pitch-yaw convention: q(roll, pitch, yaw) = Rx(roll) Ry(pitch) Rz(yaw) (intrinsic X-Y-Z), and rpy() returns
 // roll, yaw in (-pi, pi] and pitch in [-pi/2, pi/2] (yaw = 0 at the gimbal lock |pitch| = pi/2).
 // The default constructor zero-initialises all four coefficients, like the other core types (it is NOT the identity).
+//
+// Complexity: O(1), no allocation. Arithmetic (+, -, scalar * and /) acts on the four coefficients as a 4-vector;
+// * is the Hamilton product. Preconditions: rotMat(), slerp() and rpy() treat the quaternion as a rotation and
+// need a unit quaternion; inverted() needs a non-zero one (it is the conjugate over the squared norm, exact for
+// any norm). The (v_from, v_to) constructor needs two non-zero vectors.
 #pragma once
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // STL-style detection traits over the RTL object vocabulary (ElementType, dimensionality(), distance(), inverted(),
-// identity(), nan(), random(), transformed()). Each trait has ::type (std::true_type / std::false_type, consistent
-// with ::value), a _t alias and a _v constant. Self-contained: the detection idiom is implemented here.
+// identity(), nan(), random(), transformed()). Each trait has a member `type` (std::true_type / std::false_type,
+// consistent with its member `value`), a _t alias and a _v constant. Self-contained: the detection idiom is implemented here.
 #pragma once
 
 #include <type_traits>
@@ -62,7 +62,8 @@ namespace rtl
     // ---- transformed() ----------------------------------------------------------------------------------------
     template<typename O, typename T>
     using TransformedResult = decltype(std::declval<O &>().transformed(std::declval<T &>()));
-    //! Whether obj.transformed(tf) is valid. tf/VariantResult.h specialises this for GeneralTf, where ::type is the result type.
+    //! Whether obj.transformed(tf) is valid. tf/VariantResult.h specialises this for GeneralTf, where the member
+    //! `type` is the result type.
     template<typename Obj, typename Tf> struct is_transformable
     {
         using type = traits_detail::is_detected<TransformedResult, Obj, Tf>;
@@ -104,7 +105,7 @@ namespace rtl
     // ---- random(generators...) --------------------------------------------------------------------------------
     template<typename Obj, typename... Gs> using RandomResult = decltype(Obj::random(std::declval<Gs &>()...));
 
-    //! HasRandomImpl<Obj, Gs...>::type: whether Obj::random(Gs&...) is valid; a void generator type gives false.
+    //! `HasRandomImpl<Obj, Gs...>::type`: whether Obj::random(Gs&...) is valid; a void generator type gives false.
     template<typename... Ts> struct HasRandomImpl;
     template<typename Obj, typename... Gs> struct HasRandomImpl<Obj, Gs...>
     {

@@ -1,9 +1,17 @@
 // VectorND: a fixed-size column vector of `dimensions` elements on top of Eigen, with 2D and 3D specialisations
 // (x()/y()/z() accessors, cross products, base vectors).
 //
-// Default construction zero-initialises the elements (rtl-api §8 item 2): the published implementation left them
-// uninitialised, which made `Vector3d()` unusable as "the zero vector". The compiler drops the zero stores whenever
-// they are overwritten before being read (bench/b_core_default_init.cpp).
+// Default construction zero-initialises the elements (docs/reference.md, "VectorND"): the published implementation
+// left them uninitialised, which made `Vector3d()` unusable as "the zero vector". The compiler drops the zero
+// stores whenever they are overwritten before being read (measured in docs/core.md).
+//
+// Complexity: every operation is O(dimensions) and allocation-free (a fixed-size Eigen vector held by value).
+// Invariants: none beyond Eigen's; elements may be any value, NaN included (hasNaN() tells; it and nan() exist for
+// floating-point elements only, while the rest compiles for integer, bool and std::complex elements too).
+// Preconditions: normalize()/normalized() and the projections "on" a vector need a non-zero vector (a zero one
+// gives NaN, as Eigen does); element access by index needs i < dimensions (checked only by Eigen's assertions).
+// Why a thin wrapper: RTL's interface (named accessors, static distance/angle helpers, transformed()) on top of
+// Eigen's arithmetic, which stays Eigen's (vectorised, and reachable through data()).
 #pragma once
 
 #include <algorithm>

@@ -10,6 +10,9 @@
 // "No return" is logged as a fixed range that differs between robots (Intel 81.83, CSAIL 81.91, aces 50.0). By
 // default the reader finds it in the log itself (see readCarmenLogDetailed): ranges at or beyond it are gaps.
 // An explicit max range overrides the detection.
+//
+// Complexity: linear in the log's size; every scan is kept in memory. A malformed FLASER line throws an error that
+// names the line (and the file, for the file readers); lines of other records are skipped.
 #pragma once
 
 #include <algorithm>

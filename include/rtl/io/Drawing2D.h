@@ -1,6 +1,12 @@
-// The back-end-neutral 2D drawing model behind LaTeXTikz2D and Svg2D: the drawing calls of rtl-api §4.4 record
+// The back-end-neutral 2D drawing model behind LaTeXTikz2D and Svg2D: the drawing calls of LaTeXTikz2D record
 // primitives, registered styles/colours/marks, grids, axes and data bounds; writeTikz (Tikz2DWriter.h) and writeSvg
 // (Svg2D.h) turn the same model into TikZ or SVG.
+//
+// Why a model: RTL's exporter wrote TikZ while it was being called; recording the calls first lets one drawing be
+// written as TikZ, as SVG, or thinned to fit pdflatex's memory, and lets the writers be tested on the model.
+// Complexity: each drawing call is amortised O(1) (plus its point count); a writer is linear in the primitives,
+// marks and polyline points. Invariant: the data bounds cover every finite coordinate recorded (grids and axes
+// extend them by the overrun); non-finite points are skipped and break polylines.
 #pragma once
 
 #include <algorithm>
@@ -24,7 +30,7 @@ namespace rtl
     //! Model conventions shared by the back-ends:
     //! - Styles are TikZ key/value text ("style={draw=red,thick}" or "draw=red"); each distinct text is registered
     //!   once as StyleA, StyleB, ... and primitives refer to that name. Colours (saveColor) become ColorA, ...; marks
-    //!   (style, template, scale) become \MarkA, ... The registration order is the order of the calls.
+    //!   (style, template, scale) become `\MarkA`, ... The registration order is the order of the calls.
     //! - On log10 axes every coordinate is replaced by its log10 before it is tracked (non-positive values are
     //!   dropped); grid and axis ticks are then decades. Non-finite points are skipped and break polylines.
     //! - The data bounds cover every drawn point (circles and ellipses by their bounding boxes, clamped to the float
@@ -42,7 +48,7 @@ namespace rtl
         //! addEdge(s) options: arrow tips at the end and/or the beginning of each edge.
         static const unsigned int edge_arrow_end = 0x01, edge_arrow_beg = 0x02;
 
-        //! Mark templates: TikZ code around the local origin, sized by \MarkRadius; "@style" becomes the style name.
+        //! Mark templates: TikZ code around the local origin, sized by `\MarkRadius`; "@style" becomes the style name.
         static inline const char *latex_mark_blank = latex_detail::tikz_mark_blank;
         static inline const char *latex_mark_cross = latex_detail::tikz_mark_cross;
         static inline const char *latex_mark_mark = latex_detail::tikz_mark_mark;
@@ -360,7 +366,7 @@ namespace rtl
         const std::string &descriptionY() const { return description_y; }
         //! Registered style, colour and mark names (TikZ definitions and the normalised style texts).
         const latex_detail::TikzNames &registry() const { return names; }
-        //! Registered marks by name (\MarkX).
+        //! Registered marks by name (`\MarkX`).
         const std::map<std::string, MarkDef> &markDefs() const { return mark_defs; }
         unsigned int axisTypeX() const { return axis_type_x; }
         unsigned int axisTypeY() const { return axis_type_y; }

@@ -1,4 +1,8 @@
-// A LaTeX report of figures and tables, compiled with pdflatex when it is installed (rtl-api §4.6).
+// A LaTeX report of figures and tables, compiled with pdflatex when it is installed
+// (docs/reference.md, "LaTeXDoc").
+//
+// Every external step (create directories, compile, move the PDF, remove the temporary directory) is a replaceable
+// callable, and a failing step never throws or stops the program: a report is a by-product, not a result.
 #pragma once
 
 #include <cstdlib>
@@ -24,7 +28,7 @@ namespace rtl
     //! Work happens in the temporary directory `<out_dir>_tmp_<out_name>`: every figure is written there as
     //! `<out_name>_<k>.tex` and compiled on its own (the main document includes the PDFs), and the destructor (or
     //! finish()) writes the `article` document, compiles it, moves the PDF to out_dir and removes the temporary
-    //! directory. With setInlineFigures(true) the figures are \input into the main document instead (standalone
+    //! directory. With setInlineFigures(true) the figures are `\input` into the main document instead (standalone
     //! package), so the whole report costs a single pdflatex run.
     //!
     //! External steps never throw or abort: if pdflatex is not on PATH the document says so once on std::cerr and
@@ -70,7 +74,7 @@ namespace rtl
         template<typename T> void setMoveFinalDoc(T func) { move_final_doc = func; }
         template<typename T> void setCompileTex(T func) { compile_tex = func; }
 
-        //! true: figures are \input into the main document and compiled with it (one pdflatex run in total).
+        //! true: figures are `\input` into the main document and compiled with it (one pdflatex run in total).
         void setInlineFigures(bool inline_figures) { inline_mode = inline_figures; }
 
         //! Writes `le` as the next figure (full text width) with an optional caption.

@@ -1,4 +1,4 @@
-// A LaTeX tabular inside a table float, written into a LaTeXDoc (rtl-api §4.3).
+// A LaTeX tabular inside a table float, written into a LaTeXDoc (docs/reference.md, "LaTeXTable").
 #pragma once
 
 #include <algorithm>

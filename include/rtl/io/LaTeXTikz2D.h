@@ -1,4 +1,10 @@
-// Standalone TikZ export of 2D drawings: plots with marks, primitives, grids and axes (rtl-api §4.4).
+// Standalone TikZ export of 2D drawings: plots with marks, primitives, grids and axes
+// (docs/reference.md, "LaTeXTikz2D").
+//
+// RTL's interface over Drawing2D (the recorded drawing) and Tikz2DWriter.h (its TikZ text); Svg2D.h writes the
+// same drawing as SVG. Complexity: each call amortised O(1) plus its point count; writeTEX linear in what was
+// drawn. Output is deterministic and independent of the locale; drawings beyond pdflatex's memory are thinned
+// (TikzBudget.h).
 #pragma once
 
 #include <algorithm>
@@ -26,20 +32,20 @@ namespace rtl
     //! tikzpicture (the TikZ back-end, Tikz2DWriter.h).
     //!
     //! TikZ conventions (those of the published RTL, so figures look the same; deviations are marked "rather than"):
-    //! - The document is `minimal` with xcolor[rgb], tikz and preview[active,tightpage] (\PreviewBorder = border), so
+    //! - The document is `minimal` with xcolor[rgb], tikz and preview[active,tightpage] (`\PreviewBorder` = border), so
     //!   the PDF page is cropped to the picture.
     //! - The picture works in data units: the unit vectors `x=<sx>cm, y=<sy>cm` map the data range (or the clip
     //!   region) to the requested size, times the user scales (scaleX()/scaleY() report sx, sy). Unit vectors rather
     //!   than xscale/yscale, because TikZ multiplies a coordinate by the unit vector before any transformation: with
-    //!   xscale, a coordinate above ~575 (x 1 cm) overflows TeX's 16384 pt, with x=<sx>cm only the paper position
+    //!   xscale, a coordinate above ~575 (x 1 cm) overflows TeX's 16384 pt, with `x=<sx>cm` only the paper position
     //!   counts. Where even that is out of TeX's range (a unit vector outside 1e-4..500 cm, e.g. a data range of 1e-3,
     //!   or coordinates >= 16000 or > 500 cm from the origin on paper, e.g. 1e6), the picture is written on paper
-    //!   instead: x=1cm, y=1cm, every coordinate (v - min) * s in cm, \MinX... in cm, \MarkGlobalScaleX/Y = 1
+    //!   instead: x=1cm, y=1cm, every coordinate (v - min) * s in cm, `\MinX...` in cm, `\MarkGlobalScaleX/Y` = 1
     //!   (latex_detail::TikzMap); such documents did not compile before.
-    //! - The picture always contains the data frame (\MinX,\MinY)-(\MaxX,\MaxY) as an invisible path.
+    //! - The picture always contains the data frame (`\MinX`,`\MinY`)-(`\MaxX`,`\MaxY`) as an invisible path.
     //! - Marks are `\newcommand{\MarkA}[3]{...}` (x, y, rotation in degrees) drawn in a scope shifted to (x, y) that
-    //!   resets the unit vectors to 1 cm, so marks are \MarkRadius cm in size whatever the axis scaling.
-    //!   \MarkGlobalScaleX/Y (= 1/sx, 1/sy: cm to data units) stay defined for hand-written TikZ. Along a polyline
+    //!   resets the unit vectors to 1 cm, so marks are `\MarkRadius` cm in size whatever the axis scaling.
+    //!   `\MarkGlobalScaleX/Y` (= 1/sx, 1/sy: cm to data units) stay defined for hand-written TikZ. Along a polyline
     //!   each mark is rotated to the local direction (as seen on paper).
     //! - On log10 axes every coordinate is replaced by its log10 before it is tracked or drawn (non-positive values
     //!   are dropped); grid and axis ticks are then given in decades. Non-finite points are skipped and break lines.
@@ -77,12 +83,12 @@ namespace rtl
         //! Writes the standalone document to a stream.
         void writeTEX(std::ostream &os) { rtl::writeTikz(*this, os); }
 
-        //! Writes only the tikzpicture environment (colours, macros and marks are local to it), e.g. to \input it.
+        //! Writes only the tikzpicture environment (colours, macros and marks are local to it), e.g. to `\input` it.
         void writeTikz(std::ostream &os) { rtl::writeTikzPicture(*this, os); }
 
         //! printf-formats `num` by the conversion letter ending `format` (see latex_detail::numberToLatexString for
-        //! the rules, including non-finite and out-of-range values), rewrites an exponent as " \cdot 10^{exp}" (a bare
-        //! mantissa 1 gives "10^{exp}") and wraps the result in $...$.
+        //! the rules, including non-finite and out-of-range values), rewrites an exponent as `" \cdot 10^{exp}"`
+        //! (a bare mantissa 1 gives "10^{exp}") and wraps the result in $...$.
         template<typename T>
         static std::string numberToLatexString(T num, std::string format)
         {

@@ -1,4 +1,9 @@
-// Standalone TikZ export of 3D scenes: perspective camera, marks, lines and faces in depth order (rtl-api §4.5).
+// Standalone TikZ export of 3D scenes: perspective camera, marks, lines and faces in depth order
+// (docs/reference.md, "LaTeXTikz3D").
+//
+// Complexity of writeTEX: the faces' BSP tree costs O(F log F) for F faces that rarely cross and up to O(F^2)
+// fragments when many do; lines and marks are sorted into it (O(n log n)); the text is linear in what is drawn.
+// Adding objects is amortised O(1) each. The scene is kept, so writeTEX may be called again (e.g. per view).
 #pragma once
 
 #include <algorithm>
@@ -41,9 +46,9 @@ namespace rtl
     //!   normal points towards the camera and back_style otherwise; an empty style leaves that side unpainted (the
     //!   style text is applied to `\path`, so it should say fill= and/or draw=). Edges of the original polygons are
     //!   drawn with line_style if it is non-empty (edges created by BSP splits are not).
-    //! - Styles, colours and mark templates follow LaTeXTikz2D (StyleA, ColorA, \MarkA). 3D marks take four arguments
+    //! - Styles, colours and mark templates follow LaTeXTikz2D (StyleA, ColorA, `\MarkA`). 3D marks take four arguments
     //!   (x, y, rotation in degrees, scale); the scale is mark_radius times the perspective factor relative to the
-    //!   centre of the rendered region, so a mark there is \MarkRadius = 0.1 cm * mark_radius.
+    //!   centre of the rendered region, so a mark there is `\MarkRadius` = 0.1 cm * mark_radius.
     //! - pdflatex's memory (TikzBudget.h), an addition to RTL: a scene beyond texMarkLimit() mark equivalents
     //!   (default Drawing2D::pdflatex_mark_limit, 8,000; a mark counts 1, a line, axis, face fill or face outline
     //!   1/2; axis labels and BSP splits are not counted) is written with every k-th added mark only and a note below
@@ -72,7 +77,7 @@ namespace rtl
         static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
         static inline const char *latex_var_style = latex_detail::tikz_var_style;
 
-        //! The largest perspective scale of a mark (\MarkRadius 0.1 cm * 1000: a dot of 200 cm across): nearer to the
+        //! The largest perspective scale of a mark (`\MarkRadius` 0.1 cm * 1000: a dot of 200 cm across): nearer to the
         //! camera it stops growing.
         static constexpr double max_mark_scale = 1000.0;
 
@@ -854,7 +859,7 @@ namespace rtl
                 double v0 = std::ceil((origin + t0) / a.tick - 1e-9), v1 = std::floor((origin + t1) / a.tick + 1e-9);
                 if (!std::isfinite(v0) || !std::isfinite(v1) || !(v1 - v0 < 1000))
                     continue;
-                // Counted with an integer: `v += 1.0` stands still once |v| >= 2^53 (issue 15.2, in 3D too).
+                // Counted with an integer: `v += 1.0` stands still once |v| >= 2^53 (as in 2D).
                 double last_value = -std::numeric_limits<double>::infinity();
                 size_t count = v1 < v0 ? 0 : static_cast<size_t>(v1 - v0) + 1;
                 for (size_t k = 0; k < count; ++k)

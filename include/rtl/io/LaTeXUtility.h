@@ -1,4 +1,5 @@
-// Helpers shared by the LaTeX exporters: escaping of user text and locale-independent number output (rtl-api §4.2).
+// Helpers shared by the LaTeX exporters: escaping of user text and locale-independent number output
+// (docs/reference.md, "LaTeX text").
 #pragma once
 
 #include <algorithm>
@@ -122,7 +123,7 @@ namespace rtl::LaTeX
     }
 
     //! Returns `str` as ASCII LaTeX that compiles in text mode whatever the user wrote: & % $ # _ { } get a
-    //! backslash; ~ ^ \ become \textasciitilde, \textasciicircum and \textbackslash (each followed by a space so
+    //! backslash; ~ ^ \ become `\textasciitilde`, `\textasciicircum` and `\textbackslash` (each followed by a space so
     //! that a following letter does not extend the command name); < > become $<$ / $>$ (the OT1 text font has no
     //! such glyphs). The text is first made valid UTF-8 without control characters (sanitizeUtf8: invalid bytes
     //! become U+FFFD, tab/newline a space, other controls and DEL are dropped); non-ASCII characters are then

@@ -3,6 +3,7 @@
 //  - ColumnMajor (Ouster, e.g. RELLIS-3D): record k is beam k % beams of column k / beams;
 //  - RowMajor (KITTI-style ring after ring): record k is column k % columns of beam k / columns.
 // A point of exactly (0, 0, 0) means "no return" and becomes a NaN point: a gap for the segmenters.
+// Complexity: linear in the number of records; the whole file is held in memory as the returned cloud.
 #pragma once
 
 #include <cstddef>

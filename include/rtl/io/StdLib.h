@@ -2,7 +2,8 @@
 //
 // Every overload lives in namespace rtl and is found by argument-dependent lookup. The published implementation
 // declared them in the global namespace, which newer libstdc++ cannot find from its rvalue-stream operator<<
-// (e.g. `std::ostringstream() << "text" << v`), so code using that idiom failed to compile (rtl-api §1.5).
+// (e.g. `std::ostringstream() << "text" << v`), so code using that idiom failed to compile
+// (docs/reference.md, "Stream operators and argument-dependent lookup").
 // Formats: vectors [a, b, c]; matrices [a, b; c, d]; quaternions w + xi - yj + zk; translations "t: <vector>";
 // rotations "R: <matrix>" (3D adds "   axix: <axis>   angle: <angle>", label spelled as in the published version);
 // rigid transformations "<rotation>   <translation>"; line segments "<beg>--><end>"; tree nodes "<key>   <tf>";

@@ -1,6 +1,7 @@
 // Where the writers put their text: a std::ostream (RTL's stream calls) or a std::string. The writers are templates
-// on the target and append through textAppend, so a program that writes only to strings (the WebAssembly package)
-// instantiates no stream: libc++'s stream and locale machinery is about 20 KB gzipped of the package's wasm.
+// on the target and append through textAppend, so a program that writes only to strings instantiates no stream and
+// links none of the standard library's stream and locale machinery (its size is given in docs/io.md, "Writing
+// without streams").
 #pragma once
 
 #include <ostream>

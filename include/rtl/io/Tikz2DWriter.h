@@ -1,4 +1,5 @@
-// The TikZ back-end of Drawing2D: the standalone document or only the tikzpicture (rtl-api §4.4 conventions).
+// The TikZ back-end of Drawing2D: the standalone document or only the tikzpicture, with the
+// conventions of RTL's LaTeXTikz2D (docs/reference.md, "LaTeXTikz2D").
 #pragma once
 
 #include <algorithm>
@@ -18,8 +19,8 @@ namespace rtl
     namespace latex_detail
     {
         //! How data coordinates become TikZ coordinates. Normally (`paper` false) the picture works in data units
-        //! with the unit vectors x=<sx>cm, y=<sy>cm. TeX cannot hold that when a unit vector or a coordinate is out of
-        //! its range (dimensions < 16384 pt = 575 cm, pgfmath numbers < 16384, no exponent in "1e-05cm"), e.g. for a
+        //! with the unit vectors `x=<sx>cm, y=<sy>cm`. TeX cannot hold that when a unit vector or a coordinate is out
+        //! of its range (dimensions < 16384 pt = 575 cm, pgfmath numbers < 16384, no exponent in "1e-05cm"), e.g. for a
         //! data range of 1e-3 or coordinates of 1e6: then (`paper` true) every coordinate is written in cm relative to
         //! the data minimum, (v - min) * s, with x=1cm, y=1cm; radii become "rx and ry" pairs.
         struct TikzMap
@@ -30,7 +31,7 @@ namespace rtl
             double X(double x) const { return paper ? (x - ox) * sx : x; }
             double Y(double y) const { return paper ? (y - oy) * sy : y; }
             std::string pt(double x, double y) const { return tikzPoint(X(x), Y(y)); }
-            //! A radius of r data units: "r", or "<r sx> and <r sy>" on paper.
+            //! A radius of r data units: "r", or `"<r sx> and <r sy>"` on paper.
             std::string radius(double r) const { return paper ? number(r * sx) + " and " + number(r * sy) : number(r); }
             //! Data-unit distance along x / y as written.
             double dx(double d) const { return paper ? d * sx : d; }
@@ -295,7 +296,7 @@ namespace rtl
         void writeTikzTo(const Drawing2D &d, Out &target);
     }
 
-    //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to \input it.
+    //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to `\input` it.
     //! A drawing beyond d.texMarkLimit() is thinned with a note; std::length_error (nothing written) if what cannot be
     //! thinned exceeds it (TikzBudget.h), and if the picture is beyond TeX's dimensions (tikzTexLimits: an extent on
     //! paper, the mark radius or a mark scale beyond latex_detail::tex_paper_limit_cm, 500 cm). Rotations and arcs

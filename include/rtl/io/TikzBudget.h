@@ -1,10 +1,13 @@
 // How much of pdflatex's memory a TikZ picture of a Drawing2D takes, and how far to thin it so that it fits.
 //
-// A tikzpicture is one TeX box: everything in it stays in main memory until the page is shipped out. Measured with
-// pdfTeX 1.40.24 (TeX Live 2022, main_memory 5,000,000 words) on drawScan pictures of filled dot marks: about 495
-// words per mark; 8,906 marks compile, 9,062 fail with "TeX capacity exceeded". Drawing2D::pdflatex_mark_limit
-// (8,000) keeps a margin below that. The other costs are relative to a dot mark, measured on 2,000 of each:
-// a polyline point about 1/8, an edge (one \draw) about 1/2.
+// A tikzpicture is one TeX box: everything in it stays in main memory until the page is shipped out, so a picture
+// with too many pieces fails with "TeX capacity exceeded" in pdflatex's default memory. The budget counts "mark
+// equivalents": a dot mark 1, a polyline point 1/8, any other primitive (an edge, a grid line, an axis tick) 1/2.
+// Drawing2D::pdflatex_mark_limit (8,000) lies a margin below the largest picture that compiles in a default TeX
+// Live installation. Those weights and the limit are measured, not derived (docs/io.md, "TikZ memory budget").
+//
+// Complexity: linear in the number of primitives and polyline points. Thinning is deterministic (every stride-th
+// mark and polyline point, and each polyline's last), so the same drawing always gives the same picture.
 #pragma once
 
 #include <algorithm>

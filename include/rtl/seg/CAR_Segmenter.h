@@ -18,6 +18,13 @@
 // loadData keeps a copy of the scan (reused by the next call); grabCluster copies each cluster out of it, so that a
 // caller that drops each cluster before grabbing the next reuses one block of memory.
 //
+// Complexity: loadData makes at most N * (step - 1) distance comparisons plus near-linear union-find work; on
+// real scans, made of long runs of neighbouring points, it costs about one distance per point whatever the step
+// (only a run's first step - 1 points can reach back past its start). Memory O(N), reused between calls.
+// grabCluster is O(cluster size). Invariant: the clusters partition the valid points of the last scan, and no two
+// points that meet the criterion within the window lie in different clusters (the published merge was incomplete;
+// docs/reference.md, "Segmentation defects fixed here").
+//
 // Tracing (core/Trace.h): CAR_Segmenter<Vector, Observer> with an observer set by setObserver() reports every step
 // of loadData as the events of seg/SegTrace.h (use rtl::CarTraceLog to record them). A traced loadData runs the
 // general window algorithm for every step (same clusters); with the default rtl::NoTrace nothing is reported and
@@ -25,8 +32,8 @@
 //
 // Bad input: step 0 is treated as 1; an empty scan gives no cluster; loadData throws std::invalid_argument unless
 // 0 <= lower_bound <= upper_bound (upper may be +inf) and the origin is finite. Defaults: step 2 (each point compared
-// with the previous one, so that a default segmenter links consecutive points, as before the window fix; RTL does
-// not document its default), bounds [0, +inf).
+// with the previous one, so that a default segmenter links consecutive points; RTL does not document its default),
+// bounds [0, +inf).
 #pragma once
 
 #include <algorithm>
@@ -209,9 +216,9 @@ namespace rtl
 #if defined(__GNUC__)
                 // Double points, two per step on vector lanes (de-interleaved by shuffles): the same operations per
                 // point as the loop below, in the same order (rsq and dsq are (0 + t0) + t1 = t0 + t1), so the same
-                // flags. GCC and clang turn the scalar loop into per-point (x, y) vectors with horizontal sums
-                // instead: loadData of a 100k-point ring scan at step 3 took 0.37 ms (GCC 12 -O3) and 0.45 ms (wasm,
-                // V8), now 0.25 and 0.27 ms. Both flag bytes come from one mask vector (two lane reads, not four).
+                // flags. Written out because GCC and clang turn the scalar loop into per-point (x, y) vectors with
+                // horizontal sums instead, which is slower (docs/seg.md, "CAR neighbour flags on vector lanes").
+                // Both flag bytes come from one mask vector (two lane reads, not four).
                 if constexpr (std::is_same_v<ElementType, double> && sizeof(VectorType) == 2 * sizeof(double))
                 {
                     typedef double V __attribute__((vector_size(16)));

@@ -11,6 +11,12 @@
 // however addPoint() and grabCluster() calls interleave. flush() (an addition to the published API) empties the
 // window at the end of a stream, closing every cluster.
 //
+// Complexity: addPoint compares the new point with at most `step` window points; a merge relabels the window (O(step))
+// and moves the newer cluster's alive points into the older one's, interleaving in stream order (cost: the newer
+// cluster's alive points plus the older one's points that are younger than them); when the whole window belongs to one
+// cluster, a joining point is appended in O(1). Memory: the window plus the alive and closed clusters not yet grabbed.
+// Invariant: every point added is in exactly one of the window, an alive cluster or a closed cluster.
+//
 // The windows differ by one: IA at step s compares a new point with the s previous points, CAR_Segmenter at step
 // s + 1 does (CAR's window is step - 1 points, RTL's definitions). With scaling = (s + 1) * 2 pi / N, CAR's
 // threshold at step s + 1, both give the same clusters on the same points, except that CAR also links across the

@@ -1,5 +1,9 @@
 // RigidTfND: a rigid (proper Euclidean) transformation v -> R v + t in `dimensions` dimensions,
 // stored as a RotationND (R) and a TranslationND (t).
+//
+// Invariants: those of RotationND for R; t is any vector (a NaN translation is meaningful to LaTeXTikz3D::setView,
+// which fits the camera). Inversion gives (R^T, -R^T t). Complexity: applying O(d^2), composing O(d^3); no
+// allocation. Default construction gives the identity.
 #pragma once
 
 #include <cstddef>

@@ -2,7 +2,13 @@
 //
 // The rotation matrix is the stored representation (rotMat() hands out a reference to it). The 3D specialisation
 // also caches the equivalent angle-axis; every operation that changes the matrix calls the private hook
-// rotMatUpdated() of the child class, so that cache can never go stale (rtl-api §3.2).
+// rotMatUpdated() of the child class, so that cache can never go stale
+// (docs/reference.md, "RotationND").
+//
+// Invariant: R is orthonormal with det R = 1 up to rounding, for every rotation built through the public interface
+// (the inputs of the two-vector and angle-axis forms are normalised first; random() draws directions, so the scale
+// of its elements does not matter). Complexity: applying O(d^2), composing O(d^3), inverting (the transpose) O(d^2);
+// no allocation. Default construction gives the identity.
 #pragma once
 
 #include <cmath>

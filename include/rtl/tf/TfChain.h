@@ -1,5 +1,9 @@
 // TfChain: a sequence of transformations applied in list order (front first), e.g. the path between two frames of
-// a TfTree (rtl-api §3.7).
+// a TfTree (docs/reference.md, "TfChain").
+//
+// Complexity: applying the chain or squash() costs one application (or composition) per element, O(length);
+// applying an empty chain throws std::out_of_range, while squash() of an empty chain is T::identity(). The list is
+// a std::list because TfTree::tf builds it from both ends.
 #pragma once
 
 #include <list>

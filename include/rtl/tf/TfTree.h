@@ -1,8 +1,13 @@
 // TfTree: a tree of coordinate frames keyed by K, with the transformation T from each frame's parent to the frame
-// stored on the child node (rtl-api §3.9). tf(from, to) returns the TfChain mapping coordinates in `from` to `to`.
+// stored on the child node (docs/reference.md, "TfTree"). tf(from, to) returns the TfChain mapping coordinates in
+// `from` to `to`.
 //
 // Nodes live in a std::map<K, TfTreeNode> (node-based, so addresses are stable and parent/child pointers stay valid
 // across inserts and erases). K must be ordered by operator<. The root always exists.
+//
+// Complexity (n frames): at, contains, operator[] and insert O(log n); erase O(s log n) for a subtree of s frames;
+// tf(from, to) linear in the path length, allocating one list node per step; copies O(n log n), moves O(1) (a
+// moved-from tree keeps a root, so it stays usable and destructible).
 #pragma once
 
 #include <cstddef>

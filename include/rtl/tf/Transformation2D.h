@@ -1,4 +1,5 @@
-// Legacy stand-alone 2D rigid transformation (rtl-api §3.10). Not included by any umbrella header; new code should
+// Legacy stand-alone 2D rigid transformation (docs/reference.md, "Legacy Transformation2D and
+// Transformation3D"). Not included by any umbrella header; new code should
 // use RigidTfND<2, E>. Kept for source compatibility: v -> R(angle) v + shift.
 #pragma once
 

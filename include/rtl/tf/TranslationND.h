@@ -1,8 +1,11 @@
 // TranslationND: a pure translation v -> v + t in `dimensions` dimensions.
 //
-// Conventions shared by every transformation (rtl-api §3.0):
+// Conventions shared by every transformation (docs/reference.md, "Composition rules"):
 //  - a.transformed(b) means "apply a first, then b" (the result is b o a); a.transform(b) does it in place.
 //  - tf(x) == x.transformed(tf), for any x with a matching transformed() (vectors, segments, boxes, other tfs...).
+//
+// Complexity: O(dimensions) per application, composition and inversion; no allocation. Default construction gives
+// the identity (the zero vector).
 #pragma once
 
 #include <cmath>

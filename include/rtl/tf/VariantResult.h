@@ -1,5 +1,6 @@
 // VariantResultType: the result of an operation whose type depends on which alternative a GeneralTf holds at run
-// time, plus the type-level machinery that computes those result sets (rtl-api §3.5).
+// time, plus the type-level machinery that computes those result sets
+// (docs/reference.md, "VariantResultType").
 //
 // A result set is written as VariantResultType<R...>: distinct types in first-appearance order. Transformations
 // that cannot be applied contribute nothing (they are detected as void and dropped). A set with a single type is
@@ -44,7 +45,7 @@ namespace rtl
         template<typename T> struct Identity { using type = T; };
     }
 
-    //! Unique<VariantResultType<Known...>, Ts...>::type: Known... followed by those Ts that are neither void nor
+    //! `Unique<VariantResultType<Known...>, Ts...>::type`: Known... followed by those Ts that are neither void nor
     //! already present, in first-appearance order.
     template<typename T, typename... Ts> struct Unique;
     template<typename... Known>
@@ -85,8 +86,8 @@ namespace rtl
     template<typename Tf, typename... Objs>
     using VariantResultTOsStripped = typename StripIfUnique<VariantResultTOs<Tf, Objs...>>::type;
 
-    //! One closure step: Expansion<Known, New, Tfs...>::type is Known together with every type obtained by transforming
-    //! a member of New with one of Tfs.
+    //! One closure step: `Expansion<Known, New, Tfs...>::type` is Known together with every type obtained by
+    //! transforming a member of New with one of Tfs.
     template<typename VRTKnown, typename VRTNew, typename... Tfs> struct Expansion;
     template<typename... Known, typename... New, typename... Tfs>
     struct Expansion<VariantResultType<Known...>, VariantResultType<New...>, Tfs...>
@@ -123,7 +124,7 @@ namespace rtl
     template<typename Obj, typename... Tfs>
     using VariantResultRecursiveStripped = typename StripIfUnique<VariantResultRecursive<Obj, Tfs...>>::type;
 
-    //! An Obj is transformable by a GeneralTf when at least one alternative can transform it; ::type is the result.
+    //! An Obj is transformable by a GeneralTf when at least one alternative can transform it; the member `type` is the result.
     template<typename Obj, typename... Tfs>
     struct is_transformable<Obj, GeneralTf<Tfs...>>
     {

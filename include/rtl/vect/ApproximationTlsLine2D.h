@@ -3,8 +3,8 @@
 // The line passes through the centroid along the major eigenvector of the covariance; errSquared() is the minor
 // eigenvalue (the mean squared orthogonal residual). The eigenvector is taken in closed form from whichever of the
 // two eigenvector formulas is better conditioned, so exactly axis-aligned sets get an exact axis direction (the
-// published implementation was 90 degrees off there, rtl-api 6.10 item 1). Geometry is kept in ComputeType and
-// crossings are computed in it (item 2); accessors return ElementType.
+// published implementation was 90 degrees off there; docs/reference.md, "Vectorization defects fixed here", defect 1).
+// Geometry is kept in ComputeType and crossings are computed in it (defect 2 there); accessors return ElementType.
 #pragma once
 
 #include <cmath>

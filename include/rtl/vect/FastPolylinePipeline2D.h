@@ -3,12 +3,12 @@
 //
 //   extraction (ExtractorChainFast) -> [AFTLS: total-error optimizer] -> continuity repair -> polyline
 // - The continuity repair ends, when its local repairs fail, in the exact search (PartitionSearch2D), and so does
-//   a failed extraction: a false return proves that no partition meets sigma and delta (issue 11 item 6).
+//   a failed extraction: a false return proves that no partition meets sigma and delta.
 // - AFTLS also keeps FTLS's candidate (extraction -> continuity, without the optimizer) and returns whichever has
-//   the lower total squared error, so its error never exceeds FTLS's (issue 11 item 5: the repair after the
-//   optimizer could raise it above the extractor's).
+//   the lower total squared error, so its error never exceeds FTLS's (the repair after the optimizer could
+//   raise it above the extractor's).
 // - Strict mode (default, RTL's behaviour): false when no partition exists; failure() names the corner.
-//   Split mode (setSplitAtInfeasibleCorners(true), issue 12 item 1): the exact search may break the polyline at
+//   Split mode (setSplitAtInfeasibleCorners(true)): the exact search may break the polyline at
 //   corners that cannot be met within delta (fewest breaks), so the result is several polylines covering the
 //   whole chain; polylineOffsets() and breaks() describe them. Where no partition into fitting ranges exists at
 //   all (e.g. 3, 5 or 7 points whose short ranges do not fit), PartitionSearch2D::cover() lets consecutive ranges
@@ -16,7 +16,7 @@
 //   invalid sigma or delta).
 // - A result that ElementType cannot hold (an errSquared() or a polyline vertex that overflows it, e.g. float
 //   points beyond ~1e19 whose squared residuals exceed FLT_MAX) is rejected: false, with no failure() corner
-//   (issue 15 item 7), rather than returning true with infinite numbers.
+//   rather than returning true with infinite numbers.
 // - Observer (last, default NoTrace): the events of FtlsTrace.h, from every stage.
 #pragma once
 

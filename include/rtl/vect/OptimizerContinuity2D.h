@@ -4,7 +4,7 @@
 //
 // A failing pair is repaired by the first of these that works; every new range keeps >= 2 points and, when a sigma
 // is set, an RMS residual < sigma (the published version let split ranges exceed sigma and gave up on pairs of
-// fewer than 6 points, rtl-api 6.10 items 3 and 4):
+// fewer than 6 points; docs/reference.md, "Vectorization defects fixed here", defects 3 and 4):
 //   1. move the boundary by up to 3 points, if both pieces then pass the pair test;
 //   2. merge the pair into one range (the vertex disappears), if it fits and its new neighbour pairs pass;
 //   3. split the combined range into three equal parts (the published repair), if all three fit and pass;
@@ -12,7 +12,7 @@
 //      the window's boundaries finds the fewest ranges that fit sigma and whose every pair (including the two
 //      pairs with the ranges outside the window) passes (e.g. a 2-point "bridge" range across a step);
 //   5. the exact search over the whole chain (PartitionSearch2D, any length): it finds a valid partition if one
-//      exists, so if it finds none, operator() returns false and failure() says where (issue 11 items 5, 6).
+//      exists, so if it finds none, operator() returns false and failure() says where.
 //      Only when the ranges do not span the whole sum array (direct use on a part of it) does it instead bridge
 //      the two boundary points without checking and let the loop re-check.
 // The repaired pairs are re-checked; a work budget proportional to the input bounds the total effort (when it
@@ -218,8 +218,8 @@ namespace rtl
         //! - a row x that no range reaches (every best(w, x) unset) is skipped: none of its cells can be set, so
         //!   its ranges are never fitted (a range is fitted only when some predecessor may use it).
         //! The scan of all w (p^3 / 6 steps) and the fits of all p^2 / 2 ranges were 97 % of FTLS's time on inputs
-        //! that never reach the exact search (issue 15 item 7: corpus seed 28, 1,019 points, 5 calls of up to
-        //! p = 127: 6.8M instructions; 4.1M since, now mostly the fits of the ranges that rows reach).
+        //! that never reach the exact search (bench/b_vect_fast_worst_case.cpp's corpus, seed 28, 1,019 points, 5
+        //! calls of up to p = 127: 6.8M instructions; 4.1M since, now mostly the fits of the ranges that rows reach).
         bool repartition(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
                          std::vector<IndexType> &indices, size_t r0, size_t r1, size_t k) const
         {

@@ -2,8 +2,9 @@
 // lower the total squared orthogonal error.
 //
 // Objective: the sum over pieces of count * mean squared residual, i.e. the total of all points' squared
-// residuals (rtl-api 6.10 item 5: the published version summed the pieces' *mean* errors). Constraints: every
-// piece keeps >= 2 points and, if a sigma is set, an RMS residual < sigma (item 3).
+// residuals (the published version summed the pieces' *mean* errors; docs/reference.md, "Vectorization defects
+// fixed here", defect 5). Constraints: every piece keeps >= 2 points and, if a sigma is set, an RMS residual < sigma
+// (defect 3 there).
 // Search: instead of the published integer Nelder-Mead over all breakpoints at once, a coordinate pattern search:
 // each breakpoint in turn tries a step up and down (only its two adjacent pieces are re-evaluated), takes an
 // improving move, and halves its step when neither improves, until every step is below 1. Each accepted move

@@ -1,6 +1,7 @@
 // PostprocessorPolyline2D: turns consecutive 2D lines into a polyline. Vertices: the first point projected onto
-// the first line, the crossing of each consecutive pair (computed in ComputeType, rtl-api 6.10 item 2), and the
-// last point projected onto the last line. Segment i lies on line i.
+// the first line, the crossing of each consecutive pair (computed in ComputeType; docs/reference.md,
+// "Vectorization defects fixed here", defect 2), and the last point projected onto the last line. Segment i lies on
+// line i.
 #pragma once
 
 #include <cstddef>

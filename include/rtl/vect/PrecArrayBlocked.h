@@ -5,7 +5,7 @@
 // queries per point) keep a row per point. Used by the FTLS/AFTLS vectorizers, whose few queries per range make
 // that trade worthwhile. The point vector passed to precompute() must outlive the queries.
 //
-// Exact range sums next to huge values (issue 15 item 7): a plain prefix sum loses the low bits of every later row
+// Exact range sums next to huge values: a plain prefix sum loses the low bits of every later row
 // once one far-off point (x = 1e9: x^2 = 1e18) has been added, so the sums of a small range after it come out as a
 // difference of two rounded 1e18s (error ~100 against sigma^2 ~ 1e-3). A query therefore reads only rows and points
 // inside its own range (the rows at the first block boundary at or after beg and the last at or before end, plus
@@ -14,7 +14,7 @@
 // then carry the rounding of its own points only, whatever lies outside it. The plain pass is kept for chains
 // without such outliers because the TwoSums would cost ~0.6 ns per point, as much as the pass itself.
 //
-// Speed of the plain pass (issue 17): it writes hi rows of 5/9 sums only (lo rows apart, written by the
+// Speed of the plain pass: it writes hi rows of 5/9 sums only (lo rows apart, written by the
 // compensated pass); with SSE2 it accumulates two blocks at once, lane by lane in the scalar pass's order (rows
 // bit-identical to the scalar pass's), and rules the outlier test out from its own block sums, reading the rows
 // again only when it cannot (a margin of 1e-9 around the threshold, or an outlier).

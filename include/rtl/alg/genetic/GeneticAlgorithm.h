@@ -1,4 +1,7 @@
 // GeneticAlgorithm: elitism, fitness-proportional survival, crossover refill and mutation over a fixed population.
+// Complexity: one epoch scores every agent once, sorts them (O(A log A) for A agents) and draws the survivors
+// (O(A * survivors) by roulette without replacement). With surviving_elites > 0 the best agent survives unmutated,
+// so with deterministic scores the best score never falls from one epoch to the next.
 #pragma once
 
 #include <algorithm>

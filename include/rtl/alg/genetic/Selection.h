@@ -1,4 +1,5 @@
 // Fitness-proportional (roulette-wheel) selection without replacement, used by GeneticAlgorithm.
+// O(n * count): each pick scans the remaining weights once.
 #pragma once
 
 #include <cmath>

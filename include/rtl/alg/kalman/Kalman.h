@@ -1,5 +1,9 @@
 // Kalman: a linear (and extended) Kalman filter with compile-time dimensions on rtl::Matrix.
 // The equations are in KalmanEquations.h, shared with the runtime-size KalmanX.
+//
+// Complexity: predict and correct are O(S^3 + M^3) for S states and M measurements (matrix products and one M x M
+// inversion); fixed sizes, no allocation. Invariant: the covariance stays symmetric (Joseph-form update).
+// Precondition for correct: H P H^T + R is invertible (R positive definite suffices).
 #pragma once
 
 #include <cstddef>

@@ -111,6 +111,8 @@ namespace rtl
     /*!
      * Optimal assignment of rows to columns.
      * \param costs row-major rows x cols matrix (rectangular allowed); may be null only when rows * cols == 0.
+     * \param rows number of rows (agents).
+     * \param cols number of columns (tasks).
      * \param maximize maximise the total instead of minimising it.
      * \return for each row its column, or assignment_unassigned for the rows > cols left out. Exactly
      *         min(rows, cols) rows get distinct columns, with the least (greatest) total cost over all such choices.

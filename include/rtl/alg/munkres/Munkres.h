@@ -1,4 +1,7 @@
 // Munkres: the Hungarian assignment on a fixed-size N x N rtl::Matrix, built on solveAssignment().
+// Complexity O(N^3). The published solver read an empty std::optional in one step (undefined behaviour that passed
+// its tests at -O0 only); this one is a different, deterministic algorithm with exact integer arithmetic
+// (Assignment.h). Results: result[r] is row r's column and its original cost; maximisation flips the costs.
 #pragma once
 
 #include <array>

@@ -1,4 +1,6 @@
 // ParticleFilter: a generic particle filter with systematic resampling and random refill.
+// Complexity: one iteration is O(P) calls of move and belief plus O(P) resampling work for P particles; no
+// allocation beyond the particle and weight vectors.
 #pragma once
 
 #include <cstddef>

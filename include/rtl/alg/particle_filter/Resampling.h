@@ -1,4 +1,5 @@
 // Systematic (low-variance) resampling: the indices picked by evenly spaced thresholds on the cumulative weights.
+// One pass over the weights, O(n + count).
 #pragma once
 
 #include <cmath>
@@ -12,6 +13,8 @@ namespace rtl
      * that falls into its share [W_{i-1}, W_i) of the normalised cumulative weights W. So index i is picked
      * floor or ceil of count * w_i / sum(w) times, and the result is sorted.
      * Negative and non-finite weights count as 0; when no weight is positive, all count equally.
+     * \param weights one weight per candidate index.
+     * \param count how many indices to pick.
      * \param offset in [0, 1) (values outside are clamped); a uniform random offset makes the expected count exact.
      */
     inline std::vector<size_t> systematicResample(const std::vector<double> &weights, size_t count, double offset)

@@ -1,0 +1,209 @@
+// ScanPolylines2D on the protocol of probabilistic line extraction (PLE, Schaefer et al., IROS 2018): 20 scans of each
+// of intel and csail, a budget of J = 10..50 vertices per scan, scored by PLE's ray metric (see bench/ple/README.md),
+// beside PLE's and PLE+'s published per-log means. Prints, per log and J: mean RMSE, mean f, mean score, median and
+// max time per scan, for the extractor with and without radial refinement, and for the library's existing pipeline
+// (CAR + FTLS split, one sigma per scan) as the baseline; n = scans in the mean (a scan without a hit is left out, as
+// PLE does; for the baseline also a scan where no sigma fits J).
+//
+// Data: the full logs intel-corrected.log.gz and csail-corrected.log.gz from --data=DIR, else $RTL_FULL_DATA_DIR,
+// else ../shared/data beside the repository. --smoke: the excerpts in tests/data (the first 30 scans), J = 10 and 50.
+#include <algorithm>
+#include <ctime>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ple/ple_protocol.h"
+#include "rtl/Segmentation.h"
+#include "rtl/Vectorization.h"
+#include "rtl/vect/ScanPolylines2D.h"
+
+namespace
+{
+    struct Published { double rmse, f; };
+    // PLE's published per-log means (RMSE m / f), J = 10, 20, 30, 40, 50: PLE, then PLE+.
+    const Published kIntelPle[5] = {{0.097, 0.861}, {0.063, 0.961}, {0.030, 0.981}, {0.017, 0.986}, {0.010, 0.986}};
+    const Published kIntelPlePlus[5] = {{0.070, 0.861}, {0.044, 0.961}, {0.022, 0.981}, {0.013, 0.986}, {0.008, 0.986}};
+    const Published kCsailPle[5] = {{0.102, 0.819}, {0.082, 0.905}, {0.064, 0.937}, {0.051, 0.954}, {0.040, 0.965}};
+    const Published kCsailPlePlus[5] = {{0.075, 0.819}, {0.062, 0.905}, {0.050, 0.937}, {0.040, 0.954}, {0.032, 0.965}};
+
+    //! CPU time of this thread: the machines here are shared, and wall time per scan would count other processes.
+    double threadMicroseconds()
+    {
+        timespec ts{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+        return static_cast<double>(ts.tv_sec) * 1e6 + static_cast<double>(ts.tv_nsec) * 1e-3;
+    }
+
+    struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
+
+    Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
+    {
+        rtl::ScanPolylines2D<double> ex;
+        ex.setMaxVertices(J);
+        ex.setRefinement(refine);
+        Row row;
+        std::vector<double> times;
+        for (const auto &scan : scans)
+        {
+            double best = 1e300;
+            for (int r = 0; r < reps; ++r)
+            {
+                const double t0 = threadMicroseconds();
+                ex(scan.points);
+                best = std::min(best, threadMicroseconds() - t0);
+            }
+            times.push_back(best);
+            row.max_vertices = std::max(row.max_vertices, ex.vertexCount());
+            const rtl::ple::Metric m = rtl::ple::score(scan, ex.polylines());
+            if (m.hit == 0) continue;
+            ++row.scored;
+            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+        }
+        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
+        std::sort(times.begin(), times.end());
+        row.median_us = times.empty() ? 0 : times[times.size() / 2];
+        row.max_us = times.empty() ? 0 : times.back();
+        return row;
+    }
+
+    //! The library's existing pipeline as the baseline: CAR clusters (consecutive points within PLE's 1 m link
+    //! distance), FTLS in split mode (delta = 3 sigma) on every cluster of >= 2 points, one sigma per scan: the
+    //! smallest (bisection over log sigma in [1e-4, 10] m, 40 steps) whose polylines have <= J vertices in total.
+    std::vector<std::vector<rtl::Vector2d>> baselinePolylines(const rtl::ple::Scan &scan, std::size_t J)
+    {
+        rtl::CAR_Segmenter<rtl::Vector2d> car(2, 1.0, 1.0);
+        car.loadData(scan.points);
+        std::vector<std::vector<rtl::Vector2d>> clusters;
+        while (car.clustersAvailable() > 0)
+        {
+            auto c = car.grabCluster();
+            if (c.size() >= 2) clusters.push_back(std::move(c));
+        }
+        rtl::VectorizerFTLSPolyline2D<double, double> ftls;
+        ftls.setDelta(3);
+        ftls.setSplitAtInfeasibleCorners(true);
+        auto run = [&](double sigma, std::vector<std::vector<rtl::Vector2d>> *out) {
+            ftls.setSigma(sigma);
+            std::size_t vertices = 0;
+            for (const auto &c : clusters)
+            {
+                if (!ftls(c)) continue;
+                const auto &v = ftls.vertices();
+                const auto &o = ftls.polylineOffsets();
+                for (std::size_t p = 0; p + 1 < o.size(); ++p)
+                {
+                    const std::size_t first = o[p] + p, last = o[p + 1] + p;
+                    vertices += last - first + 1;
+                    if (out) out->emplace_back(v.begin() + static_cast<long>(first), v.begin() + static_cast<long>(last) + 1);
+                }
+            }
+            return vertices;
+        };
+        double lo = std::log(1e-4), hi = std::log(10.0);
+        if (run(std::exp(hi), nullptr) > J) return {};
+        for (int it = 0; it < 40; ++it)
+        {
+            const double mid = 0.5 * (lo + hi);
+            (run(std::exp(mid), nullptr) <= J ? hi : lo) = mid;
+        }
+        std::vector<std::vector<rtl::Vector2d>> out;
+        run(std::exp(hi), &out);
+        return out;
+    }
+
+    Row evaluateBaseline(const std::vector<rtl::ple::Scan> &scans, std::size_t J)
+    {
+        Row row;
+        std::vector<double> times;
+        for (const auto &scan : scans)
+        {
+            const double t0 = threadMicroseconds();
+            const auto polys = baselinePolylines(scan, J);
+            times.push_back(threadMicroseconds() - t0);
+            std::size_t v = 0;
+            for (const auto &p : polys) v += p.size();
+            row.max_vertices = std::max(row.max_vertices, v);
+            const rtl::ple::Metric m = rtl::ple::score(scan, polys);
+            if (m.hit == 0) continue;
+            ++row.scored;
+            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+        }
+        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
+        std::sort(times.begin(), times.end());
+        row.median_us = times.empty() ? 0 : times[times.size() / 2];
+        row.max_us = times.empty() ? 0 : times.back();
+        return row;
+    }
+
+    double plePlusScore(const Published &p) { return p.f * p.rmse * p.rmse + (1 - p.f) * 0.25; }
+}
+
+int main(int argc, char **argv)
+{
+    bool smoke = false;
+    int reps = 5;
+    std::string dir;
+    if (const char *e = std::getenv("RTL_FULL_DATA_DIR")) dir = e;
+    for (int i = 1; i < argc; ++i)
+    {
+        if (std::strcmp(argv[i], "--smoke") == 0) { smoke = true; reps = 1; }
+        else if (std::strncmp(argv[i], "--data=", 7) == 0) dir = argv[i] + 7;
+        else if (std::strncmp(argv[i], "--reps=", 7) == 0) reps = std::max(1, std::atoi(argv[i] + 7));
+    }
+    if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";
+
+    struct LogCase { const char *name; const char *full; const char *excerpt; std::vector<std::size_t> lines; const Published *ple, *plus; };
+    const LogCase cases[] = {
+        {"intel", "intel-corrected.log.gz", "intel.log", {633, 653, 385, 636, 30, 555, 881, 62, 96, 242, 82, 295, 708, 581, 483, 595, 746, 139, 290, 370},
+         kIntelPle, kIntelPlePlus},
+        {"csail", "csail-corrected.log.gz", "csail.log", {142, 55, 331, 59, 73, 58, 105, 369, 252, 324, 352, 34, 107, 235, 223, 1, 346, 314, 162, 175},
+         kCsailPle, kCsailPlePlus},
+    };
+    std::printf("PLE protocol: mean over scans with a hit of ray RMSE (m), f, score = f RMSE^2 + (1 - f) 0.5^2; CPU time per scan"
+                " (thread CPU time, min of %d runs), median / max over the scans\n", reps);
+    std::printf("%-6s %3s %-10s %3s %8s %7s %9s %9s %9s %6s | %-14s %-14s %9s\n", "log", "J", "method", "n", "RMSE", "f", "score",
+                "med us", "max us", "maxV", "PLE", "PLE+", "PLE+score");
+    for (const auto &c : cases)
+    {
+        std::vector<rtl::ple::Scan> scans;
+        try
+        {
+            if (smoke)
+            {
+                const rtl::ple::Log log = rtl::ple::readLog(std::string(RTL_TEST_DATA_DIR) + "/" + c.excerpt, false);
+                scans = log.scans;
+            }
+            else
+            {
+                const rtl::ple::Log log = rtl::ple::readLog(dir + "/" + c.full, true);
+                for (std::size_t l : c.lines)
+                {
+                    if (l >= log.scans.size()) throw std::runtime_error("scan index out of range");
+                    scans.push_back(log.scans[l]);
+                }
+            }
+        }
+        catch (const std::exception &e)
+        {
+            std::fprintf(stderr, "%s: %s (give --data=DIR or RTL_FULL_DATA_DIR)\n", c.name, e.what());
+            return 1;
+        }
+        for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
+            for (int method = 0; method < 3; ++method)
+            {
+                const Row r = method == 0 ? evaluateBaseline(scans, J) : evaluate(scans, J, method == 2, reps);
+                if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
+                std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,
+                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
+                            c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]));
+            }
+    }
+    return 0;
+}

@@ -1,0 +1,192 @@
+#!/usr/bin/env node
+// Robot logs through the package in Node on one core (figures, not pass/fail):
+//   node bench/js/b_logs.mjs [--scans=10000] [--big-mb=1024] [--rounds=3]
+// 1. Throughput: MCAPs of N sensor_msgs/msg/LaserScan (360 beams: the first 360 of each CSAIL excerpt scan, cycled;
+//    ROS 2 CDR written by @mcap/core's McapWriter, 1 MB chunks) at chunk compression none, lz4, zstd, at N/10 and N
+//    scans, generated in a temp dir. Per round, in the same run and on the same file:
+//      raw      @mcap/core's indexed reader alone (messages out, not decoded): the floor of any reading
+//      read     openLog(...).scans(): raw + CDR decode + fromLaserScan
+//      segment  read + segment()
+//      pipeline read + segment() + vectorize(ftls) on each cluster of >= 3 points (the CLI's default pipeline)
+//    Scans/s of each, and the shares of the pipeline's time: reading (read / pipeline; raw / pipeline for the MCAP
+//    reader alone) and segmenting ((segment - read) / pipeline); vectorizing is the rest. The cluster and segment totals are
+//    checked equal across compressions and rounds (the same work). Medians over the rounds.
+// 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of --log-scans (default N) scans each (zstd), -m ftls,
+//    --jobs 1 against --jobs K (K = the number of logs), wall time of the whole command (each worker's start, wasm
+//    instantiation included), and the speed-up (ideal: min(K, idle cores)). --throughput=0 skips section 1.
+// 2. Memory: a log of --big-mb MB (zstd) read and processed by the pipeline; RSS sampled every 1000 scans after the
+//    first 2000 (warm-up); growth = max - first sample. The file is deleted afterwards.
+import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { availableParallelism } from 'node:os';
+import { open } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import init from 'rtl-wasm';
+import { openLog } from 'rtl-wasm/logs';
+import { McapIndexedReader, McapWriter } from '@mcap/core';
+import { loadDecompressHandlers } from '@mcap/support';
+import { COMPRESSIONS, cdr } from '../../tests/js/ros-fixtures.mjs';
+
+const arg = (name, def) => Number(process.argv.find((a) => a.startsWith(`--${name}=`))?.split('=')[1] ?? def);
+const N = arg('scans', 10000), BIG_MB = arg('big-mb', 1024), ROUNDS = arg('rounds', 3), LOGS = arg('logs', 2);
+const THROUGHPUT = arg('throughput', 1), LOG_SCANS = arg('log-scans', N);
+const DATA = fileURLToPath(new URL('../../tests/data/', import.meta.url));
+const rtl = await init();
+const csail = rtl.readCarmenLog(readFileSync(join(DATA, 'csail.log')));
+const dir = mkdtempSync(join(tmpdir(), 'rtl-bench-logs-'));
+process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
+
+// The CDR payloads of the 30 source scans (360 beams each), written once and repeated.
+const payloads = csail.map((s) => {
+  const n = 360, step = Math.PI / 360;
+  return cdr('sensor_msgs/msg/LaserScan', {
+    header: { stamp: { sec: 0, nanosec: 0 }, frame_id: 'laser' },
+    angle_min: -Math.PI / 2, angle_max: -Math.PI / 2 + (n - 1) * step, angle_increment: step, time_increment: 0, scan_time: 0,
+    range_min: 0, range_max: s.maxRange * (1 - 1e-6), ranges: Float32Array.from(s.ranges.subarray(0, n)), intensities: new Float32Array(0),
+  });
+});
+
+async function writeLog(path, count, compression) {
+  const fh = await open(path, 'w');
+  let pos = 0n;
+  const w = new McapWriter({ writable: { position: () => pos, write: async (b) => { await fh.write(b); pos += BigInt(b.byteLength); } },
+                             chunkSize: 1 << 20, compressChunk: COMPRESSIONS[compression] });
+  await w.start({ profile: 'ros2', library: 'rtl-wasm bench' });
+  const { LASER_SCAN_DEF } = await import('../../tests/js/ros-fixtures.mjs');
+  const schemaId = await w.registerSchema({ name: 'sensor_msgs/msg/LaserScan', encoding: 'ros2msg', data: new TextEncoder().encode(LASER_SCAN_DEF) });
+  const channelId = await w.registerChannel({ topic: '/scan', schemaId, messageEncoding: 'cdr', metadata: new Map() });
+  for (let i = 0; i < count; i++) {
+    const t = BigInt(i) * 25000000n + 1000000000n;   // 40 Hz
+    await w.addMessage({ channelId, sequence: i, logTime: t, publishTime: t, data: payloads[i % payloads.length] });
+  }
+  await w.end();
+  await fh.close();
+}
+
+async function raw(path) {
+  const fh = await open(path, 'r');
+  const { size } = await fh.stat();
+  const reader = await McapIndexedReader.Initialize({
+    readable: { size: async () => BigInt(size), read: async (o, n) => { const b = new Uint8Array(Number(n)); await fh.read(b, 0, Number(n), Number(o)); return b; } },
+    decompressHandlers: await loadDecompressHandlers() });
+  let n = 0;
+  for await (const m of reader.readMessages({ topics: ['/scan'] })) n += m.data.byteLength > 0 ? 1 : 0;
+  await fh.close();
+  return { scans: n };
+}
+
+async function read(path) {
+  const log = await openLog(path);
+  let n = 0;
+  for await (const s of log.scans('/scan')) n += s.points.length === 720 ? 1 : 0;
+  await log.close();
+  return { scans: n };
+}
+
+async function segmentOnly(path) {
+  const log = await openLog(path);
+  let n = 0;
+  for await (const s of log.scans('/scan')) n += rtl.segment(s.points).labels.length === 360 ? 1 : 0;
+  await log.close();
+  return { scans: n };
+}
+
+function pipelineScan(points, totals) {
+  const seg = rtl.segment(points);
+  totals.clusters += seg.clusters.length;
+  for (const c of seg.clusters) {
+    const idx = c.indices;
+    if (idx.length < 3) continue;
+    const xy = new Float64Array(2 * idx.length);
+    for (let j = 0; j < idx.length; j++) { xy[2 * j] = points[2 * idx[j]]; xy[2 * j + 1] = points[2 * idx[j] + 1]; }
+    totals.segments += rtl.vectorize(xy, { method: 'ftls' }).count;
+  }
+}
+
+async function pipeline(path, onScan) {
+  const log = await openLog(path);
+  const totals = { scans: 0, clusters: 0, segments: 0 };
+  for await (const s of log.scans('/scan')) {
+    pipelineScan(s.points, totals);
+    totals.scans++;
+    onScan?.(totals.scans);
+  }
+  await log.close();
+  return totals;
+}
+
+async function timed(f) {
+  const t = performance.now();
+  const r = await f();
+  return { ms: performance.now() - t, ...r };
+}
+const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+
+console.log(`# b_logs: Node ${process.version}, one thread; LaserScan 360 beams; ${ROUNDS} rounds, medians`);
+console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  clusters  segments');
+let reference;
+for (const count of THROUGHPUT ? [Math.round(N / 10), N] : []) {
+  for (const compression of ['none', 'lz4', 'zstd']) {
+    const path = join(dir, `scans-${count}-${compression}.mcap`);
+    await writeLog(path, count, compression);
+    const rs = [], rd = [], sg = [], pl = [];
+    let totals;
+    for (let r = 0; r < ROUNDS; r++) {
+      const a = await timed(() => raw(path)), b = await timed(() => read(path)), d = await timed(() => segmentOnly(path));
+      const c = await timed(() => pipeline(path));
+      if (a.scans !== count || b.scans !== count || c.scans !== count || d.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${d.scans}/${c.scans} != ${count}`);
+      if (totals && (totals.clusters !== c.clusters || totals.segments !== c.segments)) throw new Error('pipeline totals differ between rounds');
+      totals = c;
+      rs.push(a.ms); rd.push(b.ms); sg.push(d.ms); pl.push(c.ms);
+    }
+    if (count === N) {
+      if (reference && (reference.clusters !== totals.clusters || reference.segments !== totals.segments)) throw new Error('pipeline totals differ between compressions');
+      reference = totals;
+    }
+    const perS = (ms) => Math.round(count / (ms / 1000));
+    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(sg))).padStart(15)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${((median(sg) - median(rd)) / median(pl) * 100).toFixed(0).padStart(11)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
+    rmSync(path);
+  }
+}
+
+if (BIG_MB > 0) {
+  const per = payloads[0].byteLength + 40;   // payload + message record overhead, roughly
+  const count = Math.round((BIG_MB * 1e6) / per);
+  const path = join(dir, 'big.mcap');
+  const tw = performance.now();
+  await writeLog(path, count, 'none');
+  const mb = statSync(path).size / 1e6;
+  console.log(`# memory: ${count} scans, ${mb.toFixed(0)} MB MCAP (chunks uncompressed) written in ${((performance.now() - tw) / 1000).toFixed(0)} s`);
+  let base, peak = 0;
+  const t = await timed(() => pipeline(path, (n) => {
+    if (n % 1000 !== 0 || n < 2000) return;
+    const rss = process.memoryUsage().rss;
+    base ??= rss;
+    peak = Math.max(peak, rss);
+  }));
+  rmSync(path);
+  console.log(`# memory: pipeline over the whole log at ${Math.round(count / (t.ms / 1000))} scans/s; RSS after warm-up ${(base / 1e6).toFixed(0)} MB, ` +
+              `peak ${(peak / 1e6).toFixed(0)} MB, growth ${((peak - base) / 1e6).toFixed(1)} MB (goal < 50 MB)`);
+}
+
+if (LOGS > 1) {
+  const files = [];
+  for (let k = 0; k < LOGS; k++) {
+    files.push(join(dir, `log-${k}.mcap`));
+    await writeLog(files[k], LOG_SCANS, 'zstd');
+  }
+  const cli = fileURLToPath(new URL('../../bin/rtl.js', import.meta.url));
+  const wall = (jobs) => {
+    const t = performance.now();
+    execFileSync(process.execPath, [cli, ...files, '--topic', '/scan', '-m', 'ftls', '--jobs', String(jobs), '-o', join(dir, `out-${jobs}.jsonl`)]);
+    return performance.now() - t;
+  };
+  const one = [], many = [];
+  for (let r = 0; r < ROUNDS; r++) { one.push(wall(1)); many.push(wall(LOGS)); }
+  const lines = (jobs) => readFileSync(join(dir, `out-${jobs}.jsonl`), 'utf8').split('\n').filter(Boolean).length;
+  if (lines(1) !== lines(LOGS) || lines(1) !== LOGS * LOG_SCANS) throw new Error(`--jobs outputs differ: ${lines(1)} vs ${lines(LOGS)} lines`);
+  console.log(`# --jobs: ${LOGS} logs x ${LOG_SCANS} scans, rtl -m ftls: --jobs 1 ${(median(one) / 1000).toFixed(1)} s, --jobs ${LOGS} ` +
+              `${(median(many) / 1000).toFixed(1)} s, speed-up ${(median(one) / median(many)).toFixed(2)} (${availableParallelism()} cores on this machine)`);
+}

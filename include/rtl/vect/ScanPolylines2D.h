@@ -1,0 +1,437 @@
+// Whole-scan polyline extraction at a vertex budget: the line map of one 2D range scan that best explains the scan's
+// beams with at most J vertices in total.
+//
+// Model. The sensor sits at the origin; beam i has direction u_i and measured range r_i. A segment hits a beam whose
+// direction lies within the segment's angular span (widened by kSpanWiden on each side) and predicts r-hat_i = the
+// distance along the beam to the segment's line; where several segments hit a beam, the later one (polyline after
+// polyline, segment after segment) counts. The scan's score is the mean over the returned beams of
+//   (r_i - r-hat_i)^2   for a hit beam,      c^2 (the unexplained cost squared)   for a beam no segment hits,
+// i.e. f * RMSE^2 + (1 - f) * c^2 with f the hit fraction: a negative log-likelihood with Gaussian radial noise and a
+// uniform outlier level, the measure of probabilistic line extraction (Schaefer et al., IROS 2018).
+//
+// Method (each step exact for its own model, in this order):
+//  1. chains: the returned beams split at every beam without a return and wherever neighbouring points lie more
+//     than maxGap apart (such beams never share a polyline);
+//  2. per chain, the exact best partition into k total-least-squares ranges (>= 2 beams each) for every k, by dynamic
+//     programming over prefix sums (scan_polylines/ChainPartition.h); each partition becomes polylines: end vertices
+//     where the end lines cross their own end beams, inner vertices where consecutive lines cross, unless the lines
+//     are near parallel or cross far from the boundary points (then the polyline breaks there, both new ends again
+//     on their own beams) -- so a corner never spikes away from its points;
+//  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
+//     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h);
+//  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
+//     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
+//     so refinement never raises the score.
+// Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
+// n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test.
+//
+// Input: the scan's beams in beam order as points in the sensor frame; a beam with a non-finite coordinate, or at the
+// origin, has no return. The beams' directions must turn one way (increasing or decreasing angle), as a rotating
+// scanner's do. Bad parameters are rejected by the setters with std::invalid_argument.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "rtl/core/VectorND.h"
+#include "rtl/vect/scan_polylines/BudgetAllocation.h"
+#include "rtl/vect/scan_polylines/ChainPartition.h"
+#include "rtl/vect/scan_polylines/RadialRefinement.h"
+#include "rtl/vect/scan_polylines/RayGeometry.h"
+
+namespace rtl
+{
+    template<typename T>
+    class ScanPolylines2D
+    {
+        static_assert(std::is_floating_point_v<T>, "ScanPolylines2D<T>: T is float or double");
+    public:
+        typedef T ElementType;
+        typedef VectorND<2, T> VectorType;
+        typedef std::pair<std::size_t, std::size_t> BeamRange;
+
+        //! Half-width (radians) by which a segment's angular span is widened for the hit test.
+        static constexpr double kSpanWiden = 1e-3;
+
+        //! One segment of the result: its polyline, the beams it was fitted to, and its line in Hesse normal form
+        //! x cos(theta) + y sin(theta) = r (r >= 0) with the 2x2 covariance of (r, theta) (order r, theta).
+        struct Segment
+        {
+            std::size_t polyline = 0;
+            BeamRange beams{0, 0};              //!< first and last beam (inclusive) assigned to the segment
+            T r{}, theta{};
+            Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Zero();
+        };
+
+        //! Vertices over the whole scan (>= 2; default 50). std::invalid_argument below 2.
+        void setMaxVertices(std::size_t j)
+        {
+            if (j < 2) throw std::invalid_argument("ScanPolylines2D::setMaxVertices: J must be >= 2");
+            max_vertices_ = j;
+        }
+        //! Neighbouring beams farther apart than this (metres) never share a polyline (default 1). Finite and > 0,
+        //! else std::invalid_argument.
+        void setMaxGap(T m) { max_gap_ = checkedPositive(m, "ScanPolylines2D::setMaxGap"); }
+        //! The radial error (metres) at which a beam is as well left unexplained (default 0.5). Finite and > 0, else
+        //! std::invalid_argument.
+        void setUnexplainedCost(T c) { cost_ = checkedPositive(c, "ScanPolylines2D::setUnexplainedCost"); }
+        //! Partition ranges costed by radially weighted TLS, or plain TLS (default).
+        void setRadialWeights(bool on) { radial_weights_ = on; }
+        //! Iterations of radial refinement applied to every candidate before the budget is allocated (default 0).
+        void setCandidateRefinement(int iterations) { refine_candidates_ = iterations; }
+        //! Radial refinement on (default) or off.
+        void setRefinement(bool on) { refine_ = on; }
+        //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
+        void setPointSigma(T s) { point_sigma_ = checkedPositive(s, "ScanPolylines2D::setPointSigma"); }
+
+        [[nodiscard]] std::size_t maxVertices() const { return max_vertices_; }
+        [[nodiscard]] T maxGap() const { return static_cast<T>(max_gap_); }
+        [[nodiscard]] T unexplainedCost() const { return static_cast<T>(cost_); }
+
+        //! Extracts the polylines of one scan. Returns false, with no polylines, all expected ranges NaN and the score
+        //! NaN, when no beam has a return (this includes empty input); true otherwise.
+        bool operator()(const std::vector<VectorType> &beams)
+        {
+            clear(beams.size());
+            loadBeams(beams);
+            if (returned_count_ == 0) return false;
+            findChains();
+            std::vector<std::vector<scan_polylines::BudgetOption>> options(chains_.size());
+            if (candidates_.size() < chains_.size()) candidates_.resize(chains_.size());   // kept: their memory is reused
+            candidate_count_.assign(chains_.size(), 0);
+            for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
+            const std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            std::vector<Polyline> map;
+            for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
+                if (chosen[c] > 0)
+                {
+                    const Candidate &cand = candidates_[c][chosen[c] - 1];
+                    map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                }
+            std::vector<double> rhat = expected(map);
+            scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
+            if (refine_ && !map.empty())
+            {
+                std::vector<Polyline> refined = map;
+                scan_polylines::RadialRefinement lm;
+                const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
+                for (auto &p : refined) lm(p.x, p.y, p.segs, arrays, cost_ * cost_);
+                std::vector<double> rhat2 = expected(refined);
+                const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
+                if (score2.score(cost_) < score.score(cost_)) { map.swap(refined); rhat.swap(rhat2); score = score2; }
+            }
+            publish(map, rhat, score);
+            return true;
+        }
+
+        //! Vertex lists of the polylines (each >= 2 vertices), in beam order.
+        [[nodiscard]] const std::vector<std::vector<VectorType>> &polylines() const { return polylines_; }
+        //! r-hat of every input beam (NaN where no segment hits it, and for beams without a return).
+        [[nodiscard]] const std::vector<T> &expectedRanges() const { return expected_; }
+        //! Every segment, polyline after polyline.
+        [[nodiscard]] const std::vector<Segment> &segments() const { return segments_; }
+        //! Total vertices of polylines() (<= maxVertices()).
+        [[nodiscard]] std::size_t vertexCount() const { return vertex_count_; }
+        [[nodiscard]] std::size_t returnedBeams() const { return score_.returned; }
+        [[nodiscard]] std::size_t explainedBeams() const { return score_.hit; }
+        //! Mean per returned beam of the squared radial error or the unexplained cost squared (see the file comment).
+        [[nodiscard]] double score() const { return score_.score(cost_); }
+        //! Root mean square radial error over the explained beams (NaN when none).
+        [[nodiscard]] double rmse() const { return score_.rmse(); }
+        //! Explained beams / returned beams (NaN when none is returned).
+        [[nodiscard]] double explainedFraction() const { return score_.explained(); }
+
+    private:
+        struct Polyline
+        {
+            std::vector<double> x, y;           // vertices
+            std::vector<BeamRange> segs;        // beams of each segment (scan indices)
+        };
+        //! The polylines of one partition of a chain; polylines[0, used) are valid (the rest keep their memory for the
+        //! next call, so that building candidates does not allocate once the buffers have grown).
+        struct Candidate
+        {
+            std::vector<Polyline> polylines;
+            std::size_t used = 0;
+
+            Polyline &next()
+            {
+                if (used == polylines.size()) polylines.emplace_back();
+                Polyline &p = polylines[used++];
+                p.x.clear(); p.y.clear(); p.segs.clear();
+                return p;
+            }
+        };
+
+        static double checkedPositive(T v, const char *what)
+        {
+            const double d = static_cast<double>(v);
+            if (!(d > 0) || !std::isfinite(d)) throw std::invalid_argument(std::string(what) + ": must be finite and > 0");
+            return d;
+        }
+
+        void clear(std::size_t n)
+        {
+            polylines_.clear(); segments_.clear(); chains_.clear();
+            expected_.assign(n, std::numeric_limits<T>::quiet_NaN());
+            score_ = {};
+            vertex_count_ = 0;
+        }
+
+        void loadBeams(const std::vector<VectorType> &beams)
+        {
+            const std::size_t n = beams.size();
+            px_.assign(n, 0); py_.assign(n, 0); ux_.assign(n, 0); uy_.assign(n, 0); range_.assign(n, 0);
+            angle_.assign(n, scan_polylines::kNaN); returned_.assign(n, false);
+            returned_count_ = 0;
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const double x = static_cast<double>(beams[i][0]), y = static_cast<double>(beams[i][1]);
+                const double r = std::hypot(x, y);
+                if (!std::isfinite(r) || !(r > 0)) continue;
+                px_[i] = x; py_[i] = y; range_[i] = r; ux_[i] = x / r; uy_[i] = y / r;
+                angle_[i] = std::atan2(y, x);
+                returned_[i] = true;
+                ++returned_count_;
+            }
+        }
+
+        void findChains()
+        {
+            const std::size_t n = px_.size();
+            std::size_t i = 0;
+            while (i < n)
+            {
+                if (!returned_[i]) { ++i; continue; }
+                std::size_t j = i;
+                while (j + 1 < n && returned_[j + 1] && std::hypot(px_[j + 1] - px_[j], py_[j + 1] - py_[j]) <= max_gap_) ++j;
+                chains_.push_back({i, j});
+                i = j + 1;
+            }
+        }
+
+        //! The point where line `f` crosses beam i when that lies within the unexplained cost of the measured range;
+        //! else the measured point (an end vertex always lies on its own beam).
+        void endOnBeam(const scan_polylines::TlsFit &f, std::size_t i, double &x, double &y) const
+        {
+            const double t = f.d / (f.nx * ux_[i] + f.ny * uy_[i]);
+            const double r = (std::isfinite(t) && t > 0 && std::abs(t - range_[i]) <= cost_) ? t : range_[i];
+            x = r * ux_[i]; y = r * uy_[i];
+        }
+
+        //! Crossing of lines f and g when it is well defined and within `reach` of both boundary points a and b.
+        static bool corner(const scan_polylines::TlsFit &f, const scan_polylines::TlsFit &g, double ax, double ay, double bx, double by,
+                           double reach, double &x, double &y)
+        {
+            const double det = f.nx * g.ny - f.ny * g.nx;
+            if (std::abs(det) < 1e-6) return false;
+            x = (f.d * g.ny - g.d * f.ny) / det;
+            y = (f.nx * g.d - g.nx * f.d) / det;
+            return std::hypot(x - ax, y - ay) <= reach && std::hypot(x - bx, y - by) <= reach;
+        }
+
+        void buildCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts)
+        {
+            const auto [cf, cl] = chains_[c];
+            const std::size_t n = cl - cf + 1;
+            opts.push_back({0, static_cast<double>(n) * cost_ * cost_});
+            if (n < 2) return;
+            radialWeights(cf, cl);
+            part_.load(&px_[cf], &py_[cf], n, radial_weights_ ? weight_.data() : nullptr);
+            part_.solve(max_vertices_ - 1);
+            std::vector<scan_polylines::TlsFit> &fits = fits_;
+            std::vector<BeamRange> &ranges = ranges_;
+            for (std::size_t k = 1; k <= part_.maxSegments(); ++k)
+            {
+                part_.ranges(k, ranges);
+                fits.clear();
+                for (const auto &r : ranges) fits.push_back(part_.fit(r.first, r.second));
+                if (candidate_count_[c] == candidates_[c].size()) candidates_[c].emplace_back();
+                Candidate &cand = candidates_[c][candidate_count_[c]];
+                cand.used = 0;
+                Polyline *cur = &cand.next();
+                double x, y;
+                endOnBeam(fits[0], cf + ranges[0].first, x, y);
+                cur->x.push_back(x); cur->y.push_back(y);
+                std::size_t vertices = 1;
+                for (std::size_t s = 0; s < k; ++s)
+                {
+                    cur->segs.push_back({cf + ranges[s].first, cf + ranges[s].second});
+                    if (s + 1 == k)
+                    {
+                        endOnBeam(fits[s], cf + ranges[s].second, x, y);
+                        cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                        break;
+                    }
+                    const std::size_t a = cf + ranges[s].second, b = cf + ranges[s + 1].first;
+                    const double reach = cost_ + std::hypot(px_[b] - px_[a], py_[b] - py_[a]);
+                    // A corner stays in the wedge of the boundary beams and their outer neighbours (within the chain):
+                    // farther round, it would fold its segments over other beams, or hide beams of other chains.
+                    const std::size_t wa = a > cf ? a - 1 : a, wb = b < cl ? b + 1 : b;
+                    if (corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y) 
+                        && scan_polylines::AngularSpan::of(px_[wa], py_[wa], px_[wb], py_[wb]).contains(std::atan2(y, x), 0))
+                    {
+                        cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                        continue;
+                    }
+                    endOnBeam(fits[s], a, x, y);
+                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                    cur = &cand.next();   // a break: the next range starts a new polyline
+                    endOnBeam(fits[s + 1], b, x, y);
+                    cur->x.push_back(x); cur->y.push_back(y); ++vertices;
+                }
+                if (vertices > max_vertices_) continue;
+                double cost = chainCost(cand, cf, cl);
+                if (refine_candidates_ > 0)
+                {
+                    Candidate refined = cand;
+                    scan_polylines::RadialRefinement lm;
+                    lm.setMaxIterations(refine_candidates_);
+                    const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
+                    for (std::size_t p = 0; p < refined.used; ++p)
+                        lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+                    const double c2 = chainCost(refined, cf, cl);
+                    if (c2 < cost) { cost = c2; std::swap(cand, refined); }
+                }
+                opts.push_back({vertices, cost});
+                ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
+            }
+        }
+
+        //! Weights that turn a point's squared orthogonal distance into its squared radial error, 1 / cos^2 of the
+        //! angle between its beam and the surface normal, the normal taken from the points' TLS line over the
+        //! neighbours within 2 beams (cos kept >= 0.2, so the weight stays <= 25).
+        void radialWeights(std::size_t cf, std::size_t cl)
+        {
+            const std::size_t n = cl - cf + 1;
+            weight_.assign(n, 1.0);
+            if (!radial_weights_ || n < 3) return;
+            part_.load(&px_[cf], &py_[cf], n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const std::size_t lo = i >= 2 ? i - 2 : 0, hi = std::min(n - 1, i + 2);
+                const scan_polylines::TlsFit f = part_.fit(lo, hi);
+                const double c = std::max(0.2, std::abs(f.nx * ux_[cf + i] + f.ny * uy_[cf + i]));
+                weight_[i] = 1.0 / (c * c);
+            }
+        }
+
+        //! Score contribution (sum over the chain's beams) of a candidate, hit-tested against its own segments only.
+        double chainCost(const Candidate &cand, std::size_t cf, std::size_t cl)
+        {
+            local_.assign(cl - cf + 1, scan_polylines::kNaN);
+            for (std::size_t q = 0; q < cand.used; ++q)
+            {
+                const Polyline &p = cand.polylines[q];
+                for (std::size_t s = 0; s < p.segs.size(); ++s)
+                {
+                    const double ax = p.x[s], ay = p.y[s], bx = p.x[s + 1], by = p.y[s + 1];
+                    const auto span = scan_polylines::AngularSpan::of(ax, ay, bx, by);
+                    auto test = [&](std::size_t i) {
+                        if (!span.contains(angle_[i], kSpanWiden)) return false;
+                        const double t = scan_polylines::rangeAlongRay(ux_[i], uy_[i], ax, ay, bx, by);
+                        if (!std::isnan(t)) local_[i - cf] = t;
+                        return true;
+                    };
+                    for (std::size_t i = p.segs[s].first; i <= p.segs[s].second; ++i) test(i);
+                    for (std::size_t i = p.segs[s].first; i-- > cf && test(i);) {}
+                    for (std::size_t i = p.segs[s].second + 1; i <= cl && test(i); ++i) {}
+                }
+            }
+            double sum = 0;
+            for (std::size_t i = cf; i <= cl; ++i)
+            {
+                const double e = range_[i] - local_[i - cf];
+                sum += std::isnan(e) ? cost_ * cost_ : e * e;
+            }
+            return sum;
+        }
+
+        std::vector<double> expected(const std::vector<Polyline> &map) const
+        {
+            std::vector<std::vector<Eigen::Vector2d>> verts(map.size());
+            for (std::size_t p = 0; p < map.size(); ++p)
+                for (std::size_t v = 0; v < map[p].x.size(); ++v) verts[p].emplace_back(map[p].x[v], map[p].y[v]);
+            return scan_polylines::expectedRangesOf(angle_, verts, kSpanWiden);
+        }
+
+        void publish(const std::vector<Polyline> &map, const std::vector<double> &rhat, const scan_polylines::RayScore &score)
+        {
+            score_ = score;
+            for (std::size_t i = 0; i < rhat.size(); ++i) expected_[i] = static_cast<T>(rhat[i]);
+            for (std::size_t p = 0; p < map.size(); ++p)
+            {
+                const Polyline &pl = map[p];
+                std::vector<VectorType> out;
+                for (std::size_t v = 0; v < pl.x.size(); ++v) out.emplace_back(static_cast<T>(pl.x[v]), static_cast<T>(pl.y[v]));
+                vertex_count_ += out.size();
+                polylines_.push_back(std::move(out));
+                for (std::size_t s = 0; s < pl.segs.size(); ++s) segments_.push_back(segmentOf(p, pl, s));
+            }
+        }
+
+        //! Line of segment s through its two vertices, and the covariance of (r, theta) of a line fitted to the
+        //! segment's points with noise sigma^2 = max(point sigma^2, residual variance): the inverse normal matrix
+        //! sigma^2 [[m, -sum s_i], [-sum s_i, sum s_i^2]]^-1, s_i the points' coordinates along the line.
+        Segment segmentOf(std::size_t p, const Polyline &pl, std::size_t s) const
+        {
+            Segment seg;
+            seg.polyline = p;
+            seg.beams = pl.segs[s];
+            const double dx = pl.x[s + 1] - pl.x[s], dy = pl.y[s + 1] - pl.y[s];
+            const double len = std::hypot(dx, dy);
+            double nx = len > 0 ? -dy / len : scan_polylines::kNaN, ny = len > 0 ? dx / len : scan_polylines::kNaN;
+            double r = nx * pl.x[s] + ny * pl.y[s];
+            if (r < 0) { r = -r; nx = -nx; ny = -ny; }
+            const double tx = -ny, ty = nx;
+            double m = 0, ss = 0, ss2 = 0, res2 = 0;
+            for (std::size_t i = seg.beams.first; i <= seg.beams.second; ++i)
+            {
+                const double si = px_[i] * tx + py_[i] * ty, di = px_[i] * nx + py_[i] * ny - r;
+                m += 1; ss += si; ss2 += si * si; res2 += di * di;
+            }
+            const double var = std::max(point_sigma_ * point_sigma_, m > 2 ? res2 / (m - 2) : 0.0);
+            const double det = m * ss2 - ss * ss;
+            Eigen::Matrix2d cov;
+            cov << ss2, ss, ss, m;
+            cov *= var / det;
+            seg.r = static_cast<T>(r);
+            seg.theta = static_cast<T>(std::atan2(ny, nx));
+            seg.covariance = cov.cast<T>();
+            return seg;
+        }
+
+        std::size_t max_vertices_ = 50;
+        double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
+        bool refine_ = true, radial_weights_ = false;
+        int refine_candidates_ = 0;
+
+        std::vector<double> px_, py_, ux_, uy_, range_, angle_, local_, weight_;
+        std::vector<bool> returned_;
+        std::size_t returned_count_ = 0;
+        std::vector<BeamRange> chains_;
+        std::vector<std::vector<Candidate>> candidates_;
+        std::vector<std::size_t> candidate_count_;
+        std::vector<scan_polylines::TlsFit> fits_;
+        std::vector<BeamRange> ranges_;
+        scan_polylines::ChainPartition part_;
+
+        std::vector<std::vector<VectorType>> polylines_;
+        std::vector<T> expected_;
+        std::vector<Segment> segments_;
+        scan_polylines::RayScore score_;
+        std::size_t vertex_count_ = 0;
+    };
+
+    using ScanPolylines2f = ScanPolylines2D<float>;
+    using ScanPolylines2d = ScanPolylines2D<double>;
+}

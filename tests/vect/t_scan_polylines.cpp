@@ -1,0 +1,304 @@
+// ScanPolylines2D: the budget, end vertices on their own beams, expected ranges in a hand-computed scene, refinement,
+// bad input, float and double, and the score on a real scan excerpt (tests/data).
+#include "rtl/vect/ScanPolylines2D.h"   // first: the header compiles on its own
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rtl/Core.h"
+#include "rtl/io/CarmenLog.h"
+#include "rtl/vect/scan_polylines/RayGeometry.h"
+
+namespace
+{
+    constexpr double kPi = 3.14159265358979323846;
+
+    //! Range from the origin along angle a to the walls x = 2, y = 1.5, x = -1.2, y = -1 of a room around the sensor.
+    double roomRange(double a)
+    {
+        const double c = std::cos(a), s = std::sin(a);
+        double t = std::numeric_limits<double>::infinity();
+        if (c > 0) t = std::min(t, 2.0 / c);
+        if (s > 0) t = std::min(t, 1.5 / s);
+        if (c < 0) t = std::min(t, -1.2 / c);
+        if (s < 0) t = std::min(t, -1.0 / s);
+        return t;
+    }
+
+    //! The room seen over -135..135 degrees in 1-degree steps (271 beams).
+    template<typename T>
+    std::vector<rtl::VectorND<2, T>> roomScan(std::vector<double> *angles = nullptr, std::vector<double> *ranges = nullptr)
+    {
+        std::vector<rtl::VectorND<2, T>> pts;
+        for (int d = -135; d <= 135; ++d)
+        {
+            const double a = d * kPi / 180, r = roomRange(a);
+            pts.emplace_back(static_cast<T>(r * std::cos(a)), static_cast<T>(r * std::sin(a)));
+            if (angles) angles->push_back(a);
+            if (ranges) ranges->push_back(r);
+        }
+        return pts;
+    }
+
+    std::vector<std::vector<rtl::VectorND<2, double>>> excerptScans(const char *file)
+    {
+        std::vector<std::vector<rtl::VectorND<2, double>>> out;
+        for (auto &s : rtl::readCarmenLogFile<double>(std::string(RTL_TEST_DATA_DIR) + "/" + file)) out.push_back(std::move(s.points));
+        return out;
+    }
+
+    template<typename T>
+    void expectEndsOnOwnBeams(const rtl::ScanPolylines2D<T> &ex, const std::vector<rtl::VectorND<2, T>> &beams, double tol)
+    {
+        const auto &polys = ex.polylines();
+        const auto &segs = ex.segments();
+        std::size_t s = 0;
+        for (std::size_t p = 0; p < polys.size(); ++p)
+        {
+            const std::size_t k = polys[p].size() - 1;
+            ASSERT_LE(s + k, segs.size());
+            const auto check = [&](const rtl::VectorND<2, T> &v, std::size_t beam) {
+                const double bx = static_cast<double>(beams[beam][0]), by = static_cast<double>(beams[beam][1]);
+                const double vx = static_cast<double>(v[0]), vy = static_cast<double>(v[1]);
+                const double norm = std::hypot(vx, vy) * std::hypot(bx, by);
+                EXPECT_NEAR((vx * by - vy * bx) / norm, 0.0, tol) << "polyline " << p << " beam " << beam;   // same line
+                EXPECT_GT(vx * bx + vy * by, 0.0);                                                        // same ray
+            };
+            check(polys[p].front(), segs[s].beams.first);
+            check(polys[p].back(), segs[s + k - 1].beams.second);
+            for (std::size_t j = 0; j < k; ++j) EXPECT_EQ(segs[s + j].polyline, p);
+            s += k;
+        }
+        EXPECT_EQ(s, segs.size());
+    }
+}
+
+TEST(ScanPolylines2D, SquareRoomExpectedRangesAreTheTrueRanges)
+{
+    std::vector<double> angles, ranges;
+    const auto beams = roomScan<double>(&angles, &ranges);
+    rtl::ScanPolylines2D<double> ex;
+    ex.setMaxVertices(10);
+    ASSERT_TRUE(ex(beams));
+    ASSERT_EQ(ex.expectedRanges().size(), beams.size());
+    for (std::size_t i = 0; i < beams.size(); ++i) EXPECT_NEAR(ex.expectedRanges()[i], ranges[i], 1e-9) << "beam " << i;
+    EXPECT_EQ(ex.explainedBeams(), beams.size());
+    EXPECT_NEAR(ex.rmse(), 0.0, 1e-9);
+    EXPECT_NEAR(ex.score(), 0.0, 1e-18);
+    // the four visible walls need 5 vertices: the extractor finds the room's three corners among them
+    ASSERT_LE(ex.vertexCount(), 10u);
+    for (const auto &corner : {std::pair<double, double>{2, -1}, {2, 1.5}, {-1.2, 1.5}})
+    {
+        double nearest = 1e9;
+        for (const auto &p : ex.polylines())
+            for (const auto &v : p) nearest = std::min(nearest, std::hypot(v[0] - corner.first, v[1] - corner.second));
+        EXPECT_LT(nearest, 1e-9) << corner.first << ", " << corner.second;
+    }
+    // segment lines in Hesse form through their vertices; walls at r = 2, 1.5, 1.2, 1
+    for (const auto &seg : ex.segments())
+    {
+        EXPECT_GE(seg.r, 0.0);
+        const bool wall = std::abs(seg.r - 2) < 1e-9 || std::abs(seg.r - 1.5) < 1e-9 || std::abs(seg.r - 1.2) < 1e-9 || std::abs(seg.r - 1) < 1e-9;
+        EXPECT_TRUE(wall) << seg.r;
+        EXPECT_GT(seg.covariance(0, 0), 0.0);
+        EXPECT_GT(seg.covariance.determinant(), 0.0);
+    }
+    expectEndsOnOwnBeams(ex, beams, 1e-12);
+}
+
+TEST(ScanPolylines2D, FloatAndDoubleAgreeOnTheRoom)
+{
+    std::vector<double> angles, ranges;
+    const auto beams = roomScan<float>(&angles, &ranges);
+    rtl::ScanPolylines2D<float> ex;
+    ex.setMaxVertices(10);
+    ASSERT_TRUE(ex(beams));
+    for (std::size_t i = 0; i < beams.size(); ++i) EXPECT_NEAR(ex.expectedRanges()[i], ranges[i], 2e-5) << "beam " << i;
+    expectEndsOnOwnBeams(ex, beams, 1e-6);
+}
+
+TEST(ScanPolylines2D, BudgetIsRespectedAndUsedOnRealScans)
+{
+    const auto scans = excerptScans("intel.log");
+    ASSERT_EQ(scans.size(), 30u);
+    rtl::ScanPolylines2D<double> ex;
+    for (std::size_t J : {2u, 3u, 7u, 20u, 50u})
+    {
+        ex.setMaxVertices(J);
+        for (const auto &scan : scans)
+        {
+            ASSERT_TRUE(ex(scan));
+            std::size_t v = 0;
+            for (const auto &p : ex.polylines()) { EXPECT_GE(p.size(), 2u); v += p.size(); }
+            EXPECT_EQ(v, ex.vertexCount());
+            EXPECT_LE(v, J);
+            expectEndsOnOwnBeams(ex, scan, 1e-9);
+        }
+    }
+}
+
+TEST(ScanPolylines2D, MoreVerticesNeverScoreWorseOnAverage)
+{
+    const auto scans = excerptScans("csail.log");
+    rtl::ScanPolylines2D<double> ex;
+    double last = std::numeric_limits<double>::infinity();
+    for (std::size_t J : {4u, 10u, 20u, 40u})
+    {
+        ex.setMaxVertices(J);
+        double mean = 0;
+        for (const auto &scan : scans) { ASSERT_TRUE(ex(scan)); mean += ex.score(); }
+        mean /= static_cast<double>(scans.size());
+        EXPECT_LT(mean, last) << "J " << J;
+        last = mean;
+    }
+}
+
+TEST(ScanPolylines2D, ScoreIsThePleMetricOfTheOutput)
+{
+    // score(), rmse(), explainedFraction() and expectedRanges() agree with an independent ray cast of polylines().
+    const auto scans = excerptScans("csail.log");
+    rtl::ScanPolylines2D<double> ex;
+    ex.setMaxVertices(30);
+    for (std::size_t s = 0; s < scans.size(); s += 7)
+    {
+        ASSERT_TRUE(ex(scans[s]));
+        std::vector<double> angles, ranges;
+        std::vector<bool> returned;
+        for (const auto &p : scans[s])
+        {
+            const bool ok = std::isfinite(p[0]) && std::isfinite(p[1]);
+            returned.push_back(ok);
+            angles.push_back(ok ? std::atan2(p[1], p[0]) : std::nan(""));
+            ranges.push_back(ok ? std::hypot(p[0], p[1]) : 0.0);
+        }
+        const auto rhat = rtl::scan_polylines::expectedRangesOf(angles, ex.polylines(), 1e-3);
+        const auto score = rtl::scan_polylines::scoreExpected(ranges, returned, rhat);
+        EXPECT_EQ(score.hit, ex.explainedBeams());
+        EXPECT_EQ(score.returned, ex.returnedBeams());
+        EXPECT_NEAR(score.score(0.5), ex.score(), 1e-12);
+        EXPECT_NEAR(score.rmse(), ex.rmse(), 1e-12);
+        for (std::size_t i = 0; i < rhat.size(); ++i)
+        {
+            if (std::isnan(rhat[i])) { EXPECT_TRUE(std::isnan(ex.expectedRanges()[i])); }
+            else { EXPECT_NEAR(ex.expectedRanges()[i], rhat[i], 1e-12); }
+        }
+    }
+}
+
+TEST(ScanPolylines2D, RefinementNeverRaisesTheScore)
+{
+    rtl::ScanPolylines2D<double> with, without;
+    without.setRefinement(false);
+    std::size_t lower = 0, scans_seen = 0;
+    for (const char *file : {"intel.log", "csail.log"})
+        for (const auto &scan : excerptScans(file))
+            for (std::size_t J : {10u, 30u})
+            {
+                with.setMaxVertices(J); without.setMaxVertices(J);
+                ASSERT_TRUE(with(scan));
+                ASSERT_TRUE(without(scan));
+                expectEndsOnOwnBeams(without, scan, 1e-9);   // before refinement, the construction puts them there
+                EXPECT_LE(with.score(), without.score());
+                lower += with.score() < without.score() ? 1 : 0;
+                ++scans_seen;
+            }
+    // and it does something: most scans improve
+    EXPECT_GT(lower, scans_seen / 2);
+}
+
+TEST(ScanPolylines2D, RealExcerptScoreMatchesTheMeasuredFigure)
+{
+    // Mean score over the 30 scans of tests/data/intel.log (library beam layout, NaN = no return), J = 20, defaults.
+    // Measured when the extractor was written; a change of more than 2 % is a change of behaviour.
+    const auto scans = excerptScans("intel.log");
+    rtl::ScanPolylines2D<double> ex;
+    ex.setMaxVertices(20);
+    double mean = 0, rmse = 0, f = 0;
+    for (const auto &scan : scans)
+    {
+        ASSERT_TRUE(ex(scan));
+        mean += ex.score(); rmse += ex.rmse(); f += ex.explainedFraction();
+    }
+    mean /= 30; rmse /= 30; f /= 30;
+    EXPECT_NEAR(mean, 0.026212, 0.02 * 0.026212);
+    EXPECT_NEAR(rmse, 0.048569, 0.02 * 0.048569);
+    EXPECT_NEAR(f, 0.908772, 0.005);
+}
+
+TEST(ScanPolylines2D, BadParametersThrowInvalidArgument)
+{
+    rtl::ScanPolylines2D<double> ex;
+    EXPECT_THROW(ex.setMaxVertices(1), std::invalid_argument);
+    EXPECT_THROW(ex.setMaxVertices(0), std::invalid_argument);
+    EXPECT_NO_THROW(ex.setMaxVertices(2));
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (double bad : {nan, inf, -inf, 0.0, -1.0})
+    {
+        EXPECT_THROW(ex.setMaxGap(bad), std::invalid_argument) << bad;
+        EXPECT_THROW(ex.setUnexplainedCost(bad), std::invalid_argument) << bad;
+        EXPECT_THROW(ex.setPointSigma(bad), std::invalid_argument) << bad;
+    }
+    // rejected values leave the settings unchanged
+    EXPECT_EQ(ex.maxVertices(), 2u);
+    EXPECT_EQ(ex.maxGap(), 1.0);
+    EXPECT_EQ(ex.unexplainedCost(), 0.5);
+}
+
+TEST(ScanPolylines2D, NoReturnedBeamGivesFalseAndEmptyOutputs)
+{
+    rtl::ScanPolylines2D<float> ex;
+    ASSERT_TRUE(ex(roomScan<float>()));            // outputs of a previous call are replaced
+    EXPECT_FALSE(ex(std::vector<rtl::Vector2f>{}));
+    EXPECT_TRUE(ex.polylines().empty());
+    EXPECT_TRUE(ex.expectedRanges().empty());
+    EXPECT_TRUE(std::isnan(ex.score()));
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const std::vector<rtl::Vector2f> none{{nan, nan}, {inf, 1.f}, {0.f, 0.f}, {nan, 2.f}};
+    EXPECT_FALSE(ex(none));
+    EXPECT_TRUE(ex.polylines().empty());
+    EXPECT_TRUE(ex.segments().empty());
+    ASSERT_EQ(ex.expectedRanges().size(), 4u);
+    for (float r : ex.expectedRanges()) EXPECT_TRUE(std::isnan(r));
+    EXPECT_TRUE(std::isnan(ex.score()));
+    EXPECT_TRUE(std::isnan(ex.rmse()));
+    EXPECT_EQ(ex.returnedBeams(), 0u);
+}
+
+TEST(ScanPolylines2D, IsolatedBeamsAreLeftUnexplained)
+{
+    // one returned beam per chain (neighbours 5 m apart > maxGap): nothing can be fitted, every beam costs c^2
+    const std::vector<rtl::Vector2d> beams{{1, 0}, {std::nan(""), 0}, {0, 6}, {-7, 0.5}};
+    rtl::ScanPolylines2D<double> ex;
+    ASSERT_TRUE(ex(beams));
+    EXPECT_TRUE(ex.polylines().empty());
+    EXPECT_EQ(ex.returnedBeams(), 3u);
+    EXPECT_EQ(ex.explainedBeams(), 0u);
+    EXPECT_DOUBLE_EQ(ex.score(), 0.25);
+    EXPECT_DOUBLE_EQ(ex.explainedFraction(), 0.0);
+}
+
+TEST(ScanPolylines2D, TheGapSeparatesPolylines)
+{
+    // two parallel walls behind each other: with the default gap 1 m they are separate polylines; a larger gap joins
+    // the beams into one chain, so one polyline may cross the jump
+    std::vector<rtl::Vector2d> beams;
+    for (int d = -30; d <= 30; ++d)
+    {
+        const double a = d * kPi / 180, x = d < 0 ? 2.0 : 3.5;
+        beams.emplace_back(x, x * std::tan(a));
+    }
+    rtl::ScanPolylines2D<double> ex;
+    ex.setMaxVertices(2);
+    ASSERT_TRUE(ex(beams));
+    ASSERT_EQ(ex.polylines().size(), 1u);     // two vertices: only one of the walls
+    EXPECT_NEAR(ex.explainedFraction(), 30.0 / 61, 1.0 / 61 + 1e-12);
+    ex.setMaxVertices(4);
+    ASSERT_TRUE(ex(beams));
+    EXPECT_EQ(ex.polylines().size(), 2u);
+    EXPECT_NEAR(ex.score(), 0.0, 1e-20);
+}

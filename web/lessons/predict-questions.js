@@ -1,0 +1,93 @@
+// The "your turn" questions (web/predict.js) of each trace lesson, read off the package's trace: which event is
+// decisive, what the right answer is and why, in the trace's own numbers. Nothing is computed here that the trace
+// does not already say. Each function returns `predict` for a lesson instance: { ask(k) → question | null }.
+const f3 = (v) => (Number.isFinite(v) ? `${v.toFixed(3)} m` : 'infinitely far (the lines are parallel)');
+const YES_NO = [{ value: 'yes', label: 'Yes' }, { value: 'no', label: 'No' }];
+
+// The points of a chain with these indices, for a question answered by clicking one.
+const pointsOf = (xy, indices) => indices.map((index) => ({ index, x: xy[2 * index], y: xy[2 * index + 1] }));
+
+// Douglas–Peucker: before each range that splits, "click the point where it splits".
+export function dpQuestions(run, chain) {
+  return {
+    ask(k) {
+      const e = run.trace[k];
+      if (!e || e.kind !== 'range' || !e.split) return null;
+      const interior = Array.from({ length: e.last - e.first - 1 }, (_, j) => e.first + 1 + j);
+      return {
+        prompt: `Douglas–Peucker examines points ${e.first}–${e.last} next (ringed), and this range splits (ε = ${f3(e.epsilon)}). Which point does it keep as the new corner?`,
+        points: pointsOf(chain, interior),
+        check(given) {
+          const p = Number(given);
+          return p === e.farthest
+            ? { right: true, html: `Point ${e.farthest} is the interior point farthest from the chord ${e.first}–${e.last}: ${f3(e.distance)}, more than ε = ${f3(e.epsilon)}, so it becomes a corner.` }
+            : { right: false, html: `You picked point ${p}. The package measured point ${e.farthest} farthest from the chord ${e.first}–${e.last}, at ${f3(e.distance)} (more than ε = ${f3(e.epsilon)}): the split is there, and no other point of the range is that far.` };
+        },
+      };
+    },
+  };
+}
+
+// Reumann–Witkam: before a point leaves the strip, "click the first point outside the strip".
+export function rwQuestions(run, chain) {
+  return {
+    ask(k) {
+      const e = run.trace[k];
+      if (!e || e.kind !== 'exit') return null;
+      const strip = run.trace.slice(0, k).reverse().find((t) => t.kind === 'strip' && t.key === e.key);
+      const after = Array.from({ length: chain.length / 2 - 1 - (strip?.through ?? e.key) }, (_, j) => (strip?.through ?? e.key) + 1 + j);
+      return {
+        prompt: `The strip of half-width ε = ${f3(e.epsilon)} runs from key point ${e.key}${strip ? ` through point ${strip.through}` : ''}. Which point is the first to leave it?`,
+        points: pointsOf(chain, after),
+        check(given) {
+          const p = Number(given);
+          return p === e.index
+            ? { right: true, html: `Point ${e.index} is ${f3(e.distance)} from the strip's axis, more than ε: point ${e.index - 1} becomes the next key.` }
+            : { right: false, html: `You picked point ${p}. The first point outside is ${e.index}, ${f3(e.distance)} from the axis (ε = ${f3(e.epsilon)})${p < e.index ? `; point ${p} comes before it and is still inside` : `; the scan stops at ${e.index} before reaching ${p}`}.` };
+        },
+      };
+    },
+  };
+}
+
+// CAR and IA: "do these two points link?" at the close calls, the comparisons whose distance is within a factor 2
+// of the threshold (clear cases would only slow the player down).
+export function compareQuestions(run, points) {
+  return {
+    ask(k) {
+      const e = run.trace[k];
+      if (!e || (e.kind !== 'compare' && e.kind !== 'seam')) return null;
+      if (!(e.distance >= e.threshold / 2 && e.distance <= 2 * e.threshold)) return null;
+      return {
+        prompt: `Point ${e.i} is compared with point ${e.j} (ringed). Do they link (the same cluster)? Point ${e.i}'s threshold is ${f3(e.threshold)}.`,
+        marks: pointsOf(points, [e.i, e.j]),
+        choices: YES_NO,
+        check(given) {
+          const right = (given === 'yes') === e.linked;
+          const why = `they are ${f3(e.distance)} apart, ${e.linked ? 'within' : 'beyond'} the threshold ${f3(e.threshold)}`;
+          return { right, html: right ? `They ${e.linked ? 'link' : 'do not link'}: ${why}.` : `They ${e.linked ? 'do link' : 'do not link'}: ${why}.` };
+        },
+      };
+    },
+  };
+}
+
+// FTLS / AFTLS: before each corner check, "does this corner meet within δ?"
+export function cornerQuestions(run, chain) {
+  return {
+    ask(k) {
+      const e = run.trace[k];
+      if (!e || e.kind !== 'corner') return null;
+      return {
+        prompt: `The lines of the ranges on each side of the corner between points ${e.boundary - 1} and ${e.boundary} (ringed) are fitted. Do they meet within δ = ${f3(e.delta)} of that corner?`,
+        marks: pointsOf(chain, [e.boundary - 1, e.boundary]),
+        choices: YES_NO,
+        check(given) {
+          const right = (given === 'yes') === e.ok;
+          const why = `the two lines cross ${f3(e.crossingDistance)} from the middle of points ${e.boundary - 1} and ${e.boundary}, ${e.ok ? 'within' : 'beyond'} δ = ${f3(e.delta)}`;
+          return { right, html: `${e.ok ? 'It meets' : 'It does not meet'}: ${why}${e.ok ? '' : ', so the partition must be repaired there'}.` };
+        },
+      };
+    },
+  };
+}
