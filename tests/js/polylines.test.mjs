@@ -24,13 +24,22 @@ function native(points, J, maxGap = 1, cost = 0.5) {
   return JSON.parse(execFileSync(TOOL, [file, J, maxGap, cost].map(String), { encoding: 'utf8', maxBuffer: 1 << 26 }));
 }
 
-// Equal to 1e-12 relative (NaN where native has null): the same code on the same numbers; only a libm function
-// (atan2, hypot) may round differently in musl and glibc.
+// Equal to TOL relative (NaN where native has null), the partition (offsets, counts) exactly: the same code on the
+// same numbers, but compiled by another compiler (clang -msimd128 vs g++) with other libm functions (musl vs glibc).
+// The radial refinement iterates until its step is small, so last-bit differences end up as large as its
+// convergence tolerance: at most 4.4e-9 relative measured on these runs (~60 % of the numbers bit-identical); a real
+// divergence (another partition or corner) differs by far more. The test prints both figures.
+const stats = { numbers: 0, identical: 0, maxDiff: 0 };
+const TOL = 1e-7;
 function same(a, b, what) {
   assert.equal(a.length, b.length, `${what}: length`);
   for (let i = 0; i < b.length; i++) {
-    if (b[i] === null) { assert.ok(Number.isNaN(a[i]), `${what}[${i}]: NaN expected, got ${a[i]}`); continue; }
-    assert.ok(Math.abs(a[i] - b[i]) <= 1e-12 * Math.max(1, Math.abs(b[i])), `${what}[${i}]: wasm ${a[i]} vs native ${b[i]}`);
+    stats.numbers++;
+    if (b[i] === null) { assert.ok(Number.isNaN(a[i]), `${what}[${i}]: NaN expected, got ${a[i]}`); stats.identical++; continue; }
+    const d = Math.abs(a[i] - b[i]) / Math.max(1, Math.abs(b[i]));
+    if (d === 0) stats.identical++;
+    stats.maxDiff = Math.max(stats.maxDiff, d);
+    assert.ok(d <= TOL, `${what}[${i}]: wasm ${a[i]} vs native ${b[i]}`);
   }
 }
 
@@ -52,6 +61,7 @@ test('extractPolylines: the same polylines, expected ranges, segments and score 
     same(w.segments.covariance, n.covariance, `${what}: covariance`);
     same([w.rmse, w.explained, w.score], [n.rmse, n.explained, n.score], `${what}: rmse, explained, score`);
   }
+  console.log(`wasm vs native: ${stats.identical} of ${stats.numbers} numbers bit-identical, max relative difference ${stats.maxDiff}`);
 });
 
 test('extractPolylines: the budget is respected and the result is consistent', () => {

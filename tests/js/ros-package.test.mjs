@@ -15,7 +15,8 @@ test('rtl.fromLaserScan: a LaserScan of an intel.log scan gives readCarmenLog\'s
   const n = scan.ranges.length;
   const msg = {
     header: { stamp: { sec: 1, nanosec: 0 }, frame_id: 'laser' },
-    angle_min: -Math.PI / 2, angle_max: Math.PI / 2, angle_increment: Math.PI / (n - 1),
+    // CARMEN's beam layout (rtl/io/CarmenLog.h): intel's 180 beams at -90 + i degrees
+    angle_min: -Math.PI / 2, angle_max: -Math.PI / 2 + (n - 1) * Math.PI / n, angle_increment: Math.PI / n,
     range_min: 1e-9, range_max: scan.maxRange * (1 - 1e-12), ranges: Float32Array.from(scan.ranges),
   };
   const s = rtl.fromLaserScan(msg);
