@@ -724,7 +724,7 @@ export interface RTL {
   readOrganizedLidar(data: ArrayBuffer | ArrayBufferView, options: OrganizedLidarOptions): OrganizedCloud;
   /** a PCD file (PCL's format: ascii, binary or binary_compressed) read by the C++ core (rtl/io/PcdFile.h).
    *  RangeError starting "readPcd: " for a malformed file, naming the header or data line, the point and the byte
-   *  offset (e.g. "readPcd: point 3 at byte offset 316: binary data ends ..."). */
+   *  offset (e.g. "readPcd: point 15 at byte offset 593: truncated data: ..."). */
   readPcd(data: ArrayBuffer | ArrayBufferView, options?: PcdOptions): PcdCloud;
   /** whole-scan polylines within a vertex budget (rtl::ScanPolylines2D): points are the scan's beams in the sensor
    *  frame (sensor at the origin), x, y interleaved, in beam order, NaN for no return. Within maxVertices the
