@@ -8,6 +8,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
 import { DATA, runCli as rtl } from './helpers.js';
+import { laserScanOf, writeMcap } from '../js/ros-fixtures.mjs';
 
 describe('rtl CLI: --max-vertices', { timeout: 120000 }, () => {
   let tmp, pkg, scans;
@@ -48,6 +49,22 @@ describe('rtl CLI: --max-vertices', { timeout: 120000 }, () => {
     assert.match(svg, new RegExp(`${ref.vertexCount} of 12 vertices`));
     const lines = (svg.match(/<line /g) ?? []).length;
     assert.ok(lines >= ref.vertexCount - ref.polylines.length, `${lines} <line> elements`);
+  });
+
+  test('a log: one JSON line per LaserScan, each within the budget, as the CARMEN scan it was made from', async () => {
+    const log = join(tmp, 'intel.mcap');
+    await writeMcap(log, [{ topic: '/scan', type: 'sensor_msgs/msg/LaserScan',
+      messages: scans.map((s) => ({ time: s.timestamp, msg: laserScanOf(s) })) }], { compression: 'lz4', chunkSize: 8 * 1024 });
+    const r = rtl([log, '--topic', '/scan', '--max-vertices', '20']);
+    assert.equal(r.code, 0, r.err);
+    const got = r.out.split('\n').filter((l) => l !== '').map((l) => JSON.parse(l));
+    assert.equal(got.length, 30);
+    for (const [i, line] of got.entries()) {
+      assert.ok(line.budget.vertexCount <= 20, `scan ${i}`);
+      // float32 ranges in the message: the same map up to float rounding
+      const ref = pkg.extractPolylines(scans[i].points, { maxVertices: 20 });
+      assert.ok(Math.abs(line.budget.score - ref.score) <= 1e-4, `scan ${i}: ${line.budget.score} vs ${ref.score}`);
+    }
   });
 
   test('bad and contradicting options are usage errors (exit 2)', () => {
