@@ -32,6 +32,7 @@ const SPEC = {
   'max-iterations': { value: true },
   primitive: { value: true },
   'min-points': { value: true },
+  'max-vertices': { value: true },
   format: { short: 'f', value: true },
   standalone: {},
   dim: { value: true },
@@ -204,12 +205,20 @@ export function parseCommandLine(argv) {
     maxIterations: num('max-iterations', 10000, { min: 1, integer: true }),
     primitive: oneOf('primitive', ['line', 'plane'], 'line'),
     minPoints: num('min-points', 3, { min: 2, integer: true }),
+    maxVertices: num('max-vertices', undefined, { min: 2, integer: true }),
     format: oneOf('format', FORMATS, 'json'),
     standalone: Boolean(v.standalone),
     dim: num('dim', 2, { integer: true }),
     camera: camera(v.camera),
     output: v.output,
   };
+  if (opts.maxVertices !== undefined) {
+    // The whole scan within a vertex budget (extractPolylines) instead of segment + fit/vectorize.
+    for (const k of ['vectorize', 'fit', 'segment', 'no-segment', 'raw', 'segmenter', 'step', 'lower', 'upper', 'scaling', 'min-points', 'sigma', 'delta', 'strict', 'epsilon', 'simplex-shift', 'max-iterations', 'primitive'])
+      if (v[k] !== undefined) throw new UsageError(`--${k} does not apply with --max-vertices (the whole scan is extracted within the vertex budget)`);
+    if (type !== 'carmen' && type !== 'csv' && !isLog) throw new UsageError('--max-vertices needs a 2D scan in beam order (a CARMEN log, a CSV of x,y or a LaserScan log)');
+    opts.segment = false;
+  }
   if (opts.lower > opts.upper) throw new UsageError(`--lower (${opts.lower}) must not exceed --upper (${opts.upper})`);
   if (noSegment) {
     if (!opts.method && !opts.fit) throw new UsageError(`${v.raw ? '--raw' : '--no-segment'} needs --fit or --vectorize (there is nothing else to do)`);

@@ -184,6 +184,21 @@ function run(rtl, opts, input) {
   const { points, dim } = input;
   const returns = validIndices(points, dim);
   const result = { source: input.source, dim, points: points.length / dim, returns: returns.length };
+  if (opts.maxVertices !== undefined) {
+    if (dim !== 2) throw new InputError(`${inputName(input.source.file)}: --max-vertices needs 2D points (a scan's beams in the sensor frame)`);
+    const r = need(rtl, 'extractPolylines', '--max-vertices')(points, { maxVertices: opts.maxVertices });
+    result.budget = {
+      maxVertices: opts.maxVertices, vertexCount: r.vertexCount, returned: r.returned, explained: round(r.explained),
+      rmse: round(r.rmse), score: round(r.score),
+      polylines: r.polylines.map((p) => plain(p)),
+      segments: Array.from(r.segments.r, (_, k) => ({
+        polyline: r.segments.polyline[k], beams: [r.segments.firstBeam[k], r.segments.lastBeam[k]],
+        r: round(r.segments.r[k]), theta: round(r.segments.theta[k]),
+        covariance: plain(r.segments.covariance.subarray(4 * k, 4 * k + 4)),
+      })),
+    };
+    return result;
+  }
   let groups;
   if (opts.segment) {
     const seg = opts.segmenter === 'ia'
@@ -267,7 +282,9 @@ function titleOf(opts, input, result) {
   if (s.type === 'bin') what += s.column !== undefined ? ` column ${s.column}` : ` ring ${s.ring}`;
   if (s.type === 'log') what += ` ${s.topic} scan ${s.index}${s.ring !== undefined ? ` ring ${s.ring}` : s.column !== undefined ? ` column ${s.column}` : ''}`;
   parts.push(what);
-  if (result.segmentation) {
+  if (result.budget) {
+    parts.push(`${result.budget.vertexCount} of ${result.budget.maxVertices} vertices, RMSE ${metres(result.budget.rmse ?? NaN)}, explained ${result.budget.explained}`);
+  } else if (result.segmentation) {
     const g = result.segmentation;
     parts.push(`${g.segmenter.toUpperCase()} step ${g.step}, bounds ${g.lowerBound}-${metres(g.upperBound)}${g.segmenter === 'ia' ? `, scaling ${g.scaling}` : ''}`);
   } else {
@@ -302,6 +319,8 @@ function render(rtl, opts, input, result) {
   if (opts.dim === 3) return render3D(rtl, opts, input, result);
   if (input.dim !== 2) throw new UsageError(`--format ${opts.format} draws 2D data only; use --format json or --format tikz --dim 3 for 3D points`);
   const segments = (result.vectorization?.segments ?? []).flatMap((s) => s.coordinates);
+  // The budget's polylines, segment by segment.
+  for (const p of result.budget?.polylines ?? []) for (let k = 0; k + 3 < p.length; k += 2) segments.push(p[k], p[k + 1], p[k + 2], p[k + 3]);
   // A fitted line is drawn as the segment between the projections of its first and last point.
   for (const f of result.fits ?? []) {
     const [dx, dy] = f.direction, [cx, cy] = f.centroid;

@@ -71,6 +71,10 @@ Vectorization
       --max-iterations N AFTLS optimizer iteration cap (default 10000)
       --primitive P      line | plane, for 3D points (default line; plane needs aftls)
       --min-points N     clusters with fewer points are not fitted/vectorized (default 3)
+      --max-vertices J   instead of segmenting and vectorizing: polylines over the whole 2D
+                         scan with at most J vertices, minimising the radial error of the
+                         beams (extractPolylines); JSON "budget": polylines, segments with
+                         their (r, theta) line and covariance, rmse, explained, score
 
 Output
   -f, --format FMT       json | svg | tikz (default json); SVG/TikZ titles name the scan,

@@ -19,6 +19,8 @@ test('100,000 failing calls over all functions: no leak, no stack drift, module 
     () => rtl.vectorize([0, 0], { method: 'dp' }),                                // C++: one point
     () => rtl.readCarmenLog('FLASER 2 1 1\n'),                                    // C++ reader: short line
     () => rtl.readOrganizedLidar(new Uint8Array(20), { beams: 1 }),               // C++ reader: truncated record
+    () => rtl.readPcd(new TextEncoder().encode('FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nPOINTS 2\nDATA ascii\n1 2 3\n')),  // C++ PCD reader: too few lines
+    () => rtl.extractPolylines([1, 2, 3, Infinity]),                              // C++: Infinity
     () => tree.tf('robot', 'nowhere'),                                            // C++: unknown frame
     () => tree.transformPoints('map', 'robot', inf),                              // C++: Infinity
     () => stream.addPoints(inf),                                                  // C++: Infinity

@@ -14,6 +14,8 @@ import { drawingApi } from './draw.js';
 import { algorithmsApi } from './alg.js';
 import { readersApi } from './readers.js';
 import { simplifyApi } from './simplify.js';
+import { polylinesApi } from './polylines.js';
+import { fromLaserScan, fromPointCloud2 } from './ros/messages.js';
 
 export { palette, unlabelledColour } from './palette.js';
 export { defaults } from './defaults.js';
@@ -50,6 +52,10 @@ function wrap(m) {
     ...algorithmsApi(ctx),
     ...readersApi(ctx),
     ...simplifyApi(ctx),
+    ...polylinesApi(ctx),
+    // The ROS message adapters (pure JS, also the subpath export rtl-wasm/ros).
+    fromLaserScan,
+    fromPointCloud2,
     // Frees the input buffer, vectorizers and segmenters kept between calls (they grow back on the next call).
     // Also pointBuffer()'s block: its views must not be used afterwards.
     releaseBuffers: release,

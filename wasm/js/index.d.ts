@@ -462,6 +462,80 @@ export interface OrganizedCloud {
   column(c: number): Float64Array;
 }
 
+export interface PcdOptions {
+  /** further fields to read by name (default ['intensity', 'ring']); a name the file lacks is left out of `fields` */
+  fields?: string[];
+}
+export interface PcdField {
+  /** values per point (the field's COUNT) */
+  count: number;
+  /** count values per point, in the same order as points */
+  values: Float64Array;
+}
+interface PcdCommon {
+  /** the file's WIDTH and HEIGHT */
+  width: number;
+  height: number;
+  /** VIEWPOINT: translation tx, ty, tz, then the orientation quaternion qw, qx, qy, qz */
+  viewpoint: Float64Array;
+  /** the requested fields that the file has, by name */
+  fields: Record<string, PcdField>;
+}
+/** an organised PCD (height > 1) in readOrganizedLidar's shape: beams = height (rows, top to bottom), columns = width,
+ *  column-major; NaN points (PCL's no return) stay NaN; intensity from the "intensity" field, else NaN */
+export interface PcdOrganizedCloud extends OrganizedCloud, PcdCommon {
+  organized: true;
+}
+/** an unorganised PCD (height 1): x, y, z per point in file order */
+export interface PcdPointCloud extends PcdCommon {
+  organized: false;
+  points: Float64Array;
+}
+export type PcdCloud = PcdOrganizedCloud | PcdPointCloud;
+
+export interface ExtractPolylinesOptions {
+  /** vertices over the whole scan (a polyline of k segments has k + 1), integer >= 2; default 50 */
+  maxVertices?: number;
+  /** neighbouring beams farther apart (m) never share a polyline; finite, > 0; default 1 */
+  maxGap?: number;
+  /** radial error (m) beyond which a beam is better left unexplained; finite, > 0; default 0.5 */
+  unexplainedCost?: number;
+}
+export interface ScanSegments {
+  /** index of each segment's polyline */
+  polyline: Uint32Array;
+  /** first and last beam (inclusive) each segment was fitted to */
+  firstBeam: Uint32Array;
+  lastBeam: Uint32Array;
+  /** the segment's line x cos(theta) + y sin(theta) = r, r >= 0 */
+  r: Float64Array;
+  theta: Float64Array;
+  /** 2x2 covariance of (r, theta) per segment, row-major (4 numbers each) */
+  covariance: Float64Array;
+}
+export interface ExtractPolylinesResult {
+  /** each polyline's vertices (x, y interleaved): views on `vertices` */
+  polylines: Float64Array[];
+  /** every vertex, polyline after polyline; polyline k is vertices offsets[k] .. offsets[k + 1] - 1 */
+  vertices: Float64Array;
+  offsets: Uint32Array;
+  /** r-hat per input beam: the range the polylines predict along the beam; NaN where no segment crosses it or the
+   *  beam has no return */
+  expectedRanges: Float64Array;
+  segments: ScanSegments;
+  /** total vertices (<= maxVertices) */
+  vertexCount: number;
+  /** beams with a return; 0 gives the empty result (no polylines, expectedRanges all NaN, rmse/explained/score NaN) */
+  returned: number;
+  explainedBeams: number;
+  /** root mean square radial error over the explained beams (NaN when none) */
+  rmse: number;
+  /** explained beams / returned beams */
+  explained: number;
+  /** mean per returned beam of the squared radial error, or unexplainedCost squared for an unexplained beam */
+  score: number;
+}
+
 // ---------------------------------------------------------------------------------------------- stateful classes
 export interface StreamSegmenterOptions {
   dim?: Dim;          // default 2
@@ -648,6 +722,19 @@ export interface RTL {
   /** alias of readCarmenLog */
   readCarmen(text: string | ArrayBuffer | ArrayBufferView, options?: CarmenOptions): CarmenScan[];
   readOrganizedLidar(data: ArrayBuffer | ArrayBufferView, options: OrganizedLidarOptions): OrganizedCloud;
+  /** a PCD file (PCL's format: ascii, binary or binary_compressed) read by the C++ core (rtl/io/PcdFile.h).
+   *  RangeError starting "readPcd: " for a malformed file, naming the header or data line, the point and the byte
+   *  offset (e.g. "readPcd: point 15 at byte offset 593: truncated data: ..."). */
+  readPcd(data: ArrayBuffer | ArrayBufferView, options?: PcdOptions): PcdCloud;
+  /** whole-scan polylines within a vertex budget (rtl::ScanPolylines2D): points are the scan's beams in the sensor
+   *  frame (sensor at the origin), x, y interleaved, in beam order, NaN for no return. Within maxVertices the
+   *  polylines minimise the mean per returned beam of the squared radial error (or unexplainedCost squared for a
+   *  beam left unexplained). TypeError/RangeError starting "extractPolylines: " for bad arguments. */
+  extractPolylines(points: PointArray, options?: ExtractPolylinesOptions): ExtractPolylinesResult;
+  /** sensor_msgs/LaserScan or foxglove.LaserScan -> the scan's points (also rtl-wasm/ros) */
+  fromLaserScan: typeof import('./ros/messages.js').fromLaserScan;
+  /** sensor_msgs/PointCloud2 -> readOrganizedLidar's shape (organised) or points (also rtl-wasm/ros) */
+  fromPointCloud2: typeof import('./ros/messages.js').fromPointCloud2;
   StreamSegmenter: new (options?: StreamSegmenterOptions) => StreamSegmenter;
   TfTree: new (root: string, options?: { dim?: Dim }) => TfTree;
   /** bytes of wasm heap allocated by malloc once the buffers kept between calls are released (releaseBuffers():
@@ -655,7 +742,7 @@ export interface RTL {
   heapInUse(): number;
   /** bytes of wasm linear memory */
   memoryBytes(): number;
-  /** milliseconds the last segment()/vectorize()/simplify() call spent inside the C++ library (the rest of the call's time
+  /** milliseconds the last segment()/vectorize()/simplify()/extractPolylines() call spent inside the C++ library (the rest of the call's time
    *  is argument checks and array transfer); diagnostics for benchmarks */
   readonly lastComputeMs: number;
   /** the wasm shadow-stack pointer (diagnostics: it is the same before and after every call, failing or not) */

@@ -46,22 +46,60 @@ export function readersApi({ m, withHeap }) {
     if (layout !== 'column-major' && layout !== 'row-major')
       throw new RangeError(`${fn}: option layout must be 'column-major' or 'row-major', got '${layout}'`);
     const r = withHeap(fn, [u8], (p, n) => m.readOrganizedLidar(p, n, beams, layout === 'row-major' ? 1 : 0));
-    const { columns, points } = r;
-    return {
-      beams, columns, points, intensity: r.intensity,
-      ring(b) {
-        if (typeof b !== 'number') throw new TypeError(`ring: beam must be a number, got ${describe(b)}`);
-        if (!Number.isInteger(b) || b < 0 || b >= beams) throw new RangeError(`ring: beam must be an integer in [0, ${beams - 1}], got ${b}`);
-        const out = new Float64Array(3 * columns);
-        for (let c = 0; c < columns; c++) out.set(points.subarray(3 * (c * beams + b), 3 * (c * beams + b) + 3), 3 * c);
-        return out;
-      },
-      column(c) {
-        if (typeof c !== 'number') throw new TypeError(`column: c must be a number, got ${describe(c)}`);
-        if (!Number.isInteger(c) || c < 0 || c >= columns) throw new RangeError(`column: c must be an integer in [0, ${columns - 1}], got ${c}`);
-        return points.slice(3 * c * beams, 3 * (c + 1) * beams);
-      },
-    };
+    return organized(beams, r.columns, r.points, r.intensity);
   }
-  return { readCarmenLog, readCarmen: readCarmenLog, readOrganizedLidar };
+
+  // PCD files (PCL's format; ascii, binary, binary_compressed) read by the C++ core's reader. Organised clouds
+  // (height > 1) in readOrganizedLidar's shape (column-major, beams = rows; intensity from the "intensity" field,
+  // NaN without one), unorganised ones as points in file order; both with width, height, the viewpoint
+  // (tx, ty, tz, qw, qx, qy, qz) and the further fields asked for (default intensity, ring) by name.
+  /**
+   * @param {ArrayBuffer | ArrayBufferView} data
+   * @param {import('./index.js').PcdOptions} [opts]
+   * @returns {import('./index.js').PcdCloud}
+   */
+  function readPcd(data, opts) {
+    const fn = 'readPcd';
+    let u8;
+    if (data instanceof ArrayBuffer) u8 = new Uint8Array(data);
+    else if (ArrayBuffer.isView(data)) u8 = new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
+    else throw new TypeError(`${fn}: data must be an ArrayBuffer or a typed array / DataView / Buffer, got ${describe(data)}`);
+    const o = options(opts, fn, ['fields']);
+    const names = o.fields ?? ['intensity', 'ring'];
+    if (!Array.isArray(names)) throw new TypeError(`${fn}: option fields must be an array of field names, got ${describe(names)}`);
+    names.forEach((name, i) => {
+      if (typeof name !== 'string') throw new TypeError(`${fn}: option fields[${i}] must be a string, got ${describe(name)}`);
+      if (name === '' || /\s/.test(name)) throw new RangeError(`${fn}: option fields[${i}] must be a field name without spaces, got "${name}"`);
+    });
+    const r = withHeap(fn, [u8], (p, n) => m.readPcd(p, n, names.join(' ')));
+    /** @type {Record<string, {count: number, values: Float64Array}>} */
+    const fields = r.fields;
+    const common = { width: r.width, height: r.height, viewpoint: r.viewpoint, fields };
+    if (!r.organized) return { organized: /** @type {false} */ (false), points: r.points, ...common };
+    const n = r.width * r.height, f = fields.intensity;
+    const intensity = new Float32Array(n).fill(NaN);
+    if (f) for (let i = 0; i < n; i++) intensity[i] = f.values[i * f.count];
+    return { organized: /** @type {true} */ (true), ...organized(r.height, r.width, r.points, intensity), ...common };
+  }
+
+  return { readCarmenLog, readCarmen: readCarmenLog, readOrganizedLidar, readPcd };
+}
+
+// An organised cloud's result (readOrganizedLidar, readPcd): column-major points with ring() and column() accessors.
+function organized(beams, columns, points, intensity) {
+  return {
+    beams, columns, points, intensity,
+    ring(b) {
+      if (typeof b !== 'number') throw new TypeError(`ring: beam must be a number, got ${describe(b)}`);
+      if (!Number.isInteger(b) || b < 0 || b >= beams) throw new RangeError(`ring: beam must be an integer in [0, ${beams - 1}], got ${b}`);
+      const out = new Float64Array(3 * columns);
+      for (let c = 0; c < columns; c++) out.set(points.subarray(3 * (c * beams + b), 3 * (c * beams + b) + 3), 3 * c);
+      return out;
+    },
+    column(c) {
+      if (typeof c !== 'number') throw new TypeError(`column: c must be a number, got ${describe(c)}`);
+      if (!Number.isInteger(c) || c < 0 || c >= columns) throw new RangeError(`column: c must be an integer in [0, ${columns - 1}], got ${c}`);
+      return points.slice(3 * c * beams, 3 * (c + 1) * beams);
+    },
+  };
 }

@@ -1,0 +1,35 @@
+// extractPolylines(): whole-scan polyline extraction at a vertex budget (rtl::ScanPolylines2D, wasm/src/polylines.cpp);
+// argument checks and the result's typed arrays only.
+import { num, options, toF64 } from './checks.js';
+
+/** extractPolylines() of one module instance: ctx = {m, withInput, setComputeMs} (api.js). */
+export function polylinesApi({ m, withInput, setComputeMs }) {
+  /**
+   * @param {import('./index.js').PointArray} points
+   * @param {import('./index.js').ExtractPolylinesOptions} [opts]
+   * @returns {import('./index.js').ExtractPolylinesResult}
+   */
+  function extractPolylines(points, opts) {
+    const fn = 'extractPolylines';
+    if (points === undefined) throw new TypeError(`${fn}: points (the scan's beams, interleaved x, y) are required`);
+    const xy = toF64(points, fn, 'points');
+    const o = options(opts, fn, ['maxVertices', 'maxGap', 'unexplainedCost']);
+    // The C++ defaults (ScanPolylines2D): 50 vertices, 1 m, 0.5 m. Above 2^32 vertices means no budget.
+    const maxVertices = num(o, 'maxVertices', fn, 50, { min: 2, integer: true, max: 2 ** 32 - 1 });
+    const maxGap = num(o, 'maxGap', fn, 1, { min: 0, exclusiveMin: true });
+    const unexplainedCost = num(o, 'unexplainedCost', fn, 0.5, { min: 0, exclusiveMin: true });
+    if (xy.length % 2 !== 0)
+      throw new RangeError(`${fn}: points has ${xy.length} numbers, not a multiple of 2 (interleaved x, y expected)`);
+    const r = withInput(fn, xy, (p, n) => m.extractPolylines(p, n, maxVertices, maxGap, unexplainedCost));
+    setComputeMs(r.computeMs);
+    const { vertices, offsets } = r;
+    const polylines = [];
+    for (let k = 0; k + 1 < offsets.length; k++) polylines.push(vertices.subarray(2 * offsets[k], 2 * offsets[k + 1]));
+    return {
+      polylines, vertices, offsets, expectedRanges: r.expectedRanges, segments: r.segments,
+      vertexCount: r.vertexCount, returned: r.returned, explainedBeams: r.explainedBeams,
+      rmse: r.rmse, explained: r.explained, score: r.score,
+    };
+  }
+  return { extractPolylines };
+}
