@@ -54,53 +54,12 @@
 #include <vector>
 
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/partition_search/CornerChord.h"
+#include "rtl/vect/partition_search/CornerDistance.h"
+#include "rtl/vect/partition_search/MinRankTree.h"
 
 namespace rtl
 {
-    //! A corner of a 2D polyline that cannot be met within delta. boundary: chain index of the first point of the
-    //! range after the corner; crossingDistance: distance of the two lines' crossing from the midpoint of points
-    //! boundary - 1 and boundary (the continuity criterion's reference; +infinity for parallel lines, or when the
-    //! failure is not at a corner, e.g. 3 points that fit no line: then boundary is 0); delta: the bound it exceeds.
-    //! A break at a point shared by two ranges (split mode's cover, PartitionSearch2D::cover): boundary is the
-    //! shared point, the first of the range after the corner, and the distance is measured from that point.
-    struct CornerReport
-    {
-        size_t boundary{0};
-        double crossingDistance{0};
-        double delta{0};
-    };
-
-    namespace vect_detail
-    {
-        //! Squared distance of the crossing of l1 and l2 from the midpoint of pts[boundary - 1] and pts[boundary];
-        //! +infinity if the lines do not cross (parallel or non-finite crossing).
-        template<class Approximation, class Points>
-        typename Approximation::ComputeType crossingDistanceSquared(const Points &pts, const Approximation &l1, const Approximation &l2, size_t boundary)
-        {
-            typedef typename Approximation::ComputeType C;
-            VectorND<2, C> x;
-            if (!Approximation::getCrossingCompute(l1, l2, x))
-                return std::numeric_limits<C>::infinity();
-            const VectorND<2, C> m = (pts[boundary - 1].template cast<C>() + pts[boundary].template cast<C>()) * C(0.5);
-            return (x - m).lengthSquared();
-        }
-
-        //! The corner criterion between a range ending at `prev_end` and the next one starting at `next_first`:
-        //! the distance of the crossing from the midpoint of pts[prev_end - 1] and pts[next_first], i.e. the two
-        //! boundary points (next_first == prev_end) or the shared point (next_first == prev_end - 1, cover()).
-        template<class Approximation, class Points>
-        typename Approximation::ComputeType cornerDistanceSquared(const Points &pts, const Approximation &l1, const Approximation &l2, size_t prev_end,
-                                                                  size_t next_first)
-        {
-            typedef typename Approximation::ComputeType C;
-            VectorND<2, C> x;
-            if (!Approximation::getCrossingCompute(l1, l2, x))
-                return std::numeric_limits<C>::infinity();
-            const VectorND<2, C> m = (pts[prev_end - 1].template cast<C>() + pts[next_first].template cast<C>()) * C(0.5);
-            return (x - m).lengthSquared();
-        }
-    }
-
     template<class SumArray, class Approximation>
     class PartitionSearch2D
     {
@@ -312,12 +271,13 @@ namespace rtl
             size_t rest;   // with a budget: ranges this range and the rest of the chain need at least
         };
         std::vector<Out> outs;
-        std::vector<size_t> picks, limits, open_, tree, leaf_of, removed;
+        std::vector<size_t> picks, limits, open_, leaf_of, removed;
+        vect_detail::MinRankTree tree;   // ranks by val of the items in the sweep; min-query over val ranges
         static constexpr size_t none_rank = std::numeric_limits<size_t>::max();
         std::vector<ComputeType> vals;
         Work work_;
         size_t scan_first{16}, scan_share{32};
-        struct Chord;
+        typedef vect_detail::CornerChord<ComputeType> Chord;
         struct Item;
         std::vector<Chord> in_chords, out_chords;
         std::vector<Item> items, queries, by_key;
@@ -927,12 +887,7 @@ namespace rtl
             }
         }
 
-        enum : int { regular = 0, tangent = 1, misses = 2 };
-        struct Chord
-        {
-            ComputeType p, q;   // angles of the chord's ends seen from the disc centre, p < q, in (-pi, pi]
-            int kind;
-        };
+        enum : int { regular = Chord::regular, tangent = Chord::tangent, misses = Chord::misses };
         struct Item
         {
             ComputeType key, val;
@@ -945,32 +900,10 @@ namespace rtl
             bool operator()(const Item &p, const Item &q) const { return by_val ? p.val < q.val : p.key < q.key; }
         };
 
-        //! The chord that `line` cuts from the disc of radius delta about m; `eta` grows to the angular error bound.
+        //! The chord that `line` cuts from the disc of radius delta about m (see `CornerChord.h`).
         Chord chordOf(const Approximation &line, const VectorND<2, ComputeType> &m, ComputeType &eta) const
         {
-            typedef VectorND<2, ComputeType> CV;
-            const ComputeType eps = std::numeric_limits<ComputeType>::epsilon();
-            const ComputeType eps_dir = std::max(eps, static_cast<ComputeType>(std::numeric_limits<ElementType>::epsilon()));
-            const CV f = line.projectCompute(m), r = f - m;
-            const CV c = line.point().template cast<ComputeType>();
-            CV d = line.direction().template cast<ComputeType>();
-            const ComputeType dl = std::sqrt(d.lengthSquared());
-            const ComputeType rl = std::sqrt(r.lengthSquared());
-            // Rounding of the foot f (and so of |r|): the centroid, m and the lever arm between them.
-            const ComputeType err_r = 16 * eps * (std::sqrt(m.lengthSquared()) + 2 * std::sqrt(c.lengthSquared()) + std::sqrt(f.lengthSquared()));
-            const ComputeType tau = ComputeType(1e-3);
-            if (!(dl > 0) || !std::isfinite(rl) || !std::isfinite(err_r) || !(err_r < tau * delta_ / 4))
-                return Chord{0, 0, tangent};
-            if (rl > delta_ * (1 + tau))
-                return Chord{0, 0, misses};
-            if (rl > delta_ * (1 - tau))
-                return Chord{0, 0, tangent};
-            d = d * (ComputeType(1) / dl);
-            const ComputeType t = std::sqrt(delta2 - rl * rl);
-            const CV e1 = r + d * t, e2 = r - d * t;
-            const ComputeType a1 = std::atan2(e1.y(), e1.x()), a2 = std::atan2(e2.y(), e2.x());
-            eta = std::max(eta, 2 * err_r / (delta_ * std::sqrt(tau)) + 4 * eps_dir + 8 * eps);
-            return Chord{std::min(a1, a2), std::max(a1, a2), regular};
+            return vect_detail::cornerChord(line, m, delta_, delta2, eta);
         }
 
         //! One case of the chord test: queries in increasing key; every item with key < query key + eta is in a
@@ -982,15 +915,13 @@ namespace rtl
             std::sort(items.begin(), items.end(), ItemLess{true});
             vals.clear();
             const size_t ni = items.size();
-            size_t size = 1;
-            while (size < ni) size *= 2;
             leaf_of.assign(in_lines.size(), 0);
             for (size_t i = 0; i < ni; ++i)
             {
                 vals.push_back(items[i].val);
                 leaf_of[items[i].index] = i;
             }
-            tree.assign(2 * size, none_rank);
+            tree.reset(ni);
             // the items by key, each with its rank in val order (its leaf); items of equal key enter the tree before
             // the same query, so their order among themselves does not matter
             by_key.clear();
@@ -1002,7 +933,7 @@ namespace rtl
             {
                 while (next < ni && by_key[next].key < qu.key + eta)
                 {
-                    set(size, by_key[next].index, items[by_key[next].index].index);
+                    tree.set(by_key[next].index, items[by_key[next].index].index);
                     ++next;
                 }
                 const Chord &o = out_chords[qu.index];
@@ -1012,7 +943,7 @@ namespace rtl
                 while (lo < hi)
                 {
                     ++work_.corners;
-                    const size_t k = query(size, lo, hi);
+                    const size_t k = tree.query(lo, hi);
                     if (k == none_rank || k >= picks[qu.index])
                         break;
                     if (meets(k, qu.index))
@@ -1021,29 +952,11 @@ namespace rtl
                         break;
                     }
                     removed.push_back(k);
-                    set(size, leaf_of[k], none_rank);
+                    tree.set(leaf_of[k], none_rank);
                 }
                 for (size_t k : removed)
-                    set(size, leaf_of[k], k);
+                    tree.set(leaf_of[k], k);
             }
-        }
-
-        void set(size_t size, size_t leaf, size_t value)
-        {
-            size_t i = leaf + size;
-            tree[i] = value;
-            for (i /= 2; i > 0; i /= 2)
-                tree[i] = std::min(tree[2 * i], tree[2 * i + 1]);
-        }
-        size_t query(size_t size, size_t lo, size_t hi) const
-        {
-            size_t r = none_rank;
-            for (size_t l = lo + size, h = hi + size; l < h; l /= 2, h /= 2)
-            {
-                if (l & 1) r = std::min(r, tree[l++]);
-                if (h & 1) r = std::min(r, tree[--h]);
-            }
-            return r;
         }
 
         //! The furthest corner reached, and the closest any line pair came to meeting there.

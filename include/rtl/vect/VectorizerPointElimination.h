@@ -796,4 +796,14 @@ namespace rtl
         Observer *observer_{nullptr};
         std::vector<size_t> keys;
     };
+
+    // RTL's names for the common instantiations.
+    using VectorizerDouglasPeucker2f = VectorizerDouglasPeuckerND<2, float>;
+    using VectorizerDouglasPeucker2d = VectorizerDouglasPeuckerND<2, double>;
+    using VectorizerDouglasPeucker3f = VectorizerDouglasPeuckerND<3, float>;
+    using VectorizerDouglasPeucker3d = VectorizerDouglasPeuckerND<3, double>;
+    using VectorizerReumannWitkam2f = VectorizerReumannWitkamND<2, float>;
+    using VectorizerReumannWitkam2d = VectorizerReumannWitkamND<2, double>;
+    using VectorizerReumannWitkam3f = VectorizerReumannWitkamND<3, float>;
+    using VectorizerReumannWitkam3d = VectorizerReumannWitkamND<3, double>;
 }
