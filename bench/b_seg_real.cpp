@@ -93,7 +93,7 @@ namespace
             for (size_t r = 0; r < repeat; ++r)
                 for (const auto &s : scans)
                 {
-                    ia.setScaling(rtl::seg_detail::circularScaling<float>(1, s.size()));
+                    ia.setScaling(rtl::detail::circularScaling<float>(1, s.size()));
                     for (const auto &p : s)
                     {
                         ia.addPoint(p);

@@ -89,7 +89,7 @@ namespace
         for (size_t step : {size_t(3), size_t(10)})
         {
             // CAR at `step` compares step - 1 points (RTL's definition; the old headers of this project compared step)
-            const float car_scaling = rtl::seg_detail::circularScaling<float>(step, n);
+            const float car_scaling = rtl::detail::circularScaling<float>(step, n);
             const auto car_floor = floorTime(pts, step - 1, car_scaling, reps);
             Result car_result;
             rtl::CAR_Segmenter<V> car(step, lower, upper);

@@ -73,7 +73,7 @@ namespace
 
         size_t ia_clusters = 0, ia_points = 0;
         const auto t_ia = rtl::bench::seg::measure([&] {
-            rtl::IA_Segmenter<V> ia(window, E(0.05), E(0.5), rtl::seg_detail::circularScaling<E>(window + 1, n));
+            rtl::IA_Segmenter<V> ia(window, E(0.05), E(0.5), rtl::detail::circularScaling<E>(window + 1, n));
             ia_clusters = ia_points = 0;
             for (const auto &p : pts)
             {

@@ -40,7 +40,7 @@ namespace
     template<class Log>
     size_t runIa(const std::vector<V> &pts, size_t step, Log *log, size_t &clusters)
     {
-        rtl::IA_Segmenter<V, Log> ia(step, 0.05f, 0.5f, rtl::seg_detail::circularScaling<float>(step + 1, pts.size()));
+        rtl::IA_Segmenter<V, Log> ia(step, 0.05f, 0.5f, rtl::detail::circularScaling<float>(step + 1, pts.size()));
         ia.setObserver(log);
         size_t points = 0;
         clusters = 0;

@@ -85,7 +85,7 @@ namespace
 
         size_t ia_clusters = 0, ia_points = 0;
         const double t_ia = minCpuNs([&] {
-            rtl::IA_Segmenter<V> ia(window, 0.05f, 0.5f, rtl::seg_detail::circularScaling<float>(window + 1, n));
+            rtl::IA_Segmenter<V> ia(window, 0.05f, 0.5f, rtl::detail::circularScaling<float>(window + 1, n));
             ia_clusters = ia_points = 0;
             for (const auto &p : pts)
             {

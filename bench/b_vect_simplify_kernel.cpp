@@ -60,7 +60,7 @@ namespace
         }
         return xy;
     }
-    using namespace rtl::simplify_detail;
+    using namespace rtl::detail;
     using Range = std::pair<size_t, size_t>;
 
     //! farthest() of every range, in order; returns a checksum (keeps the calls).

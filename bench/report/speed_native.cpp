@@ -152,7 +152,7 @@ namespace
         auto lines = std::make_shared<std::vector<rtl::LineSegmentND<2, double>>>();
         auto car = std::make_shared<rtl::CAR_Segmenter<V>>(10, 0.01, 0.1);
         // IA at step 9 with CAR step 10's threshold compares the same 9 predecessors: the same clusters.
-        const double ia_scaling = rtl::seg_detail::circularScaling<double>(10, n);
+        const double ia_scaling = rtl::detail::circularScaling<double>(10, n);
         const V a = pts.front(), b = pts.back();
         return {
             {"floor", [&pts, a, b] {

@@ -2,7 +2,7 @@
 // calls decoded from the bytes (values often huge, tiny or non-finite; texts raw bytes), then the same drawing written
 // as TikZ and as SVG. The TikZ must be safe LaTeX (ASCII, balanced braces, no bare %), the SVG well-formed XML, both
 // of bounded size, and neither may contain a non-finite number. A drawing beyond TeX's dimensions (std::length_error,
-// latex_detail::refuseBeyondTex) is a valid outcome: nothing is written as TikZ, the SVG is checked as always.
+// detail::refuseBeyondTex) is a valid outcome: nothing is written as TikZ, the SVG is checked as always.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -86,7 +86,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     // Bounded: 6 grids/axes of at most max_ticks lines each, plus what the calls drew.
     require(t.size() < 8'000'000);
     // A thinned picture says so; the budget's count of marks written matches the marks in the output.
-    const rtl::latex_detail::TikzThinning thin = rtl::latex_detail::tikzThinning(d, d.frame());
+    const rtl::detail::TikzThinning thin = rtl::detail::tikzThinning(d, d.frame());
     require((t.find("{Thinned for pdflatex's memory: 1 in ") != std::string::npos) == thin.thinned());
     size_t marks = 0;
     for (size_t p = t.find("\n\\Mark"); p != std::string::npos; p = t.find("\n\\Mark", p + 1))

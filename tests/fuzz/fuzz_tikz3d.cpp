@@ -1,7 +1,7 @@
 // libFuzzer harness for the 3D TikZ renderer (rtl/io/LaTeXTikz3D.h): marks, lines, faces, axes, regions and views
 // decoded from the bytes (values often huge, tiny or non-finite), then writeTEX to a stream. The output must be safe
 // LaTeX (ASCII, balanced braces, no bare %), of bounded size, without non-finite numbers. A scene beyond TeX's
-// dimensions (std::length_error, latex_detail::refuseBeyondTex) is a valid outcome if nothing was written.
+// dimensions (std::length_error, detail::refuseBeyondTex) is a valid outcome if nothing was written.
 #include <cctype>
 #include <cstddef>
 #include <cstdint>

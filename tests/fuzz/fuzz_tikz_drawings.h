@@ -39,7 +39,7 @@ namespace fuzz_tikz
         auto text = [&]() {
             std::string t = in.text();
             c.tex_texts += rtl::LaTeX::escapeLaTeXCharacters(t) + "\n";
-            c.xml_texts += rtl::svg_detail::xmlEscape(t) + "\n";
+            c.xml_texts += rtl::detail::xmlEscape(t) + "\n";
             return t;
         };
         while (!in.empty() && ops++ < 64)
@@ -160,7 +160,7 @@ namespace fuzz_tikz
     }
 
     //! Whether a std::length_error is the writers' refusal of a picture beyond TeX's dimensions
-    //! (latex_detail::refuseBeyondTex), as opposed to the mark budget's.
+    //! (detail::refuseBeyondTex), as opposed to the mark budget's.
     inline bool beyondTex(const std::exception &e)
     {
         return std::string(e.what()).find("beyond TeX's dimensions") != std::string::npos;

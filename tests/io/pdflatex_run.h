@@ -50,7 +50,7 @@ namespace pdflatex_test
 
     inline std::string inDir(const fs::path &dir, const std::string &command)
     {
-        return "cd " + rtl::latex_detail::shellQuote(dir.string()) + " && " + command;
+        return "cd " + rtl::detail::shellQuote(dir.string()) + " && " + command;
     }
 
     //! pdflatex, non-interactive, on <dir>/<base>.tex (its output in <dir>/pdflatex.out); with halt_on_error false

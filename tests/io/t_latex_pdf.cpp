@@ -70,8 +70,8 @@ namespace
     double inkFraction(const fs::path &pdf)
     {
         fs::path prefix = pdf.parent_path() / (pdf.stem().string() + "-page1");
-        std::string cmd = "pdftoppm -r 30 -gray -f 1 -l 1 -singlefile " + rtl::latex_detail::shellQuote(pdf.string()) +
-                          " " + rtl::latex_detail::shellQuote(prefix.string());
+        std::string cmd = "pdftoppm -r 30 -gray -f 1 -l 1 -singlefile " + rtl::detail::shellQuote(pdf.string()) +
+                          " " + rtl::detail::shellQuote(prefix.string());
         if (std::system(cmd.c_str()) != 0)
             return -1;
         std::string img = readFile(prefix.string() + ".pgm");
@@ -296,7 +296,7 @@ TEST(LaTeXPdf, DocumentWithSeparatelyCompiledFiguresAndTheScanFigure)
     EXPECT_LT(ink, 0.5);
     // Every cluster colour and every segment is in the figure source.
     std::string src = readFile(dir / "scan-intel.tex");
-    EXPECT_NE(src.find("\\definecolor{Color" + rtl::latex_detail::indexToLetters(r.clusters.size() - 1) + "}{hsb}"),
+    EXPECT_NE(src.find("\\definecolor{Color" + rtl::detail::indexToLetters(r.clusters.size() - 1) + "}{hsb}"),
               std::string::npos);
     size_t lines = 0;
     for (size_t p = src.find("line width=0.8pt"); p != std::string::npos; p = src.find("\\draw[Style", p + 1))
@@ -330,7 +330,7 @@ TEST(LaTeXPdf, MissingPdflatexIsReportedNotFatal)
     fs::path dir = outDir("nolatex", "nolatex");
     fs::path self = fs::read_symlink("/proc/self/exe");
     fs::path err = dir / "stderr.txt";
-    using rtl::latex_detail::shellQuote;
+    using rtl::detail::shellQuote;
     std::string cmd = "env PATH=/nonexistent RTL_LATEX_CHILD=" + shellQuote((dir / "out").string()) + " " +
                       shellQuote(self.string()) + " --gtest_filter=LaTeXPdf.MissingPdflatexIsReportedNotFatal > " +
                       shellQuote((dir / "stdout.txt").string()) + " 2> " + shellQuote(err.string());

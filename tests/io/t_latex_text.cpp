@@ -173,13 +173,13 @@ TEST(LaTeXUtility, NumberLabels)
 
 TEST(LaTeXUtility, GeneratedNamesUseLetters)
 {
-    EXPECT_EQ(rtl::latex_detail::indexToLetters(0), "A");
-    EXPECT_EQ(rtl::latex_detail::indexToLetters(9), "J");
-    EXPECT_EQ(rtl::latex_detail::indexToLetters(10), "BA");
-    EXPECT_EQ(rtl::latex_detail::indexToLetters(105), "BAF");
-    EXPECT_EQ(rtl::latex_detail::number(1e5), "100000");
-    EXPECT_EQ(rtl::latex_detail::number(1e7), "1e07");   // no "+": TikZ does not read it
-    EXPECT_EQ(rtl::latex_detail::number(-0.25), "-0.25");
+    EXPECT_EQ(rtl::detail::indexToLetters(0), "A");
+    EXPECT_EQ(rtl::detail::indexToLetters(9), "J");
+    EXPECT_EQ(rtl::detail::indexToLetters(10), "BA");
+    EXPECT_EQ(rtl::detail::indexToLetters(105), "BAF");
+    EXPECT_EQ(rtl::detail::number(1e5), "100000");
+    EXPECT_EQ(rtl::detail::number(1e7), "1e07");   // no "+": TikZ does not read it
+    EXPECT_EQ(rtl::detail::number(-0.25), "-0.25");
 }
 
 TEST(LaTeXTikz2D, DocumentFrameAndScale)

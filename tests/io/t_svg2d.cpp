@@ -209,7 +209,7 @@ TEST(Svg2D, WritesFilesAndReportsFailures)
 
 TEST(SvgStyle, TikzStylesAndColoursTranslate)
 {
-    using namespace rtl::svg_detail;
+    using namespace rtl::detail;
     ColorResolver colors({{"ColorA", "{hsb}{0.5,1,1}"}, {"ColorB", "{RGB}{255,128,0}"}, {"ColorC", "{HTML}{1f77B4}"}});
     EXPECT_EQ(colors.hex("ColorA"), "#00ffff");
     EXPECT_EQ(colors.hex("ColorB"), "#ff8000");

@@ -115,7 +115,7 @@ TEST(Tikz2DBudget, MarksBeyondTheLimitAreThinnedEvenlyWithANote)
                   std::string::npos) << c.n;
         // The marks kept are every stride-th one: the first is the spiral's first point, the second its stride-th.
         std::ostringstream second;
-        second << "\\MarkA{" << rtl::latex_detail::number(spiral(c.n)[c.stride].x()) << "}";
+        second << "\\MarkA{" << rtl::detail::number(spiral(c.n)[c.stride].x()) << "}";
         size_t first_mark = t.find("\\MarkA{10}{0}");
         EXPECT_NE(first_mark, std::string::npos);
         EXPECT_EQ(t.find("\\MarkA{", first_mark + 1), t.find(second.str(), first_mark + 1)) << c.n;
@@ -144,7 +144,7 @@ TEST(Tikz2DBudget, LongPolylinesAreThinnedKeepingTheirEnds)
     d.addPlot(v, "draw=black");
     std::string t = tikz(d);
     EXPECT_EQ(count(t, " -- ("), 50000u);   // 50,001 points (paths of 500 share their joints: one " -- " each)
-    std::string last = rtl::latex_detail::tikzPoint(v.back().x(), v.back().y());
+    std::string last = rtl::detail::tikzPoint(v.back().x(), v.back().y());
     EXPECT_NE(t.find("(" + last + ");\n"), std::string::npos);
     EXPECT_NE(t.find(note + ": 1 in 2 marks and line points drawn (0 of 0 marks)."), std::string::npos);
 }

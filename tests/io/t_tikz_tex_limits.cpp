@@ -121,10 +121,10 @@ TEST(TikzTexLimits, Scene3DBeyond500cmIsRefusedBeforeWriting)
 
 TEST(TikzTexLimits, AnglesBeyond3600DegreesAreReducedModulo360)
 {
-    using rtl::latex_detail::number;
-    auto deg = [](float radians) { return radians * 180.0 / rtl::latex_detail::pi; };   // as the writer converts
+    using rtl::detail::number;
+    auto deg = [](float radians) { return radians * 180.0 / rtl::detail::pi; };   // as the writer converts
     LaTeXTikz2D d;
-    const float rot = 5.2e31f, turns = 4 * static_cast<float>(rtl::latex_detail::pi), b = 1e5f, e = 1e5f - 2 * turns;
+    const float rot = 5.2e31f, turns = 4 * static_cast<float>(rtl::detail::pi), b = 1e5f, e = 1e5f - 2 * turns;
     d.addEllipse(Vector2f(0, 0), 2, 1, rot, "draw=black");
     d.addEllipse(Vector2f(0, 0), 2, 1, turns, "draw=black");   // 720 degrees: as before
     d.addPie(Vector2f(0, 0), 1, 0, 1e12f, "fill=red");          // 5.7e13 degrees counter-clockwise

@@ -70,7 +70,7 @@ namespace segcheck
         const size_t n = pts.size();
         UnionFind uf(n);
         forEachWindowPair(n, window, cyclic, [&](size_t j, size_t i) {
-            if (!isGap(pts[i]) && !isGap(pts[j]) && rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub)) uf.unite(i, j);
+            if (!isGap(pts[i]) && !isGap(pts[j]) && rtl::detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub)) uf.unite(i, j);
         });
         std::vector<size_t> l(n);
         for (size_t i = 0; i < n; ++i) l[i] = isGap(pts[i]) ? gap : uf.find(i);
@@ -182,7 +182,7 @@ namespace segcheck
             if (l != gap) ++size[l];
         std::vector<char> has_partner(pts.size(), 0);
         forEachWindowPair(pts.size(), window, cyclic, [&](size_t j, size_t i) {
-            if (labels[i] != gap && labels[i] == labels[j] && rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
+            if (labels[i] != gap && labels[i] == labels[j] && rtl::detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
                 has_partner[i] = has_partner[j] = 1;
         });
         size_t lonely = 0;
@@ -199,7 +199,7 @@ namespace segcheck
         size_t split = 0;
         forEachWindowPair(pts.size(), window, cyclic, [&](size_t j, size_t i) {
             if (!isGap(pts[i]) && !isGap(pts[j]) && labels[i] != labels[j] &&
-                rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
+                rtl::detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
                 ++split;
         });
         EXPECT_EQ(split, 0u) << what << ": pairs meeting the criterion in different clusters";
@@ -273,7 +273,7 @@ namespace segcheck
         std::vector<size_t> labels;
         const auto idx = toIndices(pts, clusters, labels, what);
         step = std::max<size_t>(step, 1);
-        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(step, pts.size());
+        const auto scaling = rtl::detail::circularScaling<typename V::ElementType>(step, pts.size());
         const size_t window = carWindow(step);
         checkOrder(idx, pts.size(), window, true, what);
         checkComplete(pts, origin, window, scaling, lb, ub, true, labels, what);
@@ -293,7 +293,7 @@ namespace segcheck
                                 typename V::ElementType ub, size_t grab_every, const std::string &what)
     {
         step = std::max<size_t>(step, 1);
-        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(step + 1, pts.size());
+        const auto scaling = rtl::detail::circularScaling<typename V::ElementType>(step + 1, pts.size());
         rtl::IA_Segmenter<V> ia(step, lb, ub, scaling);
         const auto clusters = runIa(ia, pts, origin, step, grab_every, what);
         std::vector<size_t> labels;
@@ -317,12 +317,12 @@ namespace segcheck
     {
         const size_t n = pts.size();
         ia_step = std::max<size_t>(ia_step, 1);
-        const auto scaling = rtl::seg_detail::circularScaling<typename V::ElementType>(ia_step + 1, n);
+        const auto scaling = rtl::detail::circularScaling<typename V::ElementType>(ia_step + 1, n);
         UnionFind uf(n);
         for (size_t i = 0; i < n; ++i)
             if (ia_labels[i] != gap) uf.unite(i, ia_labels[i]);
         forEachWindowPair(n, ia_step, true, [&](size_t j, size_t i) {
-            if (j > i && !isGap(pts[i]) && !isGap(pts[j]) && rtl::seg_detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
+            if (j > i && !isGap(pts[i]) && !isGap(pts[j]) && rtl::detail::meetsCriterion(pts[j], pts[i], origin, scaling, lb, ub))
                 uf.unite(i, j);
         });
         std::vector<size_t> joined(n);

@@ -191,7 +191,7 @@ TEST(IaQueue, AliveClustersDoNotDependOnWhenTheMapIsAskedFor)
         {
             SCOPED_TRACE("step " + std::to_string(step));
             const size_t n = 6000;
-            const float s = rtl::seg_detail::circularScaling<float>(step, n);
+            const float s = rtl::detail::circularScaling<float>(step, n);
             parkedAliveLists(shortRuns<V2f>(n, 10), step, s, every);
             // interleaved chains: merges of parked and attached lists
             parkedAliveLists(segcheck::interleavedScan<V2f>(n, 3, {0.05, 60, 3, 0.02, 0.02}), step, 0.01f, every);
@@ -205,7 +205,7 @@ TEST(IaQueue, LaggingConsumerGetsTheEagerClustersInOrder)
     {
         SCOPED_TRACE("step " + std::to_string(step));
         const size_t n = 20000;
-        const float s = rtl::seg_detail::circularScaling<float>(step, n);
+        const float s = rtl::detail::circularScaling<float>(step, n);
         {
             SCOPED_TRACE("2D float runs of 10");
             lagging(shortRuns<V2f>(n, 10), step, s);

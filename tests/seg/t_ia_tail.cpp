@@ -44,7 +44,7 @@ namespace
             const size_t i = pts.size() - 1;
             if (segcheck::isGap(p)) return;
             for (size_t k = 1; k <= step && k <= i; ++k)
-                if (!segcheck::isGap(pts[i - k]) && rtl::seg_detail::meetsCriterion(pts[i - k], p, V::zeros(), scaling, lb, ub))
+                if (!segcheck::isGap(pts[i - k]) && rtl::detail::meetsCriterion(pts[i - k], p, V::zeros(), scaling, lb, ub))
                     uf.unite(i, i - k);
         }
         //! Alive lists in the order of their first point (IA's ids grow with creation, a merge keeps the older).

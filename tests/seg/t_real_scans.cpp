@@ -102,13 +102,13 @@ namespace
         std::vector<size_t> lf;
         segcheck::toIndices(pf, segcheck::runCar(car_f, pf, origin.template cast<float>()), lf, what);
         const size_t window = segcheck::carWindow(p.step);
-        const auto ld = segcheck::referenceLabels(pd, origin, window, rtl::seg_detail::circularScaling<double>(p.step, n), p.lb, p.ub, true);
-        const double scaling = rtl::seg_detail::circularScaling<double>(p.step, n);
+        const auto ld = segcheck::referenceLabels(pd, origin, window, rtl::detail::circularScaling<double>(p.step, n), p.lb, p.ub, true);
+        const double scaling = rtl::detail::circularScaling<double>(p.step, n);
         segcheck::UnionFind loose(n);
         size_t split_clear = 0;
         segcheck::forEachWindowPair(n, window, true, [&](size_t j, size_t i) {
             if (segcheck::isGap(pd[i]) || segcheck::isGap(pd[j])) return;
-            const double tsq = rtl::seg_detail::SquaredThreshold<double>(scaling, p.lb, p.ub)((pd[i] - origin).lengthSquared());
+            const double tsq = rtl::detail::SquaredThreshold<double>(scaling, p.lb, p.ub)((pd[i] - origin).lengthSquared());
             const double dsq = (pd[i] - pd[j]).lengthSquared();
             if (dsq <= tsq * (1 + 1e-4)) loose.unite(i, j);
             if (dsq < tsq * (1 - 1e-4) && lf[i] != lf[j]) ++split_clear;

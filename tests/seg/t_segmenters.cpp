@@ -94,7 +94,7 @@ TYPED_TEST(ArcsTest, KnownBreaks)
     EXPECT_EQ(carIndices(pts, 1, 0.2, 0.5).size(), 359u);
 
     // the stream segmenter (window: the `step` previous points) has no seam and hands clusters out as they close
-    const auto s = rtl::seg_detail::circularScaling<typename V::ElementType>(1, 360);
+    const auto s = rtl::detail::circularScaling<typename V::ElementType>(1, 360);
     const std::vector<std::vector<size_t>> stream1 = {range(0, 90), range(90, 150), range(151, 180), range(180, 300), range(300, 360)};
     EXPECT_EQ(iaIndices(pts, 1, 0.2, 0.5, s), stream1);
     EXPECT_EQ(iaIndices(pts, 1, 0.2, 0.5, s, V::zeros(), 0), stream1);
@@ -309,7 +309,7 @@ TEST(Regression, StreamLosesNothingWhateverTheGrabPattern)
     }
     for (size_t step : {1, 2, 4, 7})
     {
-        const auto s = rtl::seg_detail::circularScaling<float>(step, pts.size());
+        const auto s = rtl::detail::circularScaling<float>(step, pts.size());
         const auto every = iaIndices(pts, step, 0.05f, 0.4f, s, V2f::zeros(), 1);
         EXPECT_EQ(iaIndices(pts, step, 0.05f, 0.4f, s, V2f::zeros(), 0), every);
         EXPECT_EQ(iaIndices(pts, step, 0.05f, 0.4f, s, V2f::zeros(), 37), every);

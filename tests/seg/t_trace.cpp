@@ -427,9 +427,9 @@ TEST(SegTrace, DistancesCompareLikeTheirSquares)
     // adjacent doubles whose square roots round to the same value: the reported distance stays above the threshold
     const double tsq = 2.0, dsq = std::nextafter(2.0, 3.0);
     double d, t;
-    rtl::seg_detail::traceDistances(dsq, tsq, false, d, t);
+    rtl::detail::traceDistances(dsq, tsq, false, d, t);
     EXPECT_GT(d, t);
-    rtl::seg_detail::traceDistances(tsq, tsq, true, d, t);
+    rtl::detail::traceDistances(tsq, tsq, true, d, t);
     EXPECT_LE(d, t);
 }
 
@@ -447,7 +447,7 @@ TEST(SegTrace, ReplayEqualsResultOnRealScans)
                 const std::string what = std::string(file) + " scan " + std::to_string(k) + " step " + std::to_string(step);
                 const auto &pts = sf[k];
                 checkCarTrace(pts, V2f::zeros(), step, 0.05f, 0.5f, what + " CAR");
-                checkIaTrace(pts, V2f::zeros(), step, 0.05f, 0.5f, rtl::seg_detail::circularScaling<float>(step + 1, pts.size()), what + " IA");
+                checkIaTrace(pts, V2f::zeros(), step, 0.05f, 0.5f, rtl::detail::circularScaling<float>(step + 1, pts.size()), what + " IA");
                 if (k % 5 == 0) checkCarTrace(sd[k], V2d::zeros(), step, 0.03, 0.3, what + " CAR double");
                 if (::testing::Test::HasFailure()) return;
             }
@@ -459,7 +459,7 @@ TEST(SegTrace, ReplayEqualsResultOnRealScans)
             const std::string what = "ouster ring " + std::to_string(b) + " step " + std::to_string(step);
             checkCarTrace(rings[b], rtl::VectorND<3, float>::zeros(), step, 0.1f, 1.0f, what + " CAR");
             checkIaTrace(rings[b], rtl::VectorND<3, float>::zeros(), step, 0.1f, 1.0f,
-                         rtl::seg_detail::circularScaling<float>(step + 1, rings[b].size()), what + " IA");
+                         rtl::detail::circularScaling<float>(step + 1, rings[b].size()), what + " IA");
             if (::testing::Test::HasFailure()) return;
         }
     EXPECT_EQ(scans, 2 * 30 * 4 + 4 * 4u);

@@ -1,6 +1,6 @@
 // The exact search's corner test in its hot loops: ApproximationTlsLine2D::
 // crossingDistanceSquaredUnchecked compared with a finite bound must decide exactly as the checked crossing
-// (vect_detail::crossingDistanceSquared) does, for every line pair; with an infinite delta the search must keep the
+// (detail::crossingDistanceSquared) does, for every line pair; with an infinite delta the search must keep the
 // checked path (there the checked +infinity is accepted, the unchecked NaN of parallel lines would not be).
 // Near-threshold cases: the bound set to the checked value itself and to its neighbours, on the line pairs of the
 // worst-case corpus, so that any change of the arithmetic (order, side of the crossing, rounding) flips some decision.
@@ -31,7 +31,7 @@ namespace
     //! Both decisions at `bound`; counts the pairs compared. False (with a message) at the first difference.
     ::testing::AssertionResult sameDecision(const std::vector<rtl::Vector2d> &pts, const Line &l1, const Line &l2, size_t b, double bound)
     {
-        const double checked = rtl::vect_detail::crossingDistanceSquared(pts, l1, l2, b);
+        const double checked = rtl::detail::crossingDistanceSquared(pts, l1, l2, b);
         const V m = (pts[b - 1] + pts[b]) * 0.5;
         const double unchecked = Line::crossingDistanceSquaredUnchecked(l1, l2, m);
         if ((checked <= bound) == (unchecked <= bound))
@@ -54,7 +54,7 @@ TEST(FastCorpusCorners, UncheckedDecidesAsCheckedAtTheThreshold)
                 for (size_t l2 : {2, 4, 7, 12})
                 {
                     const Line before(a.sums(b - l1, b)), after(a.sums(b, b + l2));
-                    const double d2 = rtl::vect_detail::crossingDistanceSquared(c.pts, before, after, b);
+                    const double d2 = rtl::detail::crossingDistanceSquared(c.pts, before, after, b);
                     ++pairs;
                     if (!std::isfinite(d2))
                         continue;

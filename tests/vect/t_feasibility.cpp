@@ -47,7 +47,7 @@ namespace
                 continue;
             int breaks = 0;
             for (size_t k = 0; k + 1 < lines.size(); ++k)
-                breaks += rtl::vect_detail::crossingDistanceSquared(pts, lines[k], lines[k + 1], b[k + 1]) <= delta * delta ? 0 : 1;
+                breaks += rtl::detail::crossingDistanceSquared(pts, lines[k], lines[k + 1], b[k + 1]) <= delta * delta ? 0 : 1;
             if (out.min_breaks < 0 || breaks < out.min_breaks)
                 out.min_breaks = breaks;
             const int ranges = static_cast<int>(lines.size());

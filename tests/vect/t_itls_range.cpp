@@ -26,7 +26,7 @@ TEST(ItlsRange, CoordinatesWhoseSquaresOverflowAreRejected)
     itls.setSigma(1e-3);
     EXPECT_FALSE(itls(zigzag(1e270)));   // was true: one range over all 7 points of a zigzag
     EXPECT_TRUE(itls.lineSegments().empty());
-    const double limit = rtl::vect_detail::momentSafeLimit<double>(7);
+    const double limit = rtl::detail::momentSafeLimit<double>(7);
     EXPECT_GT(limit, 1e150);
     EXPECT_FALSE(itls(zigzag(limit)));   // 6 * limit lies beyond it
 }

@@ -86,7 +86,7 @@ namespace
                 {
                     const St &p = st[ending[x][k]];
                     ++o.tests;
-                    const bool meets = rtl::vect_detail::crossingDistanceSquared(pts, in[k], out, x) <= delta * delta;
+                    const bool meets = rtl::detail::crossingDistanceSquared(pts, in[k], out, x) <= delta * delta;
                     if (!meets && !breaks)
                         continue;
                     const St c{x, p.b + (meets ? 0u : 1u), p.r + 1, p.e + err};

@@ -619,7 +619,7 @@ TEST(SimplifyCompatible, ShortRangesEveryLengthAndPosition)
 // each step, the tail) among smaller values, NaN passed over, infinity taken, and g only raised.
 TEST(SimplifyCompatible, LargestMagnitudeEveryPosition)
 {
-    using rtl::simplify_detail::largestMagnitude;
+    using rtl::detail::largestMagnitude;
     for (size_t count = 0; count <= 13; ++count)
         for (size_t at = 0; at < count; ++at)
             for (double top : {7.5, -7.5, std::numeric_limits<double>::infinity()})

@@ -20,7 +20,7 @@ using namespace vect_test;
 // RTL's names still denote the untraced classes.
 static_assert(std::is_same_v<rtl::VectorizerDouglasPeucker2f, rtl::VectorizerDouglasPeuckerND<2, float, rtl::NoTrace>>);
 static_assert(std::is_same_v<rtl::VectorizerReumannWitkam3d, rtl::VectorizerReumannWitkamND<3, double, rtl::NoTrace>>);
-static_assert(std::is_base_of_v<rtl::vect_detail::VectorizerIncremental<rtl::ApproximationTlsLine2D<float, double>, rtl::NoTrace>,
+static_assert(std::is_base_of_v<rtl::detail::VectorizerIncremental<rtl::ApproximationTlsLine2D<float, double>, rtl::NoTrace>,
                                 rtl::VectorizerITLSProjections2D<float, double>>);
 
 namespace

@@ -24,7 +24,7 @@ namespace rtl
     template<int, typename> class RotationND;
     template<int, typename> class RigidTfND;
 
-    namespace bbox_detail
+    namespace detail
     {
         //! The default mapping of allVertices(): the vertex itself.
         struct IdentityMap
@@ -85,7 +85,7 @@ namespace rtl
 
         //! All 2^dimensions corners mapped through func (the corners themselves without an argument). Corner k takes
         //! max in dimension i when bit i of k is set, min otherwise.
-        template<typename T = bbox_detail::IdentityMap>
+        template<typename T = detail::IdentityMap>
         std::vector<std::invoke_result_t<T, VectorType>> allVertices(T &&func = T{}) const
         {
             std::vector<std::invoke_result_t<T, VectorType>> out;
@@ -114,10 +114,10 @@ namespace rtl
             int_max.data() += tr.trVec().data();
         }
         //! Rotations and rigid transformations give the axis-aligned box of the transformed corners.
-        [[nodiscard]] BoundingBoxND transformed(const core_detail::RotationArg<dimensions, Element> &rot) const { return boxOfCorners(rot); }
-        void transform(const core_detail::RotationArg<dimensions, Element> &rot) { *this = boxOfCorners(rot); }
-        [[nodiscard]] BoundingBoxND transformed(const core_detail::RigidTfArg<dimensions, Element> &tf) const { return boxOfCorners(tf); }
-        void transform(const core_detail::RigidTfArg<dimensions, Element> &tf) { *this = boxOfCorners(tf); }
+        [[nodiscard]] BoundingBoxND transformed(const detail::RotationArg<dimensions, Element> &rot) const { return boxOfCorners(rot); }
+        void transform(const detail::RotationArg<dimensions, Element> &rot) { *this = boxOfCorners(rot); }
+        [[nodiscard]] BoundingBoxND transformed(const detail::RigidTfArg<dimensions, Element> &tf) const { return boxOfCorners(tf); }
+        void transform(const detail::RigidTfArg<dimensions, Element> &tf) { *this = boxOfCorners(tf); }
 
         //! Product of the extents (0 for a degenerate box).
         Element volume() const { return (int_max.data() - int_min.data()).prod(); }

@@ -54,15 +54,15 @@ namespace rtl
             int_beg.data() += tr.trVec().data();
             int_end.data() += tr.trVec().data();
         }
-        [[nodiscard]] ChildType transformed(const core_detail::RotationArg<dimensions, Element> &rot) const { ChildType c(child()); c.transform(rot); return c; }
-        void transform(const core_detail::RotationArg<dimensions, Element> &rot)
+        [[nodiscard]] ChildType transformed(const detail::RotationArg<dimensions, Element> &rot) const { ChildType c(child()); c.transform(rot); return c; }
+        void transform(const detail::RotationArg<dimensions, Element> &rot)
         {
             int_beg.data() = (rot.rotMat().data() * int_beg.data()).eval();
             int_end.data() = (rot.rotMat().data() * int_end.data()).eval();
             int_dir.data() = (rot.rotMat().data() * int_dir.data()).eval();
         }
-        [[nodiscard]] ChildType transformed(const core_detail::RigidTfArg<dimensions, Element> &tf) const { ChildType c(child()); c.transform(tf); return c; }
-        void transform(const core_detail::RigidTfArg<dimensions, Element> &tf)
+        [[nodiscard]] ChildType transformed(const detail::RigidTfArg<dimensions, Element> &tf) const { ChildType c(child()); c.transform(tf); return c; }
+        void transform(const detail::RigidTfArg<dimensions, Element> &tf)
         {
             int_beg.data() = (tf.rotMat().data() * int_beg.data() + tf.trVec().data()).eval();
             int_end.data() = (tf.rotMat().data() * int_end.data() + tf.trVec().data()).eval();

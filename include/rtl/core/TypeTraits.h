@@ -8,7 +8,7 @@
 
 namespace rtl
 {
-    namespace traits_detail
+    namespace detail
     {
         struct nonesuch
         {
@@ -47,7 +47,7 @@ namespace rtl
     template<typename T> using ElementTypeType = typename T::ElementType;
     template<typename T> struct has_element_type
     {
-        using type = traits_detail::is_detected<ElementTypeType, T>;
+        using type = detail::is_detected<ElementTypeType, T>;
         static constexpr bool value = type::value;
     };
     template<typename T> using has_element_type_t = typename has_element_type<T>::type;
@@ -66,7 +66,7 @@ namespace rtl
     //! `type` is the result type.
     template<typename Obj, typename Tf> struct is_transformable
     {
-        using type = traits_detail::is_detected<TransformedResult, Obj, Tf>;
+        using type = detail::is_detected<TransformedResult, Obj, Tf>;
         static constexpr bool value = type::value;
     };
     template<typename Obj, typename Tf> using is_transformable_t = typename is_transformable<Obj, Tf>::type;
@@ -76,7 +76,7 @@ namespace rtl
     template<typename T> using InvertedResult = decltype(std::declval<T &>().inverted());
     template<typename T> struct is_invertible
     {
-        using type = traits_detail::is_detected<InvertedResult, T>;
+        using type = detail::is_detected<InvertedResult, T>;
         static constexpr bool value = type::value;
     };
     template<typename T> using is_invertible_t = typename is_invertible<T>::type;
@@ -86,7 +86,7 @@ namespace rtl
     template<typename T> using IdentityResult = decltype(T::identity());
     template<typename T> struct has_identity
     {
-        using type = traits_detail::is_detected<IdentityResult, T>;
+        using type = detail::is_detected<IdentityResult, T>;
         static constexpr bool value = type::value;
     };
     template<typename T> using has_identity_t = typename has_identity<T>::type;
@@ -96,7 +96,7 @@ namespace rtl
     template<typename T> using NaNResult = decltype(T::nan());
     template<typename T> struct has_nan
     {
-        using type = traits_detail::is_detected<NaNResult, T>;
+        using type = detail::is_detected<NaNResult, T>;
         static constexpr bool value = type::value;
     };
     template<typename T> using has_nan_t = typename has_nan<T>::type;
@@ -110,7 +110,7 @@ namespace rtl
     template<typename Obj, typename... Gs> struct HasRandomImpl<Obj, Gs...>
     {
         using type = std::conditional_t<(std::is_void_v<Gs> || ...), std::false_type,
-                                        traits_detail::is_detected<RandomResult, Obj, Gs...>>;
+                                        detail::is_detected<RandomResult, Obj, Gs...>>;
     };
 
     //! has_random<Obj>: Obj::random(g) with a generator g returning Obj::ElementType; has_random<Obj, G, Gs...>:
@@ -123,7 +123,7 @@ namespace rtl
     template<typename Obj> struct has_random<Obj>
     {
         static_assert(has_element_type_v<Obj>, "has_random<Obj> without generator types needs Obj::ElementType.");
-        using type = typename HasRandomImpl<Obj, traits_detail::GeneratorOf<typename Obj::ElementType>>::type;
+        using type = typename HasRandomImpl<Obj, detail::GeneratorOf<typename Obj::ElementType>>::type;
         static constexpr bool value = type::value;
     };
     template<typename Obj, typename... RndGen> using has_random_t = typename has_random<Obj, RndGen...>::type;
@@ -133,7 +133,7 @@ namespace rtl
     template<typename T> using DistanceResult = decltype(T::distance(std::declval<T &>(), std::declval<T &>()));
     template<typename T> struct has_metric
     {
-        using type = traits_detail::is_detected<DistanceResult, T>;
+        using type = detail::is_detected<DistanceResult, T>;
         static constexpr bool value = type::value;
     };
     template<typename T> using has_metric_t = typename has_metric<T>::type;
@@ -143,7 +143,7 @@ namespace rtl
     template<typename T> using DimensionalityResult = decltype(T::dimensionality());
     template<typename T> struct is_dimensional
     {
-        using type = traits_detail::is_detected<DimensionalityResult, T>;
+        using type = detail::is_detected<DimensionalityResult, T>;
         static constexpr bool value = type::value;
     };
     template<typename T> using is_dimensional_t = typename is_dimensional<T>::type;

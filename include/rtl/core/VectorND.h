@@ -32,7 +32,7 @@ namespace rtl
     template<int, typename> class RotationND;
     template<int, typename> class RigidTfND;
 
-    namespace vector_detail
+    namespace detail
     {
         //! True for types derived from Eigen::EigenBase (so that Eigen objects never pick the element-wise constructor).
         template<typename T>
@@ -43,7 +43,7 @@ namespace rtl
         constexpr bool are_elements_v = ((std::is_convertible_v<T, E> && !is_eigen_v<T>) && ...);
     }
 
-    namespace core_detail
+    namespace detail
     {
         //! Stands in for a transformation that does not exist in this dimension; it cannot be constructed.
         template<int tag>
@@ -92,18 +92,18 @@ namespace rtl
         void transform(const TranslationND<dimensions, Element> &tr) { elements += tr.trVec().data(); }
 
         //! R v.
-        [[nodiscard]] ChildType transformed(const core_detail::RotationArg<dimensions, Element> &rot) const
+        [[nodiscard]] ChildType transformed(const detail::RotationArg<dimensions, Element> &rot) const
         {
             return ChildType(EigenType(rot.rotMat().data() * elements));
         }
-        void transform(const core_detail::RotationArg<dimensions, Element> &rot) { elements = (rot.rotMat().data() * elements).eval(); }
+        void transform(const detail::RotationArg<dimensions, Element> &rot) { elements = (rot.rotMat().data() * elements).eval(); }
 
         //! R v + t.
-        [[nodiscard]] ChildType transformed(const core_detail::RigidTfArg<dimensions, Element> &tf) const
+        [[nodiscard]] ChildType transformed(const detail::RigidTfArg<dimensions, Element> &tf) const
         {
             return ChildType(EigenType(tf.rotMat().data() * elements + tf.trVec().data()));
         }
-        void transform(const core_detail::RigidTfArg<dimensions, Element> &tf) { elements = (tf.rotMat().data() * elements + tf.trVec().data()).eval(); }
+        void transform(const detail::RigidTfArg<dimensions, Element> &tf) { elements = (tf.rotMat().data() * elements + tf.trVec().data()).eval(); }
 
         EigenType &data() { return elements; }
         const EigenType &data() const { return elements; }
@@ -207,7 +207,7 @@ namespace rtl
         EigenType elements;
 
         VectorND_common() : elements(EigenType::Zero()) {}
-        template<typename... T, typename std::enable_if<sizeof...(T) == dimensions && vector_detail::are_elements_v<Element, T...>, int>::type = 0>
+        template<typename... T, typename std::enable_if<sizeof...(T) == dimensions && detail::are_elements_v<Element, T...>, int>::type = 0>
         explicit VectorND_common(T... args)
         {
             Eigen::Index i = 0;
@@ -251,7 +251,7 @@ namespace rtl
         VectorND(const VectorND &v) = default;
         explicit VectorND(const EigenType &e) : base(e) {}
         //! One argument per element, each static_cast to Element.
-        template<typename... T, typename std::enable_if<sizeof...(T) == dimensions && vector_detail::are_elements_v<Element, T...>, int>::type = 0>
+        template<typename... T, typename std::enable_if<sizeof...(T) == dimensions && detail::are_elements_v<Element, T...>, int>::type = 0>
         explicit VectorND(T... args) : base(args...) {}
 
         VectorND &operator=(const VectorND &v) = default;

@@ -77,7 +77,7 @@ namespace rtl
         std::size_t no_return_beams = 0;                            //!< beams with a finite range >= max_range
     };
 
-    namespace carmen_detail
+    namespace detail
     {
         constexpr double pi = 3.14159265358979323846264338327950288;
 
@@ -191,7 +191,7 @@ namespace rtl
         return {std::numeric_limits<E>::quiet_NaN(), 0};
     }
 
-    namespace carmen_detail
+    namespace detail
     {
         //! Turns beams at or beyond max_range into gaps and records max_range in every scan.
         template<typename E>
@@ -369,7 +369,7 @@ namespace rtl
     template<typename E>
     CarmenLog<E> readCarmenLogDetailed(std::istream &in, const CarmenOptions &options = {})
     {
-        return carmen_detail::read<E>(in, options);
+        return detail::read<E>(in, options);
     }
 
     //! readCarmenLogDetailed on the log's text in memory (the same scans, errors and detection as a stream holding
@@ -377,7 +377,7 @@ namespace rtl
     template<typename E>
     CarmenLog<E> readCarmenLogTextDetailed(std::string_view text, const CarmenOptions &options = {})
     {
-        return carmen_detail::read<E>(text, options);
+        return detail::read<E>(text, options);
     }
 
     //! The scans of readCarmenLogDetailed with the detected no-return value (each scan's max_range tells it).

@@ -41,20 +41,20 @@ namespace rtl
     public:
         static const unsigned int overrun_relative = 0, overrun_absolute = 1;
         static const unsigned int axis_type_linear = 0, axis_type_log10 = 1;
-        static const unsigned int position_above = latex_detail::tikz_position_above,
-                                  position_below = latex_detail::tikz_position_below,
-                                  position_right = latex_detail::tikz_position_right,
-                                  position_left = latex_detail::tikz_position_left;
+        static const unsigned int position_above = detail::tikz_position_above,
+                                  position_below = detail::tikz_position_below,
+                                  position_right = detail::tikz_position_right,
+                                  position_left = detail::tikz_position_left;
         //! addEdge(s) options: arrow tips at the end and/or the beginning of each edge.
         static const unsigned int edge_arrow_end = 0x01, edge_arrow_beg = 0x02;
 
         //! Mark templates: TikZ code around the local origin, sized by `\MarkRadius`; "@style" becomes the style name.
-        static inline const char *latex_mark_blank = latex_detail::tikz_mark_blank;
-        static inline const char *latex_mark_cross = latex_detail::tikz_mark_cross;
-        static inline const char *latex_mark_mark = latex_detail::tikz_mark_mark;
-        static inline const char *latex_mark_dot = latex_detail::tikz_mark_dot;
-        static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
-        static inline const char *latex_var_style = latex_detail::tikz_var_style;
+        static inline const char *latex_mark_blank = detail::tikz_mark_blank;
+        static inline const char *latex_mark_cross = detail::tikz_mark_cross;
+        static inline const char *latex_mark_mark = detail::tikz_mark_mark;
+        static inline const char *latex_mark_dot = detail::tikz_mark_dot;
+        static inline const char *latex_mark_robot = detail::tikz_mark_robot;
+        static inline const char *latex_var_style = detail::tikz_var_style;
 
         //! What one TikZ picture may hold by default, in mark equivalents (TikzBudget.h): below what pdflatex's
         //! default main memory held here (about 9,000 filled dot marks), with a margin.
@@ -365,7 +365,7 @@ namespace rtl
         const std::string &descriptionX() const { return description_x; }
         const std::string &descriptionY() const { return description_y; }
         //! Registered style, colour and mark names (TikZ definitions and the normalised style texts).
-        const latex_detail::TikzNames &registry() const { return names; }
+        const detail::TikzNames &registry() const { return names; }
         //! Registered marks by name (`\MarkX`).
         const std::map<std::string, MarkDef> &markDefs() const { return mark_defs; }
         unsigned int axisTypeX() const { return axis_type_x; }
@@ -460,7 +460,7 @@ namespace rtl
         //! Marks reset the unit vectors to 1 cm in TikZ, so they keep their size whatever the axis scaling.
         std::string markName(const std::string &style, const std::string &templ, float scale)
         {
-            std::string s = latex_detail::number(scale);
+            std::string s = detail::number(scale);
             std::string name =
                     names.mark(style, templ, "\n" + s, "[3]", "shift={(#1,#2)}, x=1cm, y=1cm, rotate=#3, scale=" + s);
             if (mark_defs.find(name) == mark_defs.end())
@@ -596,7 +596,7 @@ namespace rtl
         float clip_min_x = 0, clip_max_x = 0, clip_min_y = 0, clip_max_y = 0;
         float min_x, max_x, min_y, max_y;
 
-        latex_detail::TikzNames names;              // styles, colours, marks
+        detail::TikzNames names;              // styles, colours, marks
         std::map<std::string, MarkDef> mark_defs;   // \MarkX -> definition
         std::vector<Primitive> prims;               // in insertion order
         std::vector<Grid> grid_list;

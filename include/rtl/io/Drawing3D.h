@@ -64,7 +64,7 @@ namespace rtl
         struct Settings
         {
             float export_w = 10, export_h = 10, border_cm = 0.1f;
-            double focal = 1.0 / std::tan(30.0 * latex_detail::pi / 180.0);   // 60 degrees
+            double focal = 1.0 / std::tan(30.0 * detail::pi / 180.0);   // 60 degrees
             Eigen::Matrix3d view_rot = Eigen::Matrix3d::Identity();
             V3 view_tr = V3::Constant(std::numeric_limits<double>::quiet_NaN());   // NaN: auto-fit
             bool clip_set = false;
@@ -262,18 +262,18 @@ namespace rtl
         const std::vector<LineItem> &lines() const { return line_items; }
         const std::vector<Face> &faces() const { return face_items; }
         const std::vector<AxisItem> &axes() const { return axis_items; }
-        const latex_detail::TikzNames &registry() const { return names; }
+        const detail::TikzNames &registry() const { return names; }
 
     private:
         void setFov(float fov)
         {
             double f = std::isfinite(fov) ? fov : 60.0;
             f = std::clamp(f, 1e-3, 179.0);
-            s.focal = 1.0 / std::tan(f * latex_detail::pi / 360.0);
+            s.focal = 1.0 / std::tan(f * detail::pi / 360.0);
         }
 
         Settings s;
-        latex_detail::TikzNames names;   // styles, colours, marks
+        detail::TikzNames names;   // styles, colours, marks
         std::vector<MarkItem> mark_items;
         std::vector<LineItem> line_items;
         std::vector<Face> face_items;

@@ -95,7 +95,7 @@ namespace rtl
         {
             if (cols == 0 || figs == 0)
                 return;
-            std::string width = latex_detail::number(1.0 / static_cast<double>(cols)) + "\\textwidth";
+            std::string width = detail::number(1.0 / static_cast<double>(cols)) + "\\textwidth";
             body += "\\begin{figure}[t]\n\\centering\n{\\setlength{\\tabcolsep}{0pt}\n\\begin{tabular}{" +
                     std::string(cols, 'c') + "}\n";
             for (size_t i = 0; i < figs; ++i)
@@ -297,9 +297,9 @@ namespace rtl
             namespace fs = std::filesystem;
             std::error_code ec;
             fs::path tex = fs::absolute(tex_file, ec);
-            std::string cmd = "cd " + latex_detail::shellQuote(dir) +
+            std::string cmd = "cd " + detail::shellQuote(dir) +
                               " && pdflatex -interaction=nonstopmode -halt-on-error " +
-                              latex_detail::shellQuote(tex.string()) + " > /dev/null 2>&1";
+                              detail::shellQuote(tex.string()) + " > /dev/null 2>&1";
             int rc = std::system(cmd.c_str());
             fs::path pdf = fs::path(dir) / tex.filename().replace_extension(".pdf");
             return rc == 0 && fs::exists(pdf, ec);

@@ -62,7 +62,7 @@ namespace rtl
         template<class Out>
         void writeTo(Out &ofs, const std::string &desc) const
         {
-            using io_detail::textAppend;
+            using detail::textAppend;
             textAppend(ofs, "\\begin{table}\n\\begin{center}\n\\begin{tabular}{");
             textAppend(ofs, effectiveColumnStyle());
             textAppend(ofs, "}\n");

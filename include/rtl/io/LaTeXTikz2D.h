@@ -41,7 +41,7 @@ namespace rtl
     //!   counts. Where even that is out of TeX's range (a unit vector outside 1e-4..500 cm, e.g. a data range of 1e-3,
     //!   or coordinates >= 16000 or > 500 cm from the origin on paper, e.g. 1e6), the picture is written on paper
     //!   instead: x=1cm, y=1cm, every coordinate (v - min) * s in cm, `\MinX...` in cm, `\MarkGlobalScaleX/Y` = 1
-    //!   (latex_detail::TikzMap); such documents did not compile before.
+    //!   (detail::TikzMap); such documents did not compile before.
     //! - The picture always contains the data frame (`\MinX`,`\MinY`)-(`\MaxX`,`\MaxY`) as an invisible path.
     //! - Marks are `\newcommand{\MarkA}[3]{...}` (x, y, rotation in degrees) drawn in a scope shifted to (x, y) that
     //!   resets the unit vectors to 1 cm, so marks are `\MarkRadius` cm in size whatever the axis scaling.
@@ -77,7 +77,7 @@ namespace rtl
         //! std::length_error as described above before the file is opened (no file left, an earlier one untouched).
         void writeTEX(const std::string &file_name)
         {
-            latex_detail::writeTexFile(file_name, "LaTeXTikz2D", [this](std::ostream &os) { writeTEX(os); });
+            detail::writeTexFile(file_name, "LaTeXTikz2D", [this](std::ostream &os) { writeTEX(os); });
         }
 
         //! Writes the standalone document to a stream.
@@ -86,13 +86,13 @@ namespace rtl
         //! Writes only the tikzpicture environment (colours, macros and marks are local to it), e.g. to `\input` it.
         void writeTikz(std::ostream &os) { rtl::writeTikzPicture(*this, os); }
 
-        //! printf-formats `num` by the conversion letter ending `format` (see latex_detail::numberToLatexString for
+        //! printf-formats `num` by the conversion letter ending `format` (see detail::numberToLatexString for
         //! the rules, including non-finite and out-of-range values), rewrites an exponent as `" \cdot 10^{exp}"`
         //! (a bare mantissa 1 gives "10^{exp}") and wraps the result in $...$.
         template<typename T>
         static std::string numberToLatexString(T num, std::string format)
         {
-            return latex_detail::numberToLatexString(num, format);
+            return detail::numberToLatexString(num, format);
         }
     };
 }

@@ -58,7 +58,7 @@ namespace rtl
     //! - TeX's dimensions (about 575 cm), an addition to RTL: writeTikz throws std::length_error before writing anything
     //!   if the export size, a clip corner, the picture's extent (1.1 times the clip rectangle, which objects may
     //!   reach, on either side) or a mark's radius at the reference depth (0.1 cm * mark_radius) is beyond
-    //!   latex_detail::tex_paper_limit_cm (500 cm); writeTEX also if the border or the page (extent plus two
+    //!   detail::tex_paper_limit_cm (500 cm); writeTEX also if the border or the page (extent plus two
     //!   borders) is. Near the camera a mark's scale is clamped (max_mark_scale; and within 250 cm of the centre
     //!   unless at most 100), mark rotations beyond +-3600 degrees are written modulo 360, and axis labels projected
     //!   beyond 250 cm (far outside the clip) are left out. Scenes within these limits are written as before.
@@ -68,20 +68,20 @@ namespace rtl
         static const unsigned int overrun_relative = Drawing3D::overrun_relative,
                                   overrun_absolute = Drawing3D::overrun_absolute, axis_type_linear = 0,
                                   axis_type_log10 = 1;
-        static const unsigned int position_above = latex_detail::tikz_position_above,
-                                  position_below = latex_detail::tikz_position_below,
-                                  position_right = latex_detail::tikz_position_right,
-                                  position_left = latex_detail::tikz_position_left;
-        static inline const char *latex_mark_blank = latex_detail::tikz_mark_blank;
-        static inline const char *latex_mark_cross = latex_detail::tikz_mark_cross;
-        static inline const char *latex_mark_mark = latex_detail::tikz_mark_mark;
-        static inline const char *latex_mark_dot = latex_detail::tikz_mark_dot;
-        static inline const char *latex_mark_robot = latex_detail::tikz_mark_robot;
-        static inline const char *latex_var_style = latex_detail::tikz_var_style;
+        static const unsigned int position_above = detail::tikz_position_above,
+                                  position_below = detail::tikz_position_below,
+                                  position_right = detail::tikz_position_right,
+                                  position_left = detail::tikz_position_left;
+        static inline const char *latex_mark_blank = detail::tikz_mark_blank;
+        static inline const char *latex_mark_cross = detail::tikz_mark_cross;
+        static inline const char *latex_mark_mark = detail::tikz_mark_mark;
+        static inline const char *latex_mark_dot = detail::tikz_mark_dot;
+        static inline const char *latex_mark_robot = detail::tikz_mark_robot;
+        static inline const char *latex_var_style = detail::tikz_var_style;
 
         //! The largest perspective scale of a mark (`\MarkRadius` 0.1 cm * 1000: a dot of 200 cm across): nearer to the
         //! camera it stops growing.
-        static constexpr double max_mark_scale = latex_detail::tikz3d_max_mark_scale;
+        static constexpr double max_mark_scale = detail::tikz3d_max_mark_scale;
 
         LaTeXTikz3D() { clearAll(); }
         LaTeXTikz3D(LaTeXTikz3D &&le) noexcept = default;
@@ -134,13 +134,13 @@ namespace rtl
         {
             if (!hasContent())
                 return;
-            latex_detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
+            detail::writeTexFile(file_name, "LaTeXTikz3D", [this](std::ostream &os) { writeTEX(os); });
         }
         void writeTEX(std::ostream &os) { writeTexTo(os); }
         //! What writeTEX writes, as a string, without any stream (not an overload of writeTEX: that takes file names).
         std::string texString()
         {
-            return io_detail::textString([this](std::string &out) { writeTexTo(out); });
+            return detail::textString([this](std::string &out) { writeTexTo(out); });
         }
         //! writeTEX into a std::ostream or a std::string (TextSink.h).
         template<class Out>
@@ -148,7 +148,7 @@ namespace rtl
         {
             if (!hasContent())
                 return;
-            latex_detail::writeTex3D(scene, os);
+            detail::writeTex3D(scene, os);
         }
         //! Writes only the tikzpicture (everything it defines is local to it). A scene without objects and without
         //! a min region gives an empty picture of the export size. Thinned or std::length_error as in the class comment.
@@ -156,13 +156,13 @@ namespace rtl
         //! What writeTikz writes, as a string, without any stream.
         std::string tikzString()
         {
-            return io_detail::textString([this](std::string &out) { writeTikzTo(out); });
+            return detail::textString([this](std::string &out) { writeTikzTo(out); });
         }
         //! writeTikz into a std::ostream or a std::string (TextSink.h).
         template<class Out>
         void writeTikzTo(Out &target)
         {
-            latex_detail::writeTikz3D(scene, target);
+            detail::writeTikz3D(scene, target);
         }
 
         //! A line along beg -> end extended across the rendered region (plus overrun), drawn in depth order, with

@@ -16,7 +16,7 @@
 #include "rtl/io/LaTeXUtility.h"
 #include "rtl/io/TextSink.h"
 
-namespace rtl::latex_detail
+namespace rtl::detail
 {
     //! Mark templates (TikZ code around the local origin, sized by \MarkRadius; "@style" becomes the style name),
     //! published by both exporters as latex_mark_* / latex_var_style.
@@ -103,7 +103,7 @@ namespace rtl::latex_detail
     template<class Out, class WriteTikz>
     void writeTikzDocument(Out &target, float border_cm, WriteTikz &&write_tikz)
     {
-        io_detail::TextOut<Out> os{target};
+        detail::TextOut<Out> os{target};
         os << "\\documentclass{minimal}\n\\usepackage[rgb]{xcolor}\n\\usepackage{tikz}\n"
               "\\usepackage[active,tightpage]{preview}\n\\PreviewEnvironment{tikzpicture}\n"
               "\\setlength\\PreviewBorder{" << number(border_cm < 1e-4f ? 0.0f : border_cm) << "cm}\n\n\\begin{document}\n";

@@ -174,7 +174,7 @@ namespace rtl::LaTeX
     }
 }
 
-namespace rtl::latex_detail
+namespace rtl::detail
 {
     inline constexpr double pi = 3.14159265358979323846;
 

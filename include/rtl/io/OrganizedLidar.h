@@ -57,7 +57,7 @@ namespace rtl
         }
     };
 
-    namespace lidar_detail
+    namespace detail
     {
         inline float leFloat(const unsigned char *b)
         {
@@ -117,12 +117,12 @@ namespace rtl
         for (std::size_t k = 0; k < n; ++k)
         {
             const unsigned char *r = bytes + k * rec;
-            const float x = lidar_detail::leFloat(r), y = lidar_detail::leFloat(r + 4), z = lidar_detail::leFloat(r + 8);
+            const float x = detail::leFloat(r), y = detail::leFloat(r + 4), z = detail::leFloat(r + 8);
             const std::size_t dst = layout == OrganizedLayout::ColumnMajor ? k : (k % cloud.columns) * beams + k / cloud.columns;
             cloud.points[dst] = (x == 0.f && y == 0.f && z == 0.f)
                                     ? VectorND<3, E>::nan()
                                     : VectorND<3, E>(static_cast<E>(x), static_cast<E>(y), static_cast<E>(z));
-            cloud.intensity[dst] = static_cast<E>(lidar_detail::leFloat(r + 12));
+            cloud.intensity[dst] = static_cast<E>(detail::leFloat(r + 12));
         }
         return cloud;
     }

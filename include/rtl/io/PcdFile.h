@@ -111,7 +111,7 @@ namespace rtl
         }
     };
 
-    namespace pcd_detail
+    namespace detail
     {
         //! A little-endian value of the field's type at p, converted to T.
         template<typename T>
@@ -380,14 +380,14 @@ namespace rtl
         cloud.header = parsePcdHeader(bytes, size);
         cloud.width = cloud.header.width;
         cloud.height = cloud.header.height;
-        const pcd_detail::Plan plan = pcd_detail::plan(cloud.header, options);
+        const detail::Plan plan = detail::plan(cloud.header, options);
         try
         {
             switch (cloud.header.data)
             {
-            case PcdDataKind::Ascii: pcd_detail::readAscii(bytes, size, cloud, plan); break;
-            case PcdDataKind::Binary: pcd_detail::readBinary(bytes, size, cloud, plan); break;
-            case PcdDataKind::BinaryCompressed: pcd_detail::readCompressed(bytes, size, cloud, plan); break;
+            case PcdDataKind::Ascii: detail::readAscii(bytes, size, cloud, plan); break;
+            case PcdDataKind::Binary: detail::readBinary(bytes, size, cloud, plan); break;
+            case PcdDataKind::BinaryCompressed: detail::readCompressed(bytes, size, cloud, plan); break;
             }
         }
         catch (const PcdError &e)

@@ -111,7 +111,7 @@ namespace rtl
         }
     };
 
-    namespace pcd_detail
+    namespace detail
     {
         inline std::vector<std::string_view> tokens(std::string_view s)
         {
@@ -193,7 +193,7 @@ namespace rtl
      *  WIDTH may be absent (then width = POINTS, height 1), HEIGHT (1), POINTS (width * height). O(header size). */
     inline PcdHeader parsePcdHeader(const unsigned char *bytes, std::size_t size)
     {
-        using namespace pcd_detail;
+        using namespace detail;
         const std::string_view text(reinterpret_cast<const char *>(bytes), size);
         Seen version, fields, sizes, types, counts, width, height, viewpoint, points;
         PcdHeader h;

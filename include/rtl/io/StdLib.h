@@ -107,7 +107,7 @@ namespace rtl
         return os << node.key() << "   " << node.tf();
     }
 
-    namespace io_detail
+    namespace detail
     {
         template<typename Node>
         void printSubtree(std::ostream &os, const Node &node, size_t level)
@@ -124,7 +124,7 @@ namespace rtl
     std::ostream &operator<<(std::ostream &os, const TfTree<K, T> &tree)
     {
         os << tree.root().key() << "\n";
-        io_detail::printSubtree(os, tree.root(), 1);
+        detail::printSubtree(os, tree.root(), 1);
         return os;
     }
 
@@ -140,7 +140,7 @@ namespace rtl
         return os << "min: " << bb.min() << "   max: " << bb.max();
     }
 
-    namespace io_detail
+    namespace detail
     {
         template<typename Points>
         std::ostream &printPoints(std::ostream &os, const Points &pts)
@@ -155,14 +155,14 @@ namespace rtl
     template<typename Element>
     std::ostream &operator<<(std::ostream &os, const Polygon2D<Element> &p)
     {
-        return io_detail::printPoints(os, p.points());
+        return detail::printPoints(os, p.points());
     }
 
     template<typename Element>
     std::ostream &operator<<(std::ostream &os, const Polygon3D<Element> &p)
     {
         os << "n: " << p.normal() << "   d: " << p.distance() << "   ";
-        return io_detail::printPoints(os, p.points());
+        return detail::printPoints(os, p.points());
     }
 
     template<typename Element>

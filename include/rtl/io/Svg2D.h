@@ -20,7 +20,7 @@
 
 namespace rtl
 {
-    namespace svg_detail
+    namespace detail
     {
         //! Writes one drawing: paper coordinates in cm (1 user unit = 1 cm), y pointing down.
         class SvgWriter
@@ -85,7 +85,7 @@ namespace rtl
             template<class Out>
             void write(Out &target)
             {
-                io_detail::TextOut<Out> os{target};
+                detail::TextOut<Out> os{target};
                 std::string body;
                 if (d.clipped())
                 {
@@ -115,7 +115,7 @@ namespace rtl
 
         private:
             static double finiteOr(double v, double fallback) { return std::isfinite(v) ? v : fallback; }
-            static std::string num(double v) { return latex_detail::number(finiteOr(v, 0)); }
+            static std::string num(double v) { return detail::number(finiteOr(v, 0)); }
             double X(double x) const { return finiteOr((x - left) * f.sx, 0); }
             double Y(double y) const { return finiteOr((top - y) * f.sy, 0); }
             std::string pt(double x, double y) const { return num(X(x)) + "," + num(Y(y)); }
@@ -168,7 +168,7 @@ namespace rtl
                 auto it = arrows.find(color);
                 if (it != arrows.end())
                     return it->second;
-                std::string id = "Arrow" + latex_detail::indexToLetters(arrows.size());
+                std::string id = "Arrow" + detail::indexToLetters(arrows.size());
                 arrows.emplace(color, id);
                 defs += "<marker id=\"" + id + "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"5\" "
                         "markerHeight=\"5\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"" +
@@ -187,11 +187,11 @@ namespace rtl
                     return "<line x1=\"" + num(ax) + "\" y1=\"" + num(ay) + "\" x2=\"" + num(bx) + "\" y2=\"" +
                            num(by) + "\"" + line + "/>";
                 };
-                if (m.templ == latex_detail::tikz_mark_cross)
+                if (m.templ == detail::tikz_mark_cross)
                     g += seg(-r, -r, r, r) + seg(-r, r, r, -r);
-                else if (m.templ == latex_detail::tikz_mark_mark)
+                else if (m.templ == detail::tikz_mark_mark)
                     g += seg(0, -r, 0, r);
-                else if (m.templ == latex_detail::tikz_mark_robot)
+                else if (m.templ == detail::tikz_mark_robot)
                     g += "<circle r=\"" + num(r) + "\"" + filled + "/>" + seg(0, 0, 2 * r, 0);
                 else   // the dot, and user templates (TikZ code SVG cannot run) as dots
                     g += "<circle r=\"" + num(r) + "\"" + filled + "/>";
@@ -218,7 +218,7 @@ namespace rtl
                         for (const auto &m : p.marks)
                         {
                             double dx = static_cast<double>(m.dx) * f.sx, dy = static_cast<double>(m.dy) * f.sy;
-                            double deg = (dx == 0.0 && dy == 0.0) ? 0.0 : std::atan2(dy, dx) * 180.0 / latex_detail::pi;
+                            double deg = (dx == 0.0 && dy == 0.0) ? 0.0 : std::atan2(dy, dx) * 180.0 / detail::pi;
                             out += "<use href=\"#" + p.mark.substr(1) + "\" transform=\"translate(" + pt(m.x, m.y) +
                                    ")" + (deg != 0.0 ? " rotate(" + num(-deg) + ")" : std::string()) + "\"/>\n";
                         }
@@ -247,7 +247,7 @@ namespace rtl
                     case K::ellipse:
                         // Rotated in data units, then scaled to paper: the stroke keeps its width.
                         out += "<ellipse transform=\"translate(" + num(cx) + "," + num(cy) + ") scale(" + num(f.sx) +
-                               "," + num(-f.sy) + ") rotate(" + num(p.a1 * 180.0 / latex_detail::pi) + ")\" rx=\"" +
+                               "," + num(-f.sy) + ") rotate(" + num(p.a1 * 180.0 / detail::pi) + ")\" rx=\"" +
                                num(p.r1) + "\" ry=\"" + num(p.r2) + "\" vector-effect=\"non-scaling-stroke\"" +
                                attributes(s, true) + "/>\n";
                         break;
@@ -266,10 +266,10 @@ namespace rtl
                 auto at = [&](double a) { return num(cx + rx * std::cos(a)) + "," + num(cy - ry * std::sin(a)); };
                 std::string arc = " A" + num(rx) + "," + num(ry) + " 0 ";
                 std::string path = "M" + num(cx) + "," + num(cy) + " L" + at(p.a1);
-                if (std::abs(delta) >= 2 * latex_detail::pi)   // a full turn: two half arcs
-                    path += arc + "1 0 " + at(p.a1 + latex_detail::pi) + arc + "1 0 " + at(p.a1);
+                if (std::abs(delta) >= 2 * detail::pi)   // a full turn: two half arcs
+                    path += arc + "1 0 " + at(p.a1 + detail::pi) + arc + "1 0 " + at(p.a1);
                 else
-                    path += arc + (std::abs(delta) > latex_detail::pi ? "1 " : "0 ") + (delta > 0 ? "0 " : "1 ") + at(p.a2);
+                    path += arc + (std::abs(delta) > detail::pi ? "1 " : "0 ") + (delta > 0 ? "0 " : "1 ") + at(p.a2);
                 out += "<path d=\"" + path + " Z\"" + attributes(s, true) + "/>\n";
             }
 
@@ -369,7 +369,7 @@ namespace rtl
                         double value = log ? std::pow(10.0, v) : v;   // no label beyond double on log axes
                         std::string label = ax.format.empty() || !std::isfinite(value) || (log && !(value > 0))
                                                     ? ""
-                                                    : latex_detail::numberToLatexString(value, ax.format);
+                                                    : detail::numberToLatexString(value, ax.format);
                         if (label.empty())
                             continue;
                         double lx = px, ly = py;
@@ -386,7 +386,7 @@ namespace rtl
                         else if (ax.position & Drawing2D::position_left)
                             lx -= ax.is_x ? 0.0 : 0.05;
                         SvgStyle label_style;
-                        text(labelText(label), label_style, lx, ly, "", out, latex_detail::tikzAnchor(ax.position));
+                        text(labelText(label), label_style, lx, ly, "", out, detail::tikzAnchor(ax.position));
                     }
                 }
             }
@@ -418,18 +418,18 @@ namespace rtl
     }
 
     //! Writes `d` as a standalone SVG: width and height in cm, a viewBox in cm, the same primitives, marks, grids,
-    //! axes, labels and clip region as the TikZ back-end. Styles are translated by svg_detail::parseTikzStyle (draw,
+    //! axes, labels and clip region as the TikZ back-end. Styles are translated by detail::parseTikzStyle (draw,
     //! fill, color, line width and thickness keys, dash patterns, opacities, arrow tips, anchors; colours: xcolor
     //! base names, saveColor specs rgb/RGB/hsb/HTML/gray/cmyk and mixes like red!50!blue); other keys are ignored.
     //! User mark templates (TikZ code) are drawn as dots. Text is XML-escaped (and made valid UTF-8).
     inline void writeSvg(const Drawing2D &d, std::ostream &os)
     {
-        svg_detail::SvgWriter(d).write(os);
+        detail::SvgWriter(d).write(os);
     }
     //! What writeSvg writes, as a string, without any stream.
     inline std::string svgString(const Drawing2D &d)
     {
-        return io_detail::textString([&d](std::string &out) { svg_detail::SvgWriter(d).write(out); });
+        return detail::textString([&d](std::string &out) { detail::SvgWriter(d).write(out); });
     }
 
     //! A Drawing2D with SVG output (the same drawing calls as LaTeXTikz2D).

@@ -32,7 +32,7 @@
 
 namespace rtl
 {
-    namespace svg_detail
+    namespace detail
     {
         //! Writes one Drawing3D as SVG (see the file comment).
         class Svg3DWriter
@@ -44,15 +44,15 @@ namespace rtl
             template<class Out>
             void write(Out &target)
             {
-                io_detail::TextOut<Out> os{target};
+                detail::TextOut<Out> os{target};
                 const Drawing3D::Settings &s = d.settings();
                 const double w = s.export_w, h = s.export_h, b = s.border_cm;
                 std::string body;
                 if (d.hasContent())
                 {
-                    const latex_detail::TikzThinning thin = latex_detail::tikz3dThinning(d);
+                    const detail::TikzThinning thin = detail::tikz3dThinning(d);
                     detail::CameraScene3D cs = detail::cameraScene3D(d, s.clipLo(), s.clipHi(), thin.stride,
-                                                                     0.5 * latex_detail::tex_paper_limit_cm);
+                                                                     0.5 * detail::tex_paper_limit_cm);
                     if (!cs.empty)
                         scene(cs, body);
                 }
@@ -77,7 +77,7 @@ namespace rtl
             }
 
         private:
-            static std::string num(double v) { return latex_detail::number(std::isfinite(v) ? v : 0.0); }
+            static std::string num(double v) { return detail::number(std::isfinite(v) ? v : 0.0); }
             static std::string pt(const detail::Projector3D &P, const Eigen::Vector3d &p)
             {
                 return num(P.x(p)) + "," + num(-P.y(p));
@@ -124,7 +124,7 @@ namespace rtl
                         {
                             const Drawing3D::MarkItem &m = d.marks()[it.ref];
                             const double x = P.x(it.a), y = P.y(it.a);
-                            const double scale = latex_detail::tikz3dMarkScale(m.radius * ref_depth / -it.a.z(), x, y);
+                            const double scale = detail::tikz3dMarkScale(m.radius * ref_depth / -it.a.z(), x, y);
                             const SvgStyle &s = style(m.style);
                             const std::string fill = !s.fill.empty() ? s.fill : !s.stroke.empty() ? s.stroke : "#000000";
                             out += "<circle cx=\"" + num(x) + "\" cy=\"" + num(-y) + "\" r=\"" +
@@ -176,10 +176,10 @@ namespace rtl
                 for (const auto &l : labels)
                 {
                     const Drawing3D::AxisItem &a = d.axes()[l.axis];
-                    if (latex_detail::numberToLatexString(l.value, a.format).empty())
+                    if (detail::numberToLatexString(l.value, a.format).empty())
                         continue;   // as in TikZ: no label where the format gives none
                     out += "<text x=\"" + num(P.x(l.p)) + "\" y=\"" + num(-P.y(l.p)) + "\">" +
-                           xmlEscape(latex_detail::number(l.value)) + "</text>\n";
+                           xmlEscape(detail::number(l.value)) + "</text>\n";
                 }
             }
 
@@ -192,7 +192,7 @@ namespace rtl
     //! The SVG of a 3D scene (the one LaTeXTikz3D::drawing() records); see Svg3D.h's file comment.
     inline std::string svg3DString(const Drawing3D &drawing)
     {
-        svg_detail::Svg3DWriter w(drawing);
+        detail::Svg3DWriter w(drawing);
         std::string out;
         w.write(out);
         return out;

@@ -13,7 +13,7 @@
 
 #include "rtl/io/LaTeXUtility.h"
 
-namespace rtl::svg_detail
+namespace rtl::detail
 {
     struct Rgb
     {
@@ -323,7 +323,7 @@ namespace rtl::svg_detail
     {
         const double pt = 1 / 28.4527559;
         auto pair = [&](double on, double off) {
-            return latex_detail::number(std::max(on, width_cm * 0.5)) + " " + latex_detail::number(off);
+            return detail::number(std::max(on, width_cm * 0.5)) + " " + detail::number(off);
         };
         if (dash.empty())
             return "";

@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-namespace rtl::io_detail
+namespace rtl::detail
 {
     inline void textAppend(std::string &out, const std::string &text) { out += text; }
     inline void textAppend(std::string &out, const char *text) { out += text; }
@@ -16,7 +16,7 @@ namespace rtl::io_detail
     inline void textAppend(std::ostream &out, const char *text) { out << text; }
 }
 
-namespace rtl::io_detail
+namespace rtl::detail
 {
     //! What write(std::string &) appends to an empty string: the writers' string forms.
     template<class Write>

@@ -16,7 +16,7 @@
 
 namespace rtl
 {
-    namespace latex_detail
+    namespace detail
     {
         //! How data coordinates become TikZ coordinates. Normally (`paper` false) the picture works in data units
         //! with the unit vectors `x=<sx>cm, y=<sy>cm`. TeX cannot hold that when a unit vector or a coordinate is out
@@ -287,7 +287,7 @@ namespace rtl
         }
     }
 
-    namespace latex_detail
+    namespace detail
     {
         // (defined below the public overloads)
         template<class Out>
@@ -299,25 +299,25 @@ namespace rtl
     //! Writes only the tikzpicture environment of `d` (colours, macros and marks are local to it), e.g. to `\input` it.
     //! A drawing beyond d.texMarkLimit() is thinned with a note; std::length_error (nothing written) if what cannot be
     //! thinned exceeds it (TikzBudget.h), and if the picture is beyond TeX's dimensions (tikzTexLimits: an extent on
-    //! paper, the mark radius or a mark scale beyond latex_detail::tex_paper_limit_cm, 500 cm). Rotations and arcs
-    //! beyond +-3600 degrees are written modulo 360 (latex_detail::tikzAngle, tikzArc).
-    inline void writeTikzPicture(const Drawing2D &d, std::ostream &os) { latex_detail::writeTikzPictureTo(d, os); }
+    //! paper, the mark radius or a mark scale beyond detail::tex_paper_limit_cm, 500 cm). Rotations and arcs
+    //! beyond +-3600 degrees are written modulo 360 (detail::tikzAngle, tikzArc).
+    inline void writeTikzPicture(const Drawing2D &d, std::ostream &os) { detail::writeTikzPictureTo(d, os); }
     //! What writeTikzPicture writes, as a string, without any stream.
     inline std::string tikzPictureString(const Drawing2D &d)
     {
-        return io_detail::textString([&d](std::string &out) { latex_detail::writeTikzPictureTo(d, out); });
+        return detail::textString([&d](std::string &out) { detail::writeTikzPictureTo(d, out); });
     }
 
     //! writeTikzPicture into a std::ostream or a std::string (TextSink.h).
     template<class Out>
-    void latex_detail::writeTikzPictureTo(const Drawing2D &d, Out &target)
+    void detail::writeTikzPictureTo(const Drawing2D &d, Out &target)
     {
-        io_detail::TextOut<Out> os{target};
-        using latex_detail::number;
+        detail::TextOut<Out> os{target};
+        using detail::number;
         Drawing2D::Frame f = d.frame();
-        latex_detail::TikzMap map = latex_detail::tikzMap(d, f);
-        latex_detail::tikzTexLimits(d, f, map, false);
-        latex_detail::TikzThinning thin = latex_detail::tikzThinning(d, f);
+        detail::TikzMap map = detail::tikzMap(d, f);
+        detail::tikzTexLimits(d, f, map, false);
+        detail::TikzThinning thin = detail::tikzThinning(d, f);
         std::string out;
         out += "\\begin{tikzpicture}[x=" + number(map.paper ? 1.0 : f.sx) + "cm, y=" + number(map.paper ? 1.0 : f.sy) + "cm";
         std::string style_options = d.registry().styleOptions();
@@ -341,14 +341,14 @@ namespace rtl
             std::vector<float> c = d.clipRegion();
             out += "\\clip (" + map.pt(c[0], c[1]) + ") rectangle (" + map.pt(c[2], c[3]) + ");\n";
         }
-        latex_detail::writeTikzGridsAndAxes(d, f, map, out);
+        detail::writeTikzGridsAndAxes(d, f, map, out);
         os << out;
         // Primitives in chunks, so that a figure of millions of points is not held twice in memory.
         out.clear();
         size_t mark_index = 0;
         for (const auto &p : d.primitives())
         {
-            latex_detail::writeTikzPrimitive(p, f, map, thin, mark_index, out);
+            detail::writeTikzPrimitive(p, f, map, thin, mark_index, out);
             if (out.size() > (1u << 16))
             {
                 os << out;
@@ -361,27 +361,27 @@ namespace rtl
             bool below = !d.descriptionX().empty() ||
                          std::any_of(d.axes().begin(), d.axes().end(), [](const Drawing2D::Axis &a) { return a.is_x; });
             out += "\\node[anchor=north west, yshift=" + std::string(below ? "-1.3cm" : "-0.1cm") +
-                   "] at (\\MinX,\\MinY) {" + latex_detail::tikzThinningNote(thin) + "};\n";
+                   "] at (\\MinX,\\MinY) {" + detail::tikzThinningNote(thin) + "};\n";
         }
         os << out << "\\end{tikzpicture}\n";
     }
 
     //! Writes `d` as a standalone LaTeX document (the `minimal` class cropped to the picture by preview). Refused as
     //! writeTikzPicture, and also if the border or the page (picture plus two borders) is beyond 500 cm.
-    inline void writeTikz(const Drawing2D &d, std::ostream &os) { latex_detail::writeTikzTo(d, os); }
+    inline void writeTikz(const Drawing2D &d, std::ostream &os) { detail::writeTikzTo(d, os); }
     //! What writeTikz writes, as a string, without any stream.
     inline std::string tikzString(const Drawing2D &d)
     {
-        return io_detail::textString([&d](std::string &out) { latex_detail::writeTikzTo(d, out); });
+        return detail::textString([&d](std::string &out) { detail::writeTikzTo(d, out); });
     }
 
     //! writeTikz into a std::ostream or a std::string (TextSink.h).
     template<class Out>
-    void latex_detail::writeTikzTo(const Drawing2D &d, Out &os)
+    void detail::writeTikzTo(const Drawing2D &d, Out &os)
     {
         const Drawing2D::Frame f = d.frame();
-        latex_detail::tikzTexLimits(d, f, latex_detail::tikzMap(d, f), true);   // these throw before the preamble
-        latex_detail::tikzThinning(d, f);
-        latex_detail::writeTikzDocument(os, d.border(), [&d](Out &o) { writeTikzPictureTo(d, o); });
+        detail::tikzTexLimits(d, f, detail::tikzMap(d, f), true);   // these throw before the preamble
+        detail::tikzThinning(d, f);
+        detail::writeTikzDocument(os, d.border(), [&d](Out &o) { writeTikzPictureTo(d, o); });
     }
 }

@@ -24,7 +24,7 @@
 
 namespace rtl
 {
-    namespace latex_detail
+    namespace detail
     {
         //! The largest perspective scale of a 3D mark (`\MarkRadius` 0.1 cm * 1000: a dot of 200 cm across).
         inline constexpr double tikz3d_max_mark_scale = 1000.0;
@@ -157,7 +157,7 @@ namespace rtl
         template<class Out>
         void writeTikz3D(const Drawing3D &d, Out &target)
         {
-            io_detail::TextOut<Out> os{target};
+            detail::TextOut<Out> os{target};
             const Drawing3D::Settings &s = d.settings();
             tikz3dTexLimits(d, false);
             const TikzThinning thin = tikz3dThinning(d);

@@ -20,7 +20,7 @@
 
 namespace rtl
 {
-    namespace latex_detail
+    namespace detail
     {
         //! Every stride-th mark (counted over the whole drawing) and every stride-th point of each polyline (and its
         //! last) are written; stride 1 writes everything.

@@ -95,8 +95,8 @@ namespace rtl
         //! Segments a closed scan, replacing any clusters not grabbed yet.
         void loadData(const std::vector<VectorType> &points, const VectorType &origin = VectorType::zeros())
         {
-            seg_detail::checkParameters<ElementType>("CAR_Segmenter::loadData", lower_, upper_,
-                                                     seg_detail::isFinite<D>(origin.data().data()));
+            detail::checkParameters<ElementType>("CAR_Segmenter::loadData", lower_, upper_,
+                                                     detail::isFinite<D>(origin.data().data()));
             out_.clear();
             pieces_.clear();
             next_ = 0;
@@ -106,7 +106,7 @@ namespace rtl
             // 2D scans at step >= 2 fill it in the pass that reads the points anyway (neighbourFlags).
             if (D != 2 || step_ == 1 || traced) store_.assign(points.begin(), points.end());
             else store_.resize(points.size());
-            const ElementType scaling = seg_detail::circularScaling<ElementType>(step_, points.size());
+            const ElementType scaling = detail::circularScaling<ElementType>(step_, points.size());
             if constexpr (traced)
                 if (observer_)
                 {
@@ -176,7 +176,7 @@ namespace rtl
         void segmentAlone(const std::vector<VectorType> &pts)
         {
             for (size_t i = 0; i < pts.size(); ++i)
-                if (seg_detail::isFinite<D>(ptr(pts[i])))
+                if (detail::isFinite<D>(ptr(pts[i])))
                 {
                     out_.push_back(Cluster{pieces_.size(), pieces_.size() + 1, 1});
                     pieces_.push_back(Piece{i, i + 1});
@@ -184,7 +184,7 @@ namespace rtl
         }
 
         // flags_[i]: bit 0 = point i is valid, bit 1 = it meets the criterion with point i - 1 (i >= 1).
-        void neighbourFlags(const std::vector<VectorType> &pts, const VectorType &origin, const seg_detail::SquaredThreshold<ElementType> &thr)
+        void neighbourFlags(const std::vector<VectorType> &pts, const VectorType &origin, const detail::SquaredThreshold<ElementType> &thr)
         {
             // With a finite squared upper bound, a pair with a non-finite coordinate never links, without the
             // validity tests: that coordinate's difference is NaN or infinite, so the squared distance is NaN or
@@ -196,14 +196,14 @@ namespace rtl
         }
 
         template<bool CheckPrevious>
-        void neighbourFlagPass(const std::vector<VectorType> &pts, const VectorType &origin, const seg_detail::SquaredThreshold<ElementType> &thr)
+        void neighbourFlagPass(const std::vector<VectorType> &pts, const VectorType &origin, const detail::SquaredThreshold<ElementType> &thr)
         {
             const size_t n = pts.size();
             ElementType o[D];
             for (int k = 0; k < D; ++k) o[k] = origin.data()[k];
             flags_.resize(n);
             unsigned char *f = flags_.data();
-            f[0] = seg_detail::isFinite<D>(ptr(pts[0])) ? 1 : 0;
+            f[0] = detail::isFinite<D>(ptr(pts[0])) ? 1 : 0;
             // Branch-free loops, so that the compiler vectorises them. 2D points are loaded as they are; other
             // dimensions are transposed block-wise to one array per coordinate first (the compiler does not
             // vectorise loads with a 3-element stride).
@@ -325,7 +325,7 @@ namespace rtl
         void segmentNeighbours(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
             const size_t n = pts.size();
-            neighbourFlags(pts, origin, seg_detail::SquaredThreshold<ElementType>(scaling, lower_, upper_));
+            neighbourFlags(pts, origin, detail::SquaredThreshold<ElementType>(scaling, lower_, upper_));
             const unsigned char *f = flags_.data();
             run_begin_.clear();
             run_end_.clear();
@@ -363,14 +363,14 @@ namespace rtl
         {
             const size_t n = pts.size(), s = step_ - 1;
             const ElementType *o = ptr(origin);
-            const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
+            const detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
             tsq_.resize(n);
             parent_.resize(n);
             for (size_t i = 0; i < n; ++i)
             {
                 const ElementType *p = ptr(pts[i]);
-                tsq_[i] = thr(seg_detail::squaredDistance<D>(p, o));
-                parent_[i] = seg_detail::isFinite<D>(p) ? i : none;
+                tsq_[i] = thr(detail::squaredDistance<D>(p, o));
+                parent_[i] = detail::isFinite<D>(p) ? i : none;
             }
 
             for (size_t i = 0; i < n; ++i)
@@ -384,7 +384,7 @@ namespace rtl
                 if constexpr (traced)
                     if (observer_)
                     {
-                        const double range = std::sqrt(static_cast<double>(seg_detail::squaredDistance<D>(p, o)));
+                        const double range = std::sqrt(static_cast<double>(detail::squaredDistance<D>(p, o)));
                         (*observer_)(car_trace::Threshold{i, range, std::abs(static_cast<double>(scaling)) * range,
                                                           std::sqrt(static_cast<double>(tsq_[i]))});
                     }
@@ -393,9 +393,9 @@ namespace rtl
                 {
                     const size_t j = i - k, pj = parent_[j];
                     if constexpr (traced)
-                        if (observer_ && pj != none) reportComparison<car_trace::Compare>(i, j, seg_detail::squaredDistance<D>(p, ptr(pts[j])), tsq_[i]);
+                        if (observer_ && pj != none) reportComparison<car_trace::Compare>(i, j, detail::squaredDistance<D>(p, ptr(pts[j])), tsq_[i]);
                     // pj == root: j is already in i's cluster (the usual case inside a cluster), no need to look
-                    if (pj == none || pj == root || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tsq_[i])) continue;
+                    if (pj == none || pj == root || !(detail::squaredDistance<D>(p, ptr(pts[j])) <= tsq_[i])) continue;
                     const size_t r = find(j);
                     if (root == none)
                     {
@@ -430,7 +430,7 @@ namespace rtl
         void segmentRuns(const std::vector<VectorType> &pts, const VectorType &origin, ElementType scaling)
         {
             const size_t n = pts.size(), s = step_ - 1;
-            const seg_detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
+            const detail::SquaredThreshold<ElementType> thr(scaling, lower_, upper_);
             const ElementType *o = ptr(origin);
             neighbourFlags(pts, origin, thr);
             const unsigned char *f = flags_.data();
@@ -458,13 +458,13 @@ namespace rtl
                 for (size_t q = b; q < qend; ++q)
                 {
                     const ElementType *p = ptr(pts[q]);
-                    const ElementType tq = thr(seg_detail::squaredDistance<D>(p, o));
+                    const ElementType tq = thr(detail::squaredDistance<D>(p, o));
                     if (!anyWithin(pts.data(), q >= s ? q - s : 0, b, p, tq)) continue;
                     size_t rj = r;   // the run holding j, found walking back (j decreases)
                     for (size_t k = q - b + 1; k <= s && k <= q; ++k)
                     {
                         const size_t j = q - k;
-                        if (!(f[j] & 1u) || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tq)) continue;
+                        if (!(f[j] & 1u) || !(detail::squaredDistance<D>(p, ptr(pts[j])) <= tq)) continue;
                         while (run_begin_[rj] > j) --rj;
                         unite(r, rj);
                     }
@@ -479,13 +479,13 @@ namespace rtl
                 if (!(f[i] & 1u)) continue;
                 while (run_end_[ri] <= i) ++ri;
                 const ElementType *p = ptr(pts[i]);
-                const ElementType tq = thr(seg_detail::squaredDistance<D>(p, o));
+                const ElementType tq = thr(detail::squaredDistance<D>(p, o));
                 size_t rj = runs - 1;
                 for (size_t k = i + 1; k <= s; ++k)
                 {
                     const size_t j = i + n - k;
                     if (j <= i) break;
-                    if (!(f[j] & 1u) || !(seg_detail::squaredDistance<D>(p, ptr(pts[j])) <= tq)) continue;
+                    if (!(f[j] & 1u) || !(detail::squaredDistance<D>(p, ptr(pts[j])) <= tq)) continue;
                     while (run_begin_[rj] > j) --rj;
                     unite(ri, rj);
                 }
@@ -511,7 +511,7 @@ namespace rtl
         //! bound of each pair's distance, also in rounded arithmetic). Gaps' NaN coordinates are ignored by the
         //! comparisons; their infinities only widen a box.
         static bool boxesWithin(const VectorType *v, size_t jlo, size_t b, size_t qend,
-                                const seg_detail::SquaredThreshold<ElementType> &thr, const ElementType *o)
+                                const detail::SquaredThreshold<ElementType> &thr, const ElementType *o)
         {
             ElementType qlo[D], qhi[D], jl[D], jh[D], tmax = ElementType(0);
             for (int k = 0; k < D; ++k)
@@ -521,7 +521,7 @@ namespace rtl
             }
             for (size_t q = b; q < qend; ++q)
             {
-                const ElementType *p = ptr(v[q]), t = thr(seg_detail::squaredDistance<D>(p, o));
+                const ElementType *p = ptr(v[q]), t = thr(detail::squaredDistance<D>(p, o));
                 tmax = t > tmax ? t : tmax;
                 for (int k = 0; k < D; ++k)
                 {
@@ -553,7 +553,7 @@ namespace rtl
         {
             const ElementType t = widened(tsq);
             bool any = false;
-            for (size_t j = jlo; j < jhi; ++j) any |= seg_detail::squaredDistance<D>(p, ptr(v[j])) <= t;
+            for (size_t j = jlo; j < jhi; ++j) any |= detail::squaredDistance<D>(p, ptr(v[j])) <= t;
             return any;
         }
 
@@ -612,12 +612,12 @@ namespace rtl
                     if constexpr (traced)
                         if (observer_ && parent_[j] != none)
                         {
-                            const ElementType dsq = seg_detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j]));
+                            const ElementType dsq = detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j]));
                             reportComparison<car_trace::Seam>(i, j, dsq, tsq_[i]);
                             const size_t a = find(i), b = find(j);
                             if (dsq <= tsq_[i] && a != b) (*observer_)(car_trace::Merge{i, j, std::max(a, b), std::min(a, b)});
                         }
-                    if (parent_[j] != none && seg_detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j])) <= tsq_[i]) unite(i, j);
+                    if (parent_[j] != none && detail::squaredDistance<D>(ptr(pts[i]), ptr(pts[j])) <= tsq_[i]) unite(i, j);
                 }
             }
 
@@ -666,13 +666,13 @@ namespace rtl
         {
             double distance, threshold;
             const bool linked = dsq <= tsq;
-            seg_detail::traceDistances(static_cast<double>(dsq), static_cast<double>(tsq), linked, distance, threshold);
+            detail::traceDistances(static_cast<double>(dsq), static_cast<double>(tsq), linked, distance, threshold);
             (*observer_)(Event{i, j, distance, threshold, linked});
         }
 
         bool closeTo(const VectorType &earlier, const VectorType &later, const VectorType &origin, ElementType scaling) const
         {
-            return seg_detail::meetsCriterion(earlier, later, origin, scaling, lower_, upper_);
+            return detail::meetsCriterion(earlier, later, origin, scaling, lower_, upper_);
         }
 
         size_t find(size_t x)

@@ -70,7 +70,7 @@
 
 namespace rtl
 {
-    namespace seg_detail
+    namespace detail
     {
         //! IA_Segmenter's window test in 16-byte vectors (GCC/Clang vector extensions, any target: SSE2, AVX, NEON,
         //! wasm simd128 or scalar code); n = 0 (no vector test) for other element types and compilers.
@@ -170,7 +170,7 @@ namespace rtl
                 {
                     std::vector<VectorType> &v = *lists_.tail;
                     // likely: the join is then straight-line code in the caller's loop, not a jump out and back
-                    if (RTL_SEG_LIKELY(seg_detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq)))
+                    if (RTL_SEG_LIKELY(detail::squaredDistance<D>(pt.data().data(), v.back().data().data()) <= thr_(rsq)))
                     {
                         v.push_back(pt);
                         return;
@@ -307,7 +307,7 @@ namespace rtl
             for (size_t w = 0; w < step_; ++w)
             {
                 const size_t r = wrec_[w];
-                if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
+                if (r == none || r == rec || !(detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
                 rec = rec == none ? r : merge(rec, r);
             }
             return rec;
@@ -351,8 +351,8 @@ namespace rtl
                     {
                         const size_t r = wrec_[w];
                         if (observer_ && r != none)
-                            reportComparison(stream_, widx_[w], seg_detail::squaredDistance<D>(p, wpts_[w].data().data()), tsq);
-                        if (r == none || r == rec || !(seg_detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
+                            reportComparison(stream_, widx_[w], detail::squaredDistance<D>(p, wpts_[w].data().data()), tsq);
+                        if (r == none || r == rec || !(detail::squaredDistance<D>(p, wpts_[w].data().data()) <= tsq)) continue;
                         if (observer_)
                         {
                             if (rec == none) (*observer_)(ia_trace::Link{stream_, widx_[w], lists_.recs[r].id});
@@ -633,9 +633,9 @@ namespace rtl
 
         void checkParameters()
         {
-            seg_detail::checkParameters<ElementType>("IA_Segmenter::addPoint", lower_, upper_, true);
+            detail::checkParameters<ElementType>("IA_Segmenter::addPoint", lower_, upper_, true);
             if (scaling_ != scaling_) throw std::invalid_argument("IA_Segmenter::addPoint: the scaling must not be NaN");
-            thr_ = seg_detail::SquaredThreshold<ElementType>(scaling_, lower_, upper_);
+            thr_ = detail::SquaredThreshold<ElementType>(scaling_, lower_, upper_);
             checked_ = true;
         }
 
@@ -667,8 +667,8 @@ namespace rtl
             const size_t prev = wrec_[0];
             if constexpr (traced)
                 if (observer_ && valid && prev != none)
-                    reportComparison(stream_, stream_ - 1, seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()), thr_(rsq));
-            if (valid && prev != none && seg_detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
+                    reportComparison(stream_, stream_ - 1, detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()), thr_(rsq));
+            if (valid && prev != none && detail::squaredDistance<D>(pt.data().data(), wpts_[0].data().data()) <= thr_(rsq))
             {
                 if constexpr (traced)
                     if (observer_)
@@ -817,7 +817,7 @@ namespace rtl
         {
             double distance, threshold;
             const bool linked = dsq <= tsq;
-            seg_detail::traceDistances(static_cast<double>(dsq), static_cast<double>(tsq), linked, distance, threshold);
+            detail::traceDistances(static_cast<double>(dsq), static_cast<double>(tsq), linked, distance, threshold);
             (*observer_)(ia_trace::Compare{i, j, distance, threshold, linked});
         }
 
@@ -927,9 +927,9 @@ namespace rtl
         }
 
         ElementType lower_ = ElementType(0), upper_ = std::numeric_limits<ElementType>::infinity();
-        ElementType scaling_ = seg_detail::circularScaling<ElementType>(1, 360);
+        ElementType scaling_ = detail::circularScaling<ElementType>(1, 360);
         bool checked_ = false;                                    // parameters validated since the last setter
-        seg_detail::SquaredThreshold<ElementType> thr_{0, 0, 0};
+        detail::SquaredThreshold<ElementType> thr_{0, 0, 0};
 
         // window: a ring of step_ slots, count_ of them used, head_ the oldest; wrec_ is none for gaps and free slots
         // (mutable: untail(), called by the const aliveClusters(), moves the window back into the ring)
@@ -939,7 +939,7 @@ namespace rtl
         mutable std::vector<size_t> wrec_, widx_;                 // widx_ unused at step 1: its point is stream_ - 1
         // the window again, per coordinate (wc_[k * pad_ + slot]; NaN for gaps, free and padding slots), and the
         // slots' records as same-width integers, so that linkSameRecord vectorises
-        typedef seg_detail::WindowLanes<ElementType> Lanes;
+        typedef detail::WindowLanes<ElementType> Lanes;
         typedef typename Lanes::Tag Tag;
         static constexpr size_t lanes = Lanes::n;
         // linkSameRecord's tag of a slot's record: odd, distinct for distinct records (record indices < 2^31)

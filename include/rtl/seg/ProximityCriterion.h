@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace rtl::seg_detail
+namespace rtl::detail
 {
     //! Squared distance of two D-element arrays, summed in coordinate order.
     template<int D, typename E>

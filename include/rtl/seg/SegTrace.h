@@ -229,7 +229,7 @@ namespace rtl
         };
     }
 
-    namespace seg_detail
+    namespace detail
     {
         //! The distance and threshold reported for a comparison of squared values (linked = dsq <= tsq): their square
         //! roots, with the distance nudged above the threshold in the rare case that the square roots of two

@@ -10,32 +10,32 @@
 #include "rtl/Core.h"
 #include "rtl/Transformation.h"
 
-namespace rtl::test
+namespace rtl::detail
 {
-    namespace tester_detail
+    //! Calls f(std::integral_constant<int, i>) for i = from..to.
+    template<int from, int to, typename F>
+    void forRange(F &&f)
     {
-        //! Calls f(std::integral_constant<int, i>) for i = from..to.
-        template<int from, int to, typename F>
-        void forRange(F &&f)
+        if constexpr (from <= to)
         {
-            if constexpr (from <= to)
-            {
-                f(std::integral_constant<int, from>{});
-                forRange<from + 1, to>(f);
-            }
-        }
-        //! Calls f(type_identity<T>) for each T in reverse order.
-        template<typename T> struct TypeTag { using type = T; };
-        template<typename F>
-        void forTypesReversed(F &&) {}
-        template<typename T, typename... Ts, typename F>
-        void forTypesReversed(F &&f)
-        {
-            forTypesReversed<Ts...>(f);
-            f(TypeTag<T>{});
+            f(std::integral_constant<int, from>{});
+            forRange<from + 1, to>(f);
         }
     }
+    //! Calls f(type_identity<T>) for each T in reverse order.
+    template<typename T> struct TypeTag { using type = T; };
+    template<typename F>
+    void forTypesReversed(F &&) {}
+    template<typename T, typename... Ts, typename F>
+    void forTypesReversed(F &&f)
+    {
+        forTypesReversed<Ts...>(f);
+        f(TypeTag<T>{});
+    }
+}  // namespace rtl::detail
 
+namespace rtl::test
+{
     //! Tester<T>::testFunction(args...) for T in reverse(TestedTypes).
     template<template<typename> class Tester, typename... TestedTypes>
     class Types
@@ -44,7 +44,7 @@ namespace rtl::test
         template<typename... A>
         explicit Types(A... args)
         {
-            tester_detail::forTypesReversed<TestedTypes...>([&](auto t) { Tester<typename decltype(t)::type>::testFunction(args...); });
+            detail::forTypesReversed<TestedTypes...>([&](auto t) { Tester<typename decltype(t)::type>::testFunction(args...); });
         }
     };
 
@@ -56,8 +56,8 @@ namespace rtl::test
         template<typename... A>
         explicit RangeTypes(A... args)
         {
-            tester_detail::forTypesReversed<Types...>([&](auto t) {
-                tester_detail::forRange<r_min, r_max>([&](auto r) { Tester<decltype(r)::value, typename decltype(t)::type>::testFunction(args...); });
+            detail::forTypesReversed<Types...>([&](auto t) {
+                detail::forRange<r_min, r_max>([&](auto r) { Tester<decltype(r)::value, typename decltype(t)::type>::testFunction(args...); });
             });
         }
     };
@@ -74,9 +74,9 @@ namespace rtl::test
             template<typename... A>
             explicit with(A... args)
             {
-                tester_detail::forTypesReversed<Types2...>([&](auto t2) {
-                    tester_detail::forTypesReversed<Types...>([&](auto t) {
-                        tester_detail::forRange<r_min, r_max>([&](auto r) {
+                detail::forTypesReversed<Types2...>([&](auto t2) {
+                    detail::forTypesReversed<Types...>([&](auto t) {
+                        detail::forRange<r_min, r_max>([&](auto r) {
                             Tester<decltype(r)::value, typename decltype(t)::type, typename decltype(t2)::type>::testFunction(args...);
                         });
                     });
@@ -93,9 +93,9 @@ namespace rtl::test
         template<typename... A>
         explicit RangeRangeTypes(A... args)
         {
-            tester_detail::forTypesReversed<Types...>([&](auto t) {
-                tester_detail::forRange<r1_min, r1_max>([&](auto r1) {
-                    tester_detail::forRange<r2_min, r2_max>([&](auto r2) {
+            detail::forTypesReversed<Types...>([&](auto t) {
+                detail::forRange<r1_min, r1_max>([&](auto r1) {
+                    detail::forRange<r2_min, r2_max>([&](auto r2) {
                         Tester<decltype(r1)::value, decltype(r2)::value, typename decltype(t)::type>::testFunction(args...);
                     });
                 });

@@ -46,19 +46,23 @@ namespace rtl::test
         static std::string description() { return "std::string"; }
     };
 
-    namespace details_detail
-    {
-        inline std::string nd(const char *name, int d, const std::string &element)
-        {
-            return std::string("rtl::") + name + "<" + std::to_string(d) + ", " + element + ">";
-        }
-        template<typename T, typename... Ts>
-        std::string joined()
-        {
-            return (type<T>::description() + ... + (", " + type<Ts>::description()));
-        }
-    }
+}  // namespace rtl::test
 
+namespace rtl::detail
+{
+    inline std::string nd(const char *name, int d, const std::string &element)
+    {
+        return std::string("rtl::") + name + "<" + std::to_string(d) + ", " + element + ">";
+    }
+    template<typename T, typename... Ts>
+    std::string joined()
+    {
+        return (test::type<T>::description() + ... + (", " + test::type<Ts>::description()));
+    }
+}  // namespace rtl::detail
+
+namespace rtl::test
+{
     template<int r, int c, typename E> struct type<rtl::Matrix<r, c, E>>
     {
         static constexpr E allowedError() { return static_cast<E>(r * c * type<E>::allowedError()); }
@@ -70,7 +74,7 @@ namespace rtl::test
     template<int d, typename E> struct type<rtl::VectorND<d, E>>
     {
         static constexpr E allowedError() { return static_cast<E>(d * type<E>::allowedError()); }
-        static std::string description() { return details_detail::nd("VectorND", d, type<E>::description()); }
+        static std::string description() { return detail::nd("VectorND", d, type<E>::description()); }
     };
     template<typename T> struct type<rtl::Quaternion<T>>
     {
@@ -78,31 +82,31 @@ namespace rtl::test
     };
     template<int d, typename E> struct type<rtl::LineSegmentND<d, E>>
     {
-        static std::string description() { return details_detail::nd("LineSegmentND", d, type<E>::description()); }
+        static std::string description() { return detail::nd("LineSegmentND", d, type<E>::description()); }
     };
     template<int d, typename E> struct type<rtl::BoundingBoxND<d, E>>
     {
-        static std::string description() { return details_detail::nd("BoundingBoxND", d, type<E>::description()); }
+        static std::string description() { return detail::nd("BoundingBoxND", d, type<E>::description()); }
     };
     template<int d, typename E> struct type<rtl::RotationND<d, E>>
     {
-        static std::string description() { return details_detail::nd("RotationND", d, type<E>::description()); }
+        static std::string description() { return detail::nd("RotationND", d, type<E>::description()); }
     };
     template<int d, typename E> struct type<rtl::TranslationND<d, E>>
     {
-        static std::string description() { return details_detail::nd("TranslationND", d, type<E>::description()); }
+        static std::string description() { return detail::nd("TranslationND", d, type<E>::description()); }
     };
     template<int d, typename E> struct type<rtl::RigidTfND<d, E>>
     {
-        static std::string description() { return details_detail::nd("RigidTfND", d, type<E>::description()); }
+        static std::string description() { return detail::nd("RigidTfND", d, type<E>::description()); }
     };
     template<typename T, typename... Tfs> struct type<rtl::GeneralTf<T, Tfs...>>
     {
-        static std::string description() { return "rtl::GeneralTf<" + details_detail::joined<T, Tfs...>() + ">"; }
+        static std::string description() { return "rtl::GeneralTf<" + detail::joined<T, Tfs...>() + ">"; }
     };
     template<typename T, typename... Ts> struct type<rtl::VariantResultType<T, Ts...>>
     {
-        static std::string description() { return "rtl::VariantResultType<" + details_detail::joined<T, Ts...>() + ">"; }
+        static std::string description() { return "rtl::VariantResultType<" + detail::joined<T, Ts...>() + ">"; }
     };
     template<typename T> struct type<rtl::Polygon2D<T>>
     {

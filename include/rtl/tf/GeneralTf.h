@@ -22,7 +22,7 @@
 
 namespace rtl
 {
-    namespace tf_detail
+    namespace detail
     {
         template<typename T, typename = void> struct HasIdentity : std::false_type {};
         template<typename T> struct HasIdentity<T, std::void_t<decltype(T::identity())>> : std::true_type {};
@@ -53,11 +53,11 @@ namespace rtl
     class GeneralTf
     {
         static_assert(sizeof...(Tfs) > 0, "GeneralTf needs at least one alternative.");
-        static_assert(tf_detail::all_distinct<Tfs...>::value, "GeneralTf alternatives must be distinct.");
+        static_assert(detail::all_distinct<Tfs...>::value, "GeneralTf alternatives must be distinct.");
         template<typename... Os> friend class GeneralTf;
 
         using VariantType = std::variant<Tfs...>;
-        template<typename T> static constexpr bool is_alternative = tf_detail::is_one_of_v<T, Tfs...>;
+        template<typename T> static constexpr bool is_alternative = detail::is_one_of_v<T, Tfs...>;
 
     public:
         template<size_t I> using AlternativeType = std::variant_alternative_t<I, VariantType>;
@@ -97,9 +97,9 @@ namespace rtl
         //! Inverts the held alternative in place; throws std::bad_variant_access if it has no invert().
         void invert()
         {
-            static_assert((tf_detail::HasInvert<Tfs>::value || ...), "No alternative of this GeneralTf is invertible.");
+            static_assert((detail::HasInvert<Tfs>::value || ...), "No alternative of this GeneralTf is invertible.");
             std::visit([](auto &t) {
-                if constexpr (tf_detail::HasInvert<std::decay_t<decltype(t)>>::value)
+                if constexpr (detail::HasInvert<std::decay_t<decltype(t)>>::value)
                     t.invert();
                 else
                     throw std::bad_variant_access();
@@ -117,11 +117,11 @@ namespace rtl
         auto operator()(const T &obj) const
         {
             using Result = VariantResultOTsStripped<T, Tfs...>;
-            static_assert(tf_detail::VariantSize<VariantResultOTs<T, Tfs...>>::value > 0,
+            static_assert(detail::VariantSize<VariantResultOTs<T, Tfs...>>::value > 0,
                           "No alternative of this GeneralTf can transform the object.");
             return std::visit([&obj](const auto &tf) -> Result {
                 using Tf = std::decay_t<decltype(tf)>;
-                if constexpr (!std::is_void_v<tf_detail::TransformedOrVoid_t<T, Tf>>)
+                if constexpr (!std::is_void_v<detail::TransformedOrVoid_t<T, Tf>>)
                     return Result(obj.transformed(tf));
                 else
                     throw std::bad_variant_access();
@@ -162,7 +162,7 @@ namespace rtl
         //! identity() of the first alternative that has one.
         static GeneralTf identity()
         {
-            constexpr size_t i = firstIndex<tf_detail::HasIdentity>();
+            constexpr size_t i = firstIndex<detail::HasIdentity>();
             static_assert(i < sizeof...(Tfs), "No alternative of this GeneralTf has identity().");
             return GeneralTf(AlternativeType<i>::identity());
         }
@@ -205,7 +205,7 @@ namespace rtl
         template<typename Inner, typename Outer>
         static GeneralTf compose(const Inner &inner, const Outer &outer)
         {
-            using R = tf_detail::TransformedOrVoid_t<Inner, Outer>;
+            using R = detail::TransformedOrVoid_t<Inner, Outer>;
             if constexpr (is_alternative<R>)
                 return GeneralTf(inner.transformed(outer));
             else
@@ -234,24 +234,24 @@ namespace rtl
         static constexpr bool canRandom()
         {
             using Alt = AlternativeType<I>;
-            using El = typename tf_detail::ElementOf<Alt>::type;
+            using El = typename detail::ElementOf<Alt>::type;
             if constexpr (std::is_void_v<El>)
-                return tf_detail::HasRandom<Alt, G>::value;
+                return detail::HasRandom<Alt, G>::value;
             else
-                return tf_detail::HasRandom<Alt, tf_detail::CastingGenerator<El, G>>::value;
+                return detail::HasRandom<Alt, detail::CastingGenerator<El, G>>::value;
         }
 
         template<size_t I, class G>
         static GeneralTf randomAlternative(const G &gen)
         {
             using Alt = AlternativeType<I>;
-            using El = typename tf_detail::ElementOf<Alt>::type;
+            using El = typename detail::ElementOf<Alt>::type;
             if constexpr (!canRandom<I, G>())
                 throw std::invalid_argument("GeneralTf::random: the drawn alternative has no random()");
             else if constexpr (std::is_void_v<El>)
                 return GeneralTf(Alt::random(gen));
             else
-                return GeneralTf(Alt::random(tf_detail::CastingGenerator<El, G>{gen}));
+                return GeneralTf(Alt::random(detail::CastingGenerator<El, G>{gen}));
         }
 
         template<class G, size_t... I>

@@ -158,7 +158,7 @@ namespace rtl
             using EM = typename MatrixType::EigenType;
             const Element eps = std::numeric_limits<Element>::epsilon();
             EV u1, bh;   // unit directions, computed without overflow for elements near the type's limits
-            if (!tf_detail::unitDirection(a, u1) || !tf_detail::unitDirection(b, bh))
+            if (!detail::unitDirection(a, u1) || !detail::unitDirection(b, bh))
                 return EM::Identity();
             EV w = bh - u1.dot(bh) * u1;
             w -= u1.dot(w) * u1;                 // second Gram-Schmidt pass keeps u2 orthogonal to u1 for tiny angles
@@ -242,7 +242,7 @@ namespace rtl
             // Unit directions first: the cross and dot products of raw elements near 1e30 (float) overflow to inf
             // and atan2(inf - inf, ...) is NaN.
             typename VectorType::EigenType a, b;
-            if (!tf_detail::unitDirection(v1.data(), a) || !tf_detail::unitDirection(v2.data(), b))
+            if (!detail::unitDirection(v1.data(), a) || !detail::unitDirection(v2.data(), b))
             {
                 setAngle(Element(0));
                 return;
@@ -301,7 +301,7 @@ namespace rtl
         void setRot(const VectorType &v1, const VectorType &v2)
         {
             EigenVector a, b;   // (Eigen normalises through the squared norm, which overflows near the limits)
-            if (!tf_detail::unitDirection(v1.data(), a) || !tf_detail::unitDirection(v2.data(), b))
+            if (!detail::unitDirection(v1.data(), a) || !detail::unitDirection(v2.data(), b))
             {
                 setQuaternion(Eigen::Quaternion<Element>::Identity());
                 return;
@@ -337,7 +337,7 @@ namespace rtl
         void setAngleAxis(Element angle, const VectorND<3, Element> &axis)
         {
             EigenVector unit;
-            if (!tf_detail::unitDirection(axis.data(), unit))
+            if (!detail::unitDirection(axis.data(), unit))
                 int_aa = Eigen::AngleAxis<Element>(Element(0), EigenVector::UnitX());
             else
                 int_aa = Eigen::AngleAxis<Element>(angle, unit);
@@ -353,7 +353,7 @@ namespace rtl
         void setQuaternion(const Eigen::Quaternion<Element> &q)
         {
             typename Eigen::Quaternion<Element>::Coefficients c;
-            const Eigen::Quaternion<Element> u = tf_detail::unitDirection(q.coeffs(), c) ? Eigen::Quaternion<Element>(c)
+            const Eigen::Quaternion<Element> u = detail::unitDirection(q.coeffs(), c) ? Eigen::Quaternion<Element>(c)
                                                                                       : Eigen::Quaternion<Element>::Identity();
             this->int_rot_mat.data() = u.toRotationMatrix();
             int_aa = Eigen::AngleAxis<Element>(u);

@@ -17,7 +17,7 @@
 
 namespace rtl
 {
-    namespace tf_detail
+    namespace detail
     {
         //! Whether tf(x) is well-formed: for a GeneralTf, some alternative must be able to transform X.
         template<typename Tf, typename X>
@@ -74,10 +74,10 @@ namespace rtl
             if (tfs.empty())
                 throw std::out_of_range("TfChain: cannot apply an empty chain");
             auto it = tfs.begin();
-            Result current = tf_detail::applyInto<Result>(*it, obj);
+            Result current = detail::applyInto<Result>(*it, obj);
             for (++it; it != tfs.end(); ++it)
             {
-                Result next = tf_detail::applyInto<Result>(*it, current);
+                Result next = detail::applyInto<Result>(*it, current);
                 current = std::move(next);
             }
             return current;

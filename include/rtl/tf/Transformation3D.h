@@ -37,7 +37,7 @@ namespace rtl
         Transformation3D(const Quaternion<Element> &quat, const VectorType &shift) : int_tr(shift.data())
         {
             typename EQ::Coefficients c;
-            int_q = tf_detail::unitDirection(quat.data().coeffs(), c) ? EQ(c) : EQ::Identity();
+            int_q = detail::unitDirection(quat.data().coeffs(), c) ? EQ(c) : EQ::Identity();
         }
         //! Rx(roll) Ry(pitch) Rz(yaw), then `shift`.
         Transformation3D(ElementType roll, ElementType pitch, ElementType yaw, const VectorType &shift)
@@ -68,7 +68,7 @@ namespace rtl
         void setAngleAxis(Element angle, const VectorType &axis)
         {
             EV unit;
-            int_q = tf_detail::unitDirection(axis.data(), unit) ? EQ(Eigen::AngleAxis<Element>(angle, unit)) : EQ::Identity();
+            int_q = detail::unitDirection(axis.data(), unit) ? EQ(Eigen::AngleAxis<Element>(angle, unit)) : EQ::Identity();
         }
         void setTranslation(const VectorType &shift) { int_tr = shift.data(); }
         void setTranslationX(Element x) { int_tr[0] = x; }

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace rtl::tf_detail
+namespace rtl::detail
 {
     //! Writes v / |v| into unit and returns true; returns false (unit untouched) for a zero or non-finite v.
     template<class EigenVector>

@@ -19,7 +19,7 @@ namespace rtl
     template<typename... Tfs> class GeneralTf;
     template<typename... Res> class VariantResultType;
 
-    namespace tf_detail
+    namespace detail
     {
         template<typename T, typename... Ts>
         constexpr bool is_one_of_v = (std::is_same_v<T, Ts> || ...);
@@ -53,12 +53,12 @@ namespace rtl
     template<typename... Known, typename T, typename... Ts>
     struct Unique<VariantResultType<Known...>, T, Ts...>
     {
-        using type = typename std::conditional_t<std::is_void_v<T> || tf_detail::is_one_of_v<T, Known...>,
+        using type = typename std::conditional_t<std::is_void_v<T> || detail::is_one_of_v<T, Known...>,
                                                  Unique<VariantResultType<Known...>, Ts...>,
                                                  Unique<VariantResultType<Known..., T>, Ts...>>::type;
     };
 
-    namespace tf_detail
+    namespace detail
     {
         //! Union of several result sets, in first-appearance order.
         template<typename Acc, typename... Sets> struct UnionOf { using type = Acc; };
@@ -71,11 +71,11 @@ namespace rtl
 
     //! The set of types obtained by transforming an Obj with any one of Tfs.
     template<typename Obj, typename... Tfs>
-    using VariantResultOTs = typename Unique<VariantResultType<>, tf_detail::TransformedOrVoid_t<Obj, Tfs>...>::type;
+    using VariantResultOTs = typename Unique<VariantResultType<>, detail::TransformedOrVoid_t<Obj, Tfs>...>::type;
 
     //! The set of types obtained by transforming any one of Objs with Tf.
     template<typename Tf, typename... Objs>
-    using VariantResultTOs = typename Unique<VariantResultType<>, tf_detail::TransformedOrVoid_t<Objs, Tf>...>::type;
+    using VariantResultTOs = typename Unique<VariantResultType<>, detail::TransformedOrVoid_t<Objs, Tf>...>::type;
 
     //! VariantResultType<X> -> X; anything else is left unchanged.
     template<typename T> struct StripIfUnique { using type = T; };
@@ -92,7 +92,7 @@ namespace rtl
     template<typename... Known, typename... New, typename... Tfs>
     struct Expansion<VariantResultType<Known...>, VariantResultType<New...>, Tfs...>
     {
-        using type = typename tf_detail::UnionOf<VariantResultType<Known...>, VariantResultOTs<New, Tfs...>...>::type;
+        using type = typename detail::UnionOf<VariantResultType<Known...>, VariantResultOTs<New, Tfs...>...>::type;
     };
 
     //! Closure of the set VR1 under repeated application of Tfs: expands until a step adds no new type
@@ -103,8 +103,8 @@ namespace rtl
     private:
         using Next = typename Expansion<VR1, VR1, Tfs...>::type;
     public:
-        using type = typename std::conditional_t<tf_detail::VariantSize<Next>::value == tf_detail::VariantSize<VR1>::value,
-                                                 tf_detail::Identity<VR1>, Recursion<Next, Tfs...>>::type;
+        using type = typename std::conditional_t<detail::VariantSize<Next>::value == detail::VariantSize<VR1>::value,
+                                                 detail::Identity<VR1>, Recursion<Next, Tfs...>>::type;
     };
 
     //! Every type reachable from Obj by applying one or more of Tfs in sequence (e.g. along a TfChain).
@@ -129,7 +129,7 @@ namespace rtl
     struct is_transformable<Obj, GeneralTf<Tfs...>>
     {
         using type = VariantResultOTsStripped<Obj, Tfs...>;
-        static constexpr bool value = tf_detail::VariantSize<VariantResultOTs<Obj, Tfs...>>::value > 0;
+        static constexpr bool value = detail::VariantSize<VariantResultOTs<Obj, Tfs...>>::value > 0;
     };
 
     //! A value of one of Res..., known only at run time. Converts implicitly from each Res and to each Res
@@ -137,7 +137,7 @@ namespace rtl
     template<typename... Res>
     class VariantResultType
     {
-        static_assert(tf_detail::all_distinct<Res...>::value, "VariantResultType alternatives must be distinct.");
+        static_assert(detail::all_distinct<Res...>::value, "VariantResultType alternatives must be distinct.");
         template<typename... Os> friend class VariantResultType;
 
     public:
@@ -147,12 +147,12 @@ namespace rtl
         VariantResultType(const VariantResultType &cp) = default;
         VariantResultType(VariantResultType &&mv) noexcept : var(std::move(mv.var)) {}
 
-        template<typename T, std::enable_if_t<tf_detail::is_one_of_v<T, Res...>, int> = 0>
+        template<typename T, std::enable_if_t<detail::is_one_of_v<T, Res...>, int> = 0>
         VariantResultType(const T &t) : var(std::in_place_type<T>, t) {}
 
         //! From a result set that is a subset of this one (e.g. one chain step's results into the chain's closure).
         template<typename... Os, std::enable_if_t<!std::is_same_v<VariantResultType<Os...>, VariantResultType>
-                                                  && (tf_detail::is_one_of_v<Os, Res...> && ...), int> = 0>
+                                                  && (detail::is_one_of_v<Os, Res...> && ...), int> = 0>
         VariantResultType(const VariantResultType<Os...> &o)
                 : var(std::visit([](const auto &x) { return VariantType(std::in_place_type<std::decay_t<decltype(x)>>, x); }, o.var)) {}
 
@@ -167,7 +167,7 @@ namespace rtl
         [[nodiscard]] constexpr size_t index() const noexcept { return var.index(); }
 
         //! The held value as T; throws std::bad_variant_access if another alternative is held.
-        template<typename T, std::enable_if_t<tf_detail::is_one_of_v<T, Res...>, int> = 0>
+        template<typename T, std::enable_if_t<detail::is_one_of_v<T, Res...>, int> = 0>
         operator T() const { return std::get<T>(var); }
 
         //! Calls vis with the held value.

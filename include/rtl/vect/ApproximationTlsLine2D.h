@@ -57,7 +57,7 @@ namespace rtl
         //! points (isotropic covariance) gets the direction (1, 0).
         bool operator()(PrecSumsType ps)
         {
-            const vect_detail::Moments2D<ComputeType> m(ps);
+            const detail::Moments2D<ComputeType> m(ps);
             n = m.n; mx = m.mx; my = m.my;
             const ComputeType hd = (m.cxx - m.cyy) / 2, r = std::hypot(hd, m.cxy), mean = (m.cxx + m.cyy) / 2;
             err = std::max(ComputeType(0), mean - r);
@@ -135,7 +135,7 @@ namespace rtl
         static ElementType getErrorSquared(PrecSumsType ps) { return static_cast<ElementType>(errorSquaredCompute(ps)); }
         static ComputeType errorSquaredCompute(const PrecSumsType &ps)
         {
-            const vect_detail::Moments2D<ComputeType> m(ps);
+            const detail::Moments2D<ComputeType> m(ps);
             return std::max(ComputeType(0), (m.cxx + m.cyy) / 2 - std::hypot((m.cxx - m.cyy) / 2, m.cxy));
         }
         //! errorSquared(ps) < sigma2, decided without square roots (the minor eigenvalue is below sigma2 iff

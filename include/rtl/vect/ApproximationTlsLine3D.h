@@ -41,12 +41,12 @@ namespace rtl
         //! Refits from sums. Coincident points (or an empty set) give the direction (1, 0, 0) and zero error.
         bool operator()(PrecSumsType ps)
         {
-            const vect_detail::Moments3D<ComputeType> m(ps);
+            const detail::Moments3D<ComputeType> m(ps);
             n = m.n;
             centroid = m.mean;
             Eigen::Matrix<ComputeType, 3, 1> values;
             Eigen::Matrix<ComputeType, 3, 3> vectors;
-            vect_detail::eigen3(m.cov, values, vectors, 2);
+            detail::eigen3(m.cov, values, vectors, 2);
             err = std::max(ComputeType(0), values(0) + values(1));
             dir = vectors.col(2);
             const ComputeType len = dir.norm();
@@ -82,7 +82,7 @@ namespace rtl
         //! Mean squared orthogonal distance from the sums (closed-form eigenvalues only).
         static ComputeType errorSquaredCompute(const PrecSumsType &ps)
         {
-            const vect_detail::Moments3D<ComputeType> m(ps);
+            const detail::Moments3D<ComputeType> m(ps);
             Eigen::SelfAdjointEigenSolver<Eigen::Matrix<ComputeType, 3, 3>> es;
             es.computeDirect(m.cov, Eigen::EigenvaluesOnly);
             return std::max(ComputeType(0), es.eigenvalues()(0) + es.eigenvalues()(1));
@@ -97,7 +97,7 @@ namespace rtl
             const ComputeType a = n * s[3] - s[0] * s[0], b = n * s[4] - s[1] * s[1], c = n * s[5] - s[2] * s[2];
             const ComputeType ab = n * s[6] - s[0] * s[1], bc = n * s[7] - s[1] * s[2], ca = n * s[8] - s[2] * s[0];
             const ComputeType l = a + b + c - t;
-            return vect_detail::notPsd3(l - a, l - b, l - c, -ab, -bc, -ca);
+            return detail::notPsd3(l - a, l - b, l - c, -ab, -bc, -ca);
         }
 
     private:

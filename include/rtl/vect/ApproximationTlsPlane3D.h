@@ -44,12 +44,12 @@ namespace rtl
         //! (the fit is degenerate but the error, zero or the line residual, is still exact).
         bool operator()(PrecSumsType ps)
         {
-            const vect_detail::Moments3D<ComputeType> m(ps);
+            const detail::Moments3D<ComputeType> m(ps);
             n = m.n;
             centroid = m.mean;
             Eigen::Matrix<ComputeType, 3, 1> values;
             Eigen::Matrix<ComputeType, 3, 3> vectors;
-            vect_detail::eigen3(m.cov, values, vectors, 0);
+            detail::eigen3(m.cov, values, vectors, 0);
             err = std::max(ComputeType(0), values(0));
             nrm = vectors.col(0);
             const ComputeType len = nrm.norm();
@@ -89,7 +89,7 @@ namespace rtl
         //! Mean squared orthogonal distance from the sums (closed-form eigenvalues only).
         static ComputeType errorSquaredCompute(const PrecSumsType &ps)
         {
-            const vect_detail::Moments3D<ComputeType> m(ps);
+            const detail::Moments3D<ComputeType> m(ps);
             Eigen::SelfAdjointEigenSolver<Eigen::Matrix<ComputeType, 3, 3>> es;
             es.computeDirect(m.cov, Eigen::EigenvaluesOnly);
             return std::max(ComputeType(0), es.eigenvalues()(0));
@@ -102,7 +102,7 @@ namespace rtl
             const ComputeType t = n * n * sigma2;
             const ComputeType a = n * s[3] - s[0] * s[0], b = n * s[4] - s[1] * s[1], c = n * s[5] - s[2] * s[2];
             const ComputeType ab = n * s[6] - s[0] * s[1], bc = n * s[7] - s[1] * s[2], ca = n * s[8] - s[2] * s[0];
-            return vect_detail::notPsd3(a - t, b - t, c - t, ab, bc, ca);
+            return detail::notPsd3(a - t, b - t, c - t, ab, bc, ca);
         }
 
     private:

@@ -35,7 +35,7 @@
 #include "rtl/vect/PartitionSearch2D.h"
 #include "rtl/vect/PostprocessorPolyline2D.h"
 
-namespace rtl::vect_detail
+namespace rtl::detail
 {
     template<class PrecArrayType, class Approximation, bool optimize, class Observer = NoTrace>
     class FastPolylinePipeline2D

@@ -89,7 +89,7 @@ namespace rtl
                 if constexpr (Observer::enabled)
                     if (observer_)
                     {
-                        const ComputeType d2 = vect_detail::crossingDistanceSquared(pts, lines[i], lines[i + 1], indices[i].second);
+                        const ComputeType d2 = detail::crossingDistanceSquared(pts, lines[i], lines[i + 1], indices[i].second);
                         (*observer_)(FtlsCorner{branch_, i, indices[i].second, static_cast<double>(std::sqrt(d2)), static_cast<double>(std::sqrt(delta2)), ok});
                     }
                 if (ok) { ++i; continue; }
@@ -169,7 +169,7 @@ namespace rtl
 
         bool crossingOk(const std::vector<VectorType> &pts, const Approximation &l1, const Approximation &l2, size_t boundary) const
         {
-            return vect_detail::crossingDistanceSquared(pts, l1, l2, boundary) <= delta2;
+            return detail::crossingDistanceSquared(pts, l1, l2, boundary) <= delta2;
         }
 
         bool pairOk(const std::vector<VectorType> &pts, const std::vector<Approximation> &l, const std::vector<IndexType> &idx, size_t i) const

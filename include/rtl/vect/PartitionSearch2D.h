@@ -3,7 +3,7 @@
 // What: the best partition of the chain [0, N) into ranges of >= 2 points, each fitting sigma exactly as in
 // ExtractorChainFast (2 points always fit, otherwise mean squared residual < sigma^2), with every pair of
 // consecutive lines crossing within delta of the midpoint of the two boundary points (OptimizerContinuity2D's
-// criterion, vect_detail::crossingDistanceSquared). Best = fewest breaks (split mode only), then fewest ranges, then
+// criterion, detail::crossingDistanceSquared). Best = fewest breaks (split mode only), then fewest ranges, then
 // least total squared residual. Without breaks a false return proves that no valid partition exists, and failure()
 // says where: the furthest corner reached (the largest boundary b, 2 <= b <= N-2, ending a valid partition of
 // [0, b)) with the smallest crossing distance over all line pairs tried there. With breaks allowed (split mode) a
@@ -272,12 +272,12 @@ namespace rtl
         };
         std::vector<Out> outs;
         std::vector<size_t> picks, limits, open_, leaf_of, removed;
-        vect_detail::MinRankTree tree;   // ranks by val of the items in the sweep; min-query over val ranges
+        detail::MinRankTree tree;   // ranks by val of the items in the sweep; min-query over val ranges
         static constexpr size_t none_rank = std::numeric_limits<size_t>::max();
         std::vector<ComputeType> vals;
         Work work_;
         size_t scan_first{16}, scan_share{32};
-        typedef vect_detail::CornerChord<ComputeType> Chord;
+        typedef detail::CornerChord<ComputeType> Chord;
         struct Item;
         std::vector<Chord> in_chords, out_chords;
         std::vector<Item> items, queries, by_key;
@@ -334,7 +334,7 @@ namespace rtl
             starts.push_back(0);
             for (size_t i = 1; i < lines.size(); ++i)
             {
-                const ComputeType d2 = vect_detail::cornerDistanceSquared(pts, lines[i - 1], lines[i], indices[i - 1].second, indices[i].first);
+                const ComputeType d2 = detail::cornerDistanceSquared(pts, lines[i - 1], lines[i], indices[i - 1].second, indices[i].first);
                 if (!(d2 <= delta2))
                 {
                     starts.push_back(i);
@@ -903,7 +903,7 @@ namespace rtl
         //! The chord that `line` cuts from the disc of radius delta about m (see `CornerChord.h`).
         Chord chordOf(const Approximation &line, const VectorND<2, ComputeType> &m, ComputeType &eta) const
         {
-            return vect_detail::cornerChord(line, m, delta_, delta2, eta);
+            return detail::cornerChord(line, m, delta_, delta2, eta);
         }
 
         //! One case of the chord test: queries in increasing key; every item with key < query key + eta is in a
@@ -978,7 +978,7 @@ namespace rtl
                     if (!ok && beyondReach(total, b, n))
                         break;
                     if (ok && y + 1 != n)
-                        best = std::min(best, vect_detail::crossingDistanceSquared(pts, prev, Approximation(a.sums(b, y)), b));
+                        best = std::min(best, detail::crossingDistanceSquared(pts, prev, Approximation(a.sums(b, y)), b));
                 }
             }
             failure_.boundary = b;

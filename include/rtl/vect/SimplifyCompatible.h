@@ -50,7 +50,7 @@
 
 namespace rtl
 {
-    namespace simplify_detail
+    namespace detail
     {
         //! a * b, never fused with a following addition.
         inline double product(double a, double b)
@@ -891,7 +891,7 @@ namespace rtl
         }
         const double tol = static_cast<double>(tolerance);
         const double sq_tolerance = tol * tol;
-        return dim == 2 ? simplify_detail::simplifyIndices<2>(xyz, n, sq_tolerance, high_quality)
-                        : simplify_detail::simplifyIndices<3>(xyz, n, sq_tolerance, high_quality);
+        return dim == 2 ? detail::simplifyIndices<2>(xyz, n, sq_tolerance, high_quality)
+                        : detail::simplifyIndices<3>(xyz, n, sq_tolerance, high_quality);
     }
 }

@@ -10,7 +10,7 @@
 
 #include "rtl/vect/PrecSums.h"
 
-namespace rtl::vect_detail
+namespace rtl::detail
 {
     //! Centroid and covariance (divided by the count) of a 2D point set given by its sums.
     template<typename C>

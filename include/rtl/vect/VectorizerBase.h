@@ -16,7 +16,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         //! Every coordinate within [-limit, limit] (false for NaN). An integer AND over all coordinates, without an
         //! early exit, vectorises: this pass costs a fraction of a nanosecond per point instead of a branch per point.

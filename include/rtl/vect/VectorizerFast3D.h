@@ -20,7 +20,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         //! Prefix sums -> fast extraction -> [total-error optimizer] -> projected end points, for 3D primitives.
         //! False also when ElementType cannot hold the result (an errSquared() or output vertex overflows it: float
@@ -71,7 +71,7 @@ namespace rtl
 
     //! FTLS 3D lines, trimmed by the projections of each range's end points.
     template<typename Element, typename Compute>
-    class VectorizerFTLSProjections3D : public vect_detail::VectorizerFast3D<ApproximationTlsLine3D<Element, Compute>, false>
+    class VectorizerFTLSProjections3D : public detail::VectorizerFast3D<ApproximationTlsLine3D<Element, Compute>, false>
     {
     public:
         VectorizerFTLSProjections3D() = default;
@@ -81,7 +81,7 @@ namespace rtl
 
     //! AFTLS 3D lines (total-error optimizer), trimmed by the projections of each range's end points.
     template<typename Element, typename Compute>
-    class VectorizerAFTLSProjections3D : public vect_detail::VectorizerFast3D<ApproximationTlsLine3D<Element, Compute>, true>
+    class VectorizerAFTLSProjections3D : public detail::VectorizerFast3D<ApproximationTlsLine3D<Element, Compute>, true>
     {
     public:
         typedef typename ApproximationTlsLine3D<Element, Compute>::ConstrainedType LineSegmentType;
@@ -94,7 +94,7 @@ namespace rtl
 
     //! AFTLS 3D planes: polygons of each range's points projected onto its fitted plane.
     template<typename Element, typename Compute>
-    class VectorizerAFTLSPlaneProjections3D : public vect_detail::VectorizerFast3D<ApproximationTlsPlane3D<Element, Compute>, true>
+    class VectorizerAFTLSPlaneProjections3D : public detail::VectorizerFast3D<ApproximationTlsPlane3D<Element, Compute>, true>
     {
     public:
         VectorizerAFTLSPlaneProjections3D() = default;

@@ -19,7 +19,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         //! FTLS (optimize = false) and AFTLS (optimize = true) 2D polylines: see FastPolylinePipeline2D.h. An enabled
         //! Observer set by setObserver() receives the events of FtlsTrace.h (e.g. rtl::FtlsTraceLog).
@@ -89,7 +89,7 @@ namespace rtl
     //! line crossings. Additions to RTL: setSplitAtInfeasibleCorners, polylineOffsets, breaks, failure, Observer.
     template<typename Element, typename Compute, class Observer = NoTrace>
     class VectorizerFTLSPolyline2D
-        : public vect_detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, false, Observer>
+        : public detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, false, Observer>
     {
     public:
         VectorizerFTLSPolyline2D() = default;
@@ -100,7 +100,7 @@ namespace rtl
     //! candidate when that has the lower total squared error (so AFTLS is never worse than FTLS).
     template<typename Element, typename Compute, class Observer = NoTrace>
     class VectorizerAFTLSPolyline2D
-        : public vect_detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true, Observer>
+        : public detail::VectorizerFastPolyline2D<PrecArrayBlocked<2, Element, Compute>, ApproximationTlsLine2D<Element, Compute>, true, Observer>
     {
     public:
         VectorizerAFTLSPolyline2D() = default;

@@ -19,7 +19,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         //! Incremental TLS extraction -> projected end points, for 2D and 3D lines. An enabled Observer set by
         //! setObserver() receives the extractor's events and then one ItlsSegment per final range (SimplifyTrace.h).
@@ -79,11 +79,11 @@ namespace rtl
 
     //! Incremental TLS lines, trimmed by the projections of each range's end points. operator() is false for fewer
     //! than 2 points, an invalid sigma, a non-finite coordinate, or a coordinate beyond
-    //! vect_detail::momentSafeLimit<Compute>(n) (= sqrt(max / n) / 8: ~1e150 for double sums of 1e6 points), where
+    //! detail::momentSafeLimit<Compute>(n) (= sqrt(max / n) / 8: ~1e150 for double sums of 1e6 points), where
     //! the sums would overflow. Observer: see
-    //! vect_detail::VectorizerIncremental (e.g. rtl::ItlsTraceLog).
+    //! detail::VectorizerIncremental (e.g. rtl::ItlsTraceLog).
     template<typename Element, typename Compute, class Observer = NoTrace>
-    class VectorizerITLSProjections2D : public vect_detail::VectorizerIncremental<ApproximationTlsLine2D<Element, Compute>, Observer>
+    class VectorizerITLSProjections2D : public detail::VectorizerIncremental<ApproximationTlsLine2D<Element, Compute>, Observer>
     {
     public:
         VectorizerITLSProjections2D() = default;
@@ -92,7 +92,7 @@ namespace rtl
 
     //! Incremental TLS 3D lines, trimmed by the projections of each range's end points. Observer as in 2D.
     template<typename Element, typename Compute, class Observer = NoTrace>
-    class VectorizerITLSProjections3D : public vect_detail::VectorizerIncremental<ApproximationTlsLine3D<Element, Compute>, Observer>
+    class VectorizerITLSProjections3D : public detail::VectorizerIncremental<ApproximationTlsLine3D<Element, Compute>, Observer>
     {
     public:
         VectorizerITLSProjections3D() = default;

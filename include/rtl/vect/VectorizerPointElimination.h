@@ -22,7 +22,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         //! Segment a -> b whose direction is the unit vector along b - a however short or long the segment: it is
         //! normalised after rescaling by its largest |component| (a subnormal difference, whose squares underflow to
@@ -251,7 +251,7 @@ namespace rtl
                         if (std::isfinite(input[i][k]) && std::abs(input[i][k]) > max_abs)
                             max_abs = std::abs(input[i][k]);
             }
-            scale = vect_detail::unitScale(static_cast<double>(max_abs));
+            scale = detail::unitScale(static_cast<double>(max_abs));
             // Depth first, left range first: the ranges that are not split come in chain order, so their ends
             // after point 0 are the kept points in order.
             stack.clear();
@@ -273,7 +273,7 @@ namespace rtl
                 else
                     keys.push_back(b);
             }
-            vect_detail::polyline(input, keys, output);
+            detail::polyline(input, keys, output);
         }
 
         static bool finite(const VectorType &p)
@@ -451,14 +451,14 @@ namespace rtl
             double pa[dimensions], pb[dimensions], p[dimensions];
             scaled(pts[a], pa);
             scaled(pts[b], pb);
-            const simplify_detail::Chord<dimensions> chord(pa, pb);
+            const detail::Chord<dimensions> chord(pa, pb);
             const double e = epsilon * scale;
             double best_d = e * e;
             size_t best = 0;
             for (size_t i = a + 1; i < b; ++i)
             {
                 scaled(pts[i], p);
-                const double d2 = simplify_detail::segmentDistance2<dimensions>(p, chord);
+                const double d2 = detail::segmentDistance2<dimensions>(p, chord);
                 if (d2 > best_d && finite(pts[i])) { best_d = d2; best = i; }
             }
             return best;
@@ -468,12 +468,12 @@ namespace rtl
         double rangeDistance(const VectorType &p, const VectorType &a, const VectorType &b) const
         {
             if (distance_ == DpDistance::Line)
-                return vect_detail::lineDistance2(p, a, b);
+                return detail::lineDistance2(p, a, b);
             double pa[dimensions], pb[dimensions], q[dimensions];
             scaled(a, pa);
             scaled(b, pb);
             scaled(p, q);
-            return simplify_detail::segmentDistance2<dimensions>(q, simplify_detail::Chord<dimensions>(pa, pb)) / (scale * scale);
+            return detail::segmentDistance2<dimensions>(q, detail::Chord<dimensions>(pa, pb)) / (scale * scale);
         }
 
         //! The range event: the split decision is the untraced one (`far`); without a split, the farthest point
@@ -671,7 +671,7 @@ namespace rtl
                     if (observer_)
                         (*observer_)(RwKeep{n - 1});
             }
-            vect_detail::polyline(input, keys, output);
+            detail::polyline(input, keys, output);
         }
 
         //! Squared distance of p from the line through a with unit direction u.
@@ -772,7 +772,7 @@ namespace rtl
                         if constexpr (Observer::enabled)
                             if (observer_)
                             {
-                                const double d = vect_detail::lineDistance(input[i], input[k], input[through]);
+                                const double d = detail::lineDistance(input[i], input[k], input[through]);
                                 (*observer_)(RwExit{i, k, d, epsilon});
                                 (*observer_)(RwKeep{i - 1});
                                 (*observer_)(RwStrip{i - 1, i, epsilon});

@@ -17,7 +17,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         //! A chord as the angles of its ends seen from the disc centre; invariant for `regular`: p < q, both in (-pi, pi].
         template<typename C>

@@ -27,7 +27,7 @@ namespace rtl
         double delta{0};
     };
 
-    namespace vect_detail
+    namespace detail
     {
         //! Squared distance of the crossing of l1 and l2 from the midpoint of pts[boundary - 1] and pts[boundary];
         //! +infinity if the lines do not cross (parallel or non-finite crossing).

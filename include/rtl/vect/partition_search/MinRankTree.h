@@ -13,7 +13,7 @@
 
 namespace rtl
 {
-    namespace vect_detail
+    namespace detail
     {
         class MinRankTree
         {
