@@ -32,7 +32,9 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/core/Constants.h"
 #include "rtl/core/VectorND.h"
+#include "rtl/io/TextTokens.h"
 
 namespace rtl
 {
@@ -79,23 +81,7 @@ namespace rtl
 
     namespace detail
     {
-        constexpr double pi = 3.14159265358979323846264338327950288;
-
-        inline std::vector<std::string_view> tokens(std::string_view s)
-        {
-            std::vector<std::string_view> t;
-            std::size_t i = 0;
-            while (i < s.size())
-            {
-                while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-                std::size_t b = i;
-                while (i < s.size() && s[i] != ' ' && s[i] != '\t' && s[i] != '\r') ++i;
-                if (i > b) t.push_back(s.substr(b, i - b));
-            }
-            return t;
-        }
-
-        [[noreturn]] inline void fail(std::size_t line, const std::string &what)
+        [[noreturn]] inline void failCarmen(std::size_t line, const std::string &what)
         {
             throw std::runtime_error("CARMEN log, line " + std::to_string(line) + ": " + what);
         }
@@ -126,7 +112,7 @@ namespace rtl
         {
             double v = 0;
             if (!parseDouble(tok, v))
-                fail(line, std::string("bad ") + field + " '" + std::string(tok) + "'");
+                failCarmen(line, std::string("bad ") + field + " '" + std::string(tok) + "'");
             return v;
         }
 
@@ -135,7 +121,7 @@ namespace rtl
         {
             const double v = number(tok, line, field);
             if (!std::isfinite(v))
-                fail(line, std::string("non-finite ") + field + " '" + std::string(tok) + "'");
+                failCarmen(line, std::string("non-finite ") + field + " '" + std::string(tok) + "'");
             return v;
         }
 
@@ -225,7 +211,7 @@ namespace rtl
         {
             const auto tok = tokens(text);
             if (tok.empty() || tok[0][0] == '#') return;
-            if (!isRecordName(tok[0])) fail(line, "unknown record '" + std::string(tok[0]) + "'");
+            if (!isRecordName(tok[0])) failCarmen(line, "unknown record '" + std::string(tok[0]) + "'");
             if (tok[0] == "PARAM")
             {
                 // PARAM name value [ipc_timestamp hostname logger_timestamp]; a value that is not a positive
@@ -238,15 +224,15 @@ namespace rtl
             }
             if (tok[0] != "FLASER") return;
 
-            if (tok.size() < 2) fail(line, "FLASER without beam count");
+            if (tok.size() < 2) failCarmen(line, "FLASER without beam count");
             std::size_t n = 0;
             auto [end, ec] = std::from_chars(tok[1].data(), tok[1].data() + tok[1].size(), n);
             if (ec != std::errc() || end != tok[1].data() + tok[1].size() || n == 0)
-                fail(line, "bad beam count '" + std::string(tok[1]) + "'");
+                failCarmen(line, "bad beam count '" + std::string(tok[1]) + "'");
             // n ranges + x y theta odom_x odom_y odom_theta ipc_timestamp hostname logger_timestamp
             // (compared without n + 11, which wraps around for a beam count near SIZE_MAX)
             if (tok.size() - 2 < n || tok.size() - 2 - n != 9)
-                fail(line, "FLASER with " + std::to_string(n) + " beams needs " +
+                failCarmen(line, "FLASER with " + std::to_string(n) + " beams needs " +
                                (n <= std::numeric_limits<std::size_t>::max() - 11 ? std::to_string(n + 11)
                                                                                    : std::to_string(n) + " + 11") +
                                " fields, found " + std::to_string(tok.size()));
@@ -255,7 +241,7 @@ namespace rtl
             s.line = line;
             s.ranges.resize(n);
             s.points.resize(n);
-            const double res = (n % 2 == 1 && n > 1) ? pi / static_cast<double>(n - 1) : pi / static_cast<double>(n);
+            const double res = (n % 2 == 1 && n > 1) ? C_PI<double> / static_cast<double>(n - 1) : C_PI<double> / static_cast<double>(n);
             for (std::size_t i = 0; i < n; ++i)
             {
                 const double r = number(tok[2 + i], line, ("range " + std::to_string(i + 1)).c_str());
@@ -266,7 +252,7 @@ namespace rtl
                     s.points[i] = VectorND<2, E>::nan();
                 else
                 {
-                    const double a = -pi / 2 + static_cast<double>(i) * res;
+                    const double a = -C_PI<double> / 2 + static_cast<double>(i) * res;
                     s.points[i] = VectorND<2, E>(static_cast<E>(r * std::cos(a)), static_cast<E>(r * std::sin(a)));
                 }
             }
@@ -278,7 +264,7 @@ namespace rtl
             s.timestamp = finiteNumber(tok[8 + n], line, "ipc_timestamp");
             finiteNumber(tok[10 + n], line, "logger_timestamp");
             if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.theta))
-                fail(line, "pose out of the element type's range");
+                failCarmen(line, "pose out of the element type's range");
             scans.push_back(std::move(s));
         }
 

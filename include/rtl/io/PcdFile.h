@@ -188,9 +188,9 @@ namespace rtl
             for (int k = 0; k < 3; ++k)
             {
                 p.xyz[k] = h.find(names[k]);
-                if (p.xyz[k] == PcdError::npos) fail(h.fields_line, std::string("no field '") + names[k] + "' (x, y and z are required)");
+                if (p.xyz[k] == PcdError::npos) failPcd(h.fields_line, std::string("no field '") + names[k] + "' (x, y and z are required)");
                 if (h.fields[p.xyz[k]].count != 1)
-                    fail(h.fields_line, std::string("field '") + names[k] + "' has COUNT " +
+                    failPcd(h.fields_line, std::string("field '") + names[k] + "' has COUNT " +
                                             std::to_string(h.fields[p.xyz[k]].count) + " (x, y and z need COUNT 1)");
             }
             for (const auto &name : options.fields)

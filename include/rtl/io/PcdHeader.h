@@ -22,6 +22,8 @@
 #include <system_error>
 #include <vector>
 
+#include "rtl/io/TextTokens.h"
+
 namespace rtl
 {
     /*! The only exception the PCD reader throws for bad input (and an unreadable file). The message starts with
@@ -113,20 +115,6 @@ namespace rtl
 
     namespace detail
     {
-        inline std::vector<std::string_view> tokens(std::string_view s)
-        {
-            std::vector<std::string_view> t;
-            std::size_t i = 0;
-            while (i < s.size())
-            {
-                while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-                const std::size_t b = i;
-                while (i < s.size() && s[i] != ' ' && s[i] != '\t' && s[i] != '\r') ++i;
-                if (i > b) t.push_back(s.substr(b, i - b));
-            }
-            return t;
-        }
-
         //! A whole token as an unsigned 64-bit integer (decimal digits only).
         inline bool parseUnsigned(std::string_view tok, std::uint64_t &v)
         {
@@ -170,7 +158,7 @@ namespace rtl
             std::vector<std::string_view> values;
         };
 
-        [[noreturn]] inline void fail(std::size_t line, const std::string &what)
+        [[noreturn]] inline void failPcd(std::size_t line, const std::string &what)
         {
             throw PcdError("", line, PcdError::npos, PcdError::npos, what);
         }
@@ -179,7 +167,7 @@ namespace rtl
         {
             std::uint64_t v = 0;
             if (key.values.size() != 1 || !parseUnsigned(key.values[0], v))
-                fail(key.line, std::string(name) + " needs one unsigned integer");
+                failPcd(key.line, std::string(name) + " needs one unsigned integer");
             return v;
         }
     }
@@ -201,7 +189,7 @@ namespace rtl
         bool data_seen = false;
         while (!data_seen)
         {
-            if (pos >= text.size()) fail(line + 1, "no DATA line: the input ends in the header");
+            if (pos >= text.size()) failPcd(line + 1, "no DATA line: the input ends in the header");
             ++line;
             std::size_t nl = text.find('\n', pos);
             const bool last = nl == std::string_view::npos;
@@ -222,38 +210,38 @@ namespace rtl
             else if (key == "POINTS") seen = &points;
             else if (key == "DATA")
             {
-                if (tok.size() != 2) fail(line, "DATA needs one kind (ascii, binary, binary_compressed)");
+                if (tok.size() != 2) failPcd(line, "DATA needs one kind (ascii, binary, binary_compressed)");
                 if (tok[1] == "ascii") h.data = PcdDataKind::Ascii;
                 else if (tok[1] == "binary") h.data = PcdDataKind::Binary;
                 else if (tok[1] == "binary_compressed") h.data = PcdDataKind::BinaryCompressed;
-                else fail(line, "unknown DATA kind '" + std::string(tok[1]) + "'");
+                else failPcd(line, "unknown DATA kind '" + std::string(tok[1]) + "'");
                 h.data_line = line;
                 h.data_offset = pos;
                 data_seen = true;
                 continue;
             }
             else
-                fail(line, "unknown header key '" + std::string(key.substr(0, 40)) + "'");
-            if (seen->line != 0) fail(line, std::string(key) + " repeated (first on line " + std::to_string(seen->line) + ")");
+                failPcd(line, "unknown header key '" + std::string(key.substr(0, 40)) + "'");
+            if (seen->line != 0) failPcd(line, std::string(key) + " repeated (first on line " + std::to_string(seen->line) + ")");
             seen->line = line;
             seen->values.assign(tok.begin() + 1, tok.end());
         }
 
         if (version.line != 0)
         {
-            if (version.values.size() != 1) fail(version.line, "VERSION needs one value");
+            if (version.values.size() != 1) failPcd(version.line, "VERSION needs one value");
             const auto v = version.values[0];
             if (v != "0.7" && v != ".7" && v != "0.6" && v != ".6")
-                fail(version.line, "unsupported VERSION '" + std::string(v.substr(0, 40)) + "' (0.6 and 0.7 are read)");
+                failPcd(version.line, "unsupported VERSION '" + std::string(v.substr(0, 40)) + "' (0.6 and 0.7 are read)");
             h.version = std::string(v);
         }
-        if (fields.line == 0 || fields.values.empty()) fail(fields.line ? fields.line : h.data_line, "no FIELDS before DATA");
+        if (fields.line == 0 || fields.values.empty()) failPcd(fields.line ? fields.line : h.data_line, "no FIELDS before DATA");
         const std::size_t n = fields.values.size();
-        if (sizes.line == 0) fail(h.data_line, "no SIZE before DATA");
-        if (types.line == 0) fail(h.data_line, "no TYPE before DATA");
+        if (sizes.line == 0) failPcd(h.data_line, "no SIZE before DATA");
+        if (types.line == 0) failPcd(h.data_line, "no TYPE before DATA");
         for (const Seen *list : {&sizes, &types, &counts})
             if (list->line != 0 && list->values.size() != n)
-                fail(list->line, std::to_string(list->values.size()) + " values for " + std::to_string(n) + " FIELDS");
+                failPcd(list->line, std::to_string(list->values.size()) + " values for " + std::to_string(n) + " FIELDS");
         h.fields.resize(n);
         h.fields_line = fields.line;
         for (std::size_t i = 0; i < n; ++i)
@@ -262,15 +250,15 @@ namespace rtl
             f.name = std::string(fields.values[i]);
             if (f.name != "_")
                 for (std::size_t j = 0; j < i; ++j)
-                    if (h.fields[j].name == f.name) fail(fields.line, "field '" + f.name + "' repeated");
+                    if (h.fields[j].name == f.name) failPcd(fields.line, "field '" + f.name + "' repeated");
             std::uint64_t s = 0;
-            if (!parseUnsigned(sizes.values[i], s)) fail(sizes.line, "bad SIZE '" + std::string(sizes.values[i].substr(0, 40)) + "'");
-            if (types.values[i].size() != 1) fail(types.line, "bad TYPE '" + std::string(types.values[i].substr(0, 40)) + "'");
+            if (!parseUnsigned(sizes.values[i], s)) failPcd(sizes.line, "bad SIZE '" + std::string(sizes.values[i].substr(0, 40)) + "'");
+            if (types.values[i].size() != 1) failPcd(types.line, "bad TYPE '" + std::string(types.values[i].substr(0, 40)) + "'");
             f.type = types.values[i][0];
             const bool ok = ((f.type == 'I' || f.type == 'U') && (s == 1 || s == 2 || s == 4 || s == 8)) ||
                             (f.type == 'F' && (s == 4 || s == 8));
             if (!ok)
-                fail(f.type == 'I' || f.type == 'U' || f.type == 'F' ? sizes.line : types.line,
+                failPcd(f.type == 'I' || f.type == 'U' || f.type == 'F' ? sizes.line : types.line,
                      "field '" + f.name + "': TYPE " + std::string(types.values[i]) + " with SIZE " +
                          std::string(sizes.values[i].substr(0, 40)) + " (I/U take 1, 2, 4, 8; F takes 4, 8)");
             f.size = static_cast<std::size_t>(s);
@@ -278,7 +266,7 @@ namespace rtl
             {
                 std::uint64_t c = 0;
                 if (!parseUnsigned(counts.values[i], c) || c == 0 || c > 0xffffffffu)
-                    fail(counts.line, "field '" + f.name + "': COUNT must be 1 to 4294967295, got '" +
+                    failPcd(counts.line, "field '" + f.name + "': COUNT must be 1 to 4294967295, got '" +
                                           std::string(counts.values[i].substr(0, 40)) + "'");
                 f.count = static_cast<std::size_t>(c);
             }
@@ -286,7 +274,7 @@ namespace rtl
             f.offset = h.point_step;
             const std::size_t max = std::numeric_limits<std::size_t>::max();
             if (f.count > max / f.size || f.size * f.count > max - h.point_step)
-                fail(counts.line, "field '" + f.name + "': the point size overflows");
+                failPcd(counts.line, "field '" + f.name + "': the point size overflows");
             h.point_step += f.size * f.count;
         }
 
@@ -294,28 +282,28 @@ namespace rtl
         if (height.line != 0) ht = unsignedValue(height, "HEIGHT");
         if (points.line != 0) np = unsignedValue(points, "POINTS");
         if (width.line != 0) w = unsignedValue(width, "WIDTH");
-        else if (points.line == 0) fail(h.data_line, "neither WIDTH nor POINTS before DATA");
-        else if (ht != 1) fail(height.line, "HEIGHT without WIDTH");
+        else if (points.line == 0) failPcd(h.data_line, "neither WIDTH nor POINTS before DATA");
+        else if (ht != 1) failPcd(height.line, "HEIGHT without WIDTH");
         else w = np;
         if (w != 0 && ht > std::numeric_limits<std::uint64_t>::max() / w)
-            fail(height.line, "WIDTH x HEIGHT overflows");
+            failPcd(height.line, "WIDTH x HEIGHT overflows");
         if (points.line == 0) np = w * ht;
         else if (np != w * ht)
-            fail(points.line, "POINTS " + std::to_string(np) + " differs from WIDTH x HEIGHT = " + std::to_string(w) +
+            failPcd(points.line, "POINTS " + std::to_string(np) + " differs from WIDTH x HEIGHT = " + std::to_string(w) +
                                   " x " + std::to_string(ht) + " = " + std::to_string(w * ht));
         if (w > std::numeric_limits<std::size_t>::max() || ht > std::numeric_limits<std::size_t>::max() ||
             np > std::numeric_limits<std::size_t>::max())
-            fail(points.line ? points.line : width.line, "point count too large for this platform");
+            failPcd(points.line ? points.line : width.line, "point count too large for this platform");
         h.width = static_cast<std::size_t>(w);
         h.height = static_cast<std::size_t>(ht);
         h.points = static_cast<std::size_t>(np);
 
         if (viewpoint.line != 0)
         {
-            if (viewpoint.values.size() != 7) fail(viewpoint.line, "VIEWPOINT needs 7 numbers (tx ty tz qw qx qy qz)");
+            if (viewpoint.values.size() != 7) failPcd(viewpoint.line, "VIEWPOINT needs 7 numbers (tx ty tz qw qx qy qz)");
             for (std::size_t k = 0; k < 7; ++k)
                 if (!parseFloat(viewpoint.values[k], h.viewpoint[k]) || !std::isfinite(h.viewpoint[k]))
-                    fail(viewpoint.line, "bad VIEWPOINT value '" + std::string(viewpoint.values[k].substr(0, 40)) + "'");
+                    failPcd(viewpoint.line, "bad VIEWPOINT value '" + std::string(viewpoint.values[k].substr(0, 40)) + "'");
         }
         return h;
     }
