@@ -1,0 +1,59 @@
+// The package's `rtl-wasm/logs` entry (dist/ros/logs.js) and its optional peer dependencies bundled into one ES
+// module for the browser, at serve time, with esbuild from node_modules: a module Web Worker sees no import map, so
+// the bare names the entry imports must be resolved before the browser gets them. Nothing is fetched from a CDN.
+//
+// Two adaptations, both at bundle time, none in the package's files:
+// - the entry loads each peer with `import(name)` on a variable name (they are optional), which no bundler can
+//   follow; the bundle gives those calls a table of the peers' static imports instead (peerTable below);
+// - the decompressors (@foxglove/wasm-lz4, wasm-zstd, wasm-bz2) are Emscripten modules that `require` their .wasm
+//   for a file URL; the bundle inlines each .wasm as a data: URL (application/wasm) that the worker fetches.
+// Node built-ins the entry and the Emscripten glue reach only under Node (fs, path) stay out of the bundle.
+import { promises as fs } from 'node:fs';
+import { join } from 'node:path';
+
+export const LOGS_BUNDLE_PATH = '/vendor/rtl-wasm-logs.js';
+
+// The peers the entry may import by name (its package.json peerDependencies), so the table lists them statically.
+export async function peerNames(root) {
+  const pkg = JSON.parse(await fs.readFile(join(root, 'package.json'), 'utf8'));
+  return Object.keys(pkg.peerDependencies ?? {});
+}
+
+const DYNAMIC_PEER_IMPORT = /\bimport\((\w+)\)/g;
+
+function peerTable(names) {
+  return {
+    name: 'rtl-peer-table',
+    setup(build) {
+      build.onLoad({ filter: /[\\/]dist[\\/]ros[\\/]logs\.js$/ }, async (args) => {
+        const text = await fs.readFile(args.path, 'utf8');
+        const table = `const __rtlPeers = {${names.map((n) => `${JSON.stringify(n)}: () => import(${JSON.stringify(n)})`).join(', ')}};\n` +
+          'const __rtlPeer = (name) => (__rtlPeers[name] ? __rtlPeers[name]() : Promise.reject(new Error(`${name} is not in the bundle`)));\n';
+        const patched = text.replace(DYNAMIC_PEER_IMPORT, (m, v) => `__rtlPeer(${v})`);
+        if (patched === text) throw new Error('dist/ros/logs.js has no import(name) to route to its peers: update web/vendor-logs.js');
+        return { contents: table + patched, loader: 'js' };
+      });
+    },
+  };
+}
+
+const cache = new Map();   // root -> { stamp, code }
+
+/** The bundle's code for the package under `root` (its dist/ and node_modules/), rebuilt when dist/ros/logs.js
+ *  changes. Throws when esbuild or a peer is missing (the server answers 503 with the reason). */
+export async function bundleLogs(root) {
+  const entry = join(root, 'dist', 'ros', 'logs.js');
+  const stamp = (await fs.stat(entry)).mtimeMs;
+  const hit = cache.get(root);
+  if (hit && hit.stamp === stamp) return hit.code;
+  const { build } = await import('esbuild');
+  const result = await build({
+    entryPoints: [entry], bundle: true, format: 'esm', platform: 'browser', target: 'es2022', write: false,
+    nodePaths: [join(root, 'node_modules')], absWorkingDir: root, logLevel: 'silent', legalComments: 'eof',
+    loader: { '.wasm': 'dataurl' }, external: ['fs', 'path', 'crypto', 'node:*'],
+    plugins: [peerTable(await peerNames(root))],
+  });
+  const code = result.outputFiles[0].text;
+  cache.set(root, { stamp, code });
+  return code;
+}
