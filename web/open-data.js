@@ -235,6 +235,9 @@ export function wireOpenData({ data, input, progressBar, message, chooser, onSou
   async function openFile(file) {
     const reader = READERS.find((r) => r.test(file.name));
     if (!reader) { say(`${file.name}: not a format this page reads (${READERS.map((r) => r.label).join('; ')}).`, true); return; }
+    openLog?.close();   // the topic chooser is the last log's; another file ends it
+    openLog = null;
+    topicLabel.hidden = true;
     progressBar.hidden = false;
     progressBar.value = 0;
     say(`Reading ${file.name}…`);
@@ -246,7 +249,6 @@ export function wireOpenData({ data, input, progressBar, message, chooser, onSou
       if (!scans.length) throw new Error(`${file.name}: no scan in the file`);
       const name = addScans(file, r, caption);
       if (r.topics) {
-        openLog?.close();
         openLog = { file, topics: r.topics, close: r.close, datasets: new Map([[r.topics.current, name]]) };
         showTopics(file, r.topics);
       }

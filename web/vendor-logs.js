@@ -7,9 +7,13 @@
 //   follow; the bundle gives those calls a table of the peers' static imports instead (peerTable below);
 // - the decompressors (@foxglove/wasm-lz4, wasm-zstd, wasm-bz2) are Emscripten modules that `require` their .wasm
 //   for a file URL; the bundle inlines each .wasm as a data: URL (application/wasm) that the worker fetches.
+// - the lz4 and zstd decompressors copy their output with Node's Buffer: web/vendor-buffer.js stands in for it.
 // Node built-ins the entry and the Emscripten glue reach only under Node (fs, path) stay out of the bundle.
 import { promises as fs } from 'node:fs';
 import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const BUFFER_SHIM = fileURLToPath(new URL('./vendor-buffer.js', import.meta.url));
 
 export const LOGS_BUNDLE_PATH = '/vendor/rtl-wasm-logs.js';
 
@@ -40,10 +44,10 @@ function peerTable(names) {
 const cache = new Map();   // root -> { stamp, code }
 
 /** The bundle's code for the package under `root` (its dist/ and node_modules/), rebuilt when dist/ros/logs.js
- *  changes. Throws when esbuild or a peer is missing (the server answers 503 with the reason). */
+ *  or the shim changes. Throws when esbuild or a peer is missing (the server answers 503 with the reason). */
 export async function bundleLogs(root) {
   const entry = join(root, 'dist', 'ros', 'logs.js');
-  const stamp = (await fs.stat(entry)).mtimeMs;
+  const stamp = `${(await fs.stat(entry)).mtimeMs}:${(await fs.stat(BUFFER_SHIM)).mtimeMs}`;
   const hit = cache.get(root);
   if (hit && hit.stamp === stamp) return hit.code;
   const { build } = await import('esbuild');
@@ -51,7 +55,7 @@ export async function bundleLogs(root) {
     entryPoints: [entry], bundle: true, format: 'esm', platform: 'browser', target: 'es2022', write: false,
     nodePaths: [join(root, 'node_modules')], absWorkingDir: root, logLevel: 'silent', legalComments: 'eof',
     loader: { '.wasm': 'dataurl' }, external: ['fs', 'path', 'crypto', 'node:*'],
-    plugins: [peerTable(await peerNames(root))],
+    inject: [BUFFER_SHIM], plugins: [peerTable(await peerNames(root))],
   });
   const code = result.outputFiles[0].text;
   cache.set(root, { stamp, code });
