@@ -78,7 +78,12 @@ function readPcd(rtl, data) {
 }
 
 async function openLog(data) {
-  const { openLog: open } = await import('/vendor/rtl-wasm-logs.js');
+  let open;
+  try {
+    ({ openLog: open } = await import('/vendor/rtl-wasm-logs.js'));
+  } catch (e) {
+    throw new Error(`reading MCAP files and ROS bags needs the page served by web/serve.js, which bundles rtl-wasm/logs for the browser (${e.message})`);
+  }
   await log?.close();
   log = await open(data.file, { name: data.file.name });
   post({ done: true, format: log.format, topics: log.topics });
