@@ -237,6 +237,16 @@ describe('open your own robot files: MCAP, ROS 1 bags, PCD', { timeout: 400000 }
     await waitMessage(page, /^short\.pcd: /);
     assert.equal(await message(page), `short.pcd: ${pcdError}`);
 
+    // a PCD whose POINTS disagrees with WIDTH x HEIGHT
+    const miscount = readFileSync(join(DATA, 'pcd', 'organized.ascii.pcd'), 'utf8').replace(/^POINTS 256$/m, 'POINTS 250');
+    assert.notEqual(miscount, lines.join('\n'));
+    let countError;
+    try { rtl.readPcd(new TextEncoder().encode(miscount)); } catch (e) { countError = e.message.replace(/^readPcd: /, ''); }
+    assert.ok(countError, 'the package rejects the count');
+    await drop(page, 'miscount.pcd', Buffer.from(miscount));
+    await waitMessage(page, /^miscount\.pcd: /);
+    assert.equal(await message(page), `miscount.pcd: ${countError}`);
+
     // a file of another kind under a log's name
     await drop(page, 'notes.mcap', Buffer.from('these are my notes, not a log\n'));
     await waitMessage(page, /^notes\.mcap: /);
