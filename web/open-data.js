@@ -44,6 +44,7 @@ function ask(worker, file, message, transfer, progress) {
       else progress(data.progress, data.phase, data.count);
     };
     worker.onerror = (e) => reject(new Error(`${file.name}: ${e.message || 'the reader stopped'}`));
+    worker.abandon = () => reject(new Error(`${file.name}: closed before the end`));   // terminate() answers nothing
     worker.postMessage(message, transfer);
   });
 }
@@ -105,11 +106,11 @@ registerReader({
         const r = await ask(worker, file, { kind: 'log-read', topic, segment: SEGMENT }, [], onProgress);
         return { scans: r.scans, unit: 'scan' };
       };
-      const first = scanTopics.find((t) => /LaserScan$/.test(t.type)) ?? scanTopics[0];
+      const first = scanTopics.find((t) => /LaserScan$/.test(t.type) && t.count !== 0) ?? scanTopics.find((t) => t.count !== 0) ?? scanTopics[0];
       const { scans } = await readTopic(first.name, progress);
       return {
         scans, unit: 'scan', note: format === 'bag' ? 'a ROS 1 bag' : 'an MCAP file',
-        topics: { list: topics, current: first.name, read: readTopic }, close: () => worker.terminate(),
+        topics: { list: topics, current: first.name, read: readTopic }, close: () => { worker.terminate(); worker.abandon(); },
       };
     } catch (e) {
       worker.terminate();
@@ -221,13 +222,14 @@ export function wireOpenData({ data, input, progressBar, message, chooser, onSou
     topicChooser.disabled = true;
     try {
       const r = await log.topics.read(topic, showProgress(log.file, topic));
+      if (openLog !== log) return;   // another file was opened meanwhile
       if (!r.scans.length) throw new Error(`${log.file.name}: topic ${topic} has no scan`);
       log.datasets.set(topic, addScans(log.file, r, caption));
       say(readMessage(caption, r.scans, 'scan'));
     } catch (e) {
-      failed(log.file, e, caption);
+      if (openLog === log) failed(log.file, e, caption);
     } finally {
-      progressBar.hidden = true;
+      if (openLog === log) progressBar.hidden = true;
       topicChooser.disabled = false;
     }
   }
