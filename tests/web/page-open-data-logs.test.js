@@ -4,7 +4,8 @@
 // topic chooser lists the log's topics with their counts, the progress bar reaches 100 %, a chosen scan runs the 2D
 // lessons on exactly the points the package gives in Node for the same file; bad files (a truncated bag, a corrupt
 // MCAP, a PCD with points missing, a file of another kind) get the package's message under the file's name, and the
-// page keeps working. Screenshots of the chooser at 1280x800 and 390x844 go to test-results/.
+// page keeps working; an MCAP without statistics reads with an unknown count. Screenshots of the chooser at 1280x800
+// and 390x844 go to test-results/.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -12,9 +13,9 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
 import { openLog } from 'rtl-wasm/logs';
-import { McapIndexedReader } from '@mcap/core';
+import { McapIndexedReader, McapWriter } from '@mcap/core';
 import { loadDecompressHandlers } from '@mcap/support';
-import { laserScanOf, stampOf, writeMcap } from '../js/ros-fixtures.mjs';
+import { TYPES, cdr, laserScanOf, stampOf, writeMcap } from '../js/ros-fixtures.mjs';
 import { DATA, PAGE_TIMEOUT, openDemoPage, openLesson, resultsDir } from './helpers.js';
 
 const SEG = { step: 3, lowerBound: 0.1, upperBound: 0.5 };
@@ -157,6 +158,36 @@ describe('open your own robot files: MCAP, ROS 1 bags, PCD', { timeout: 400000 }
     await page.selectOption('#scan-chooser', cloudOptions[1][0]);
     await page.waitForFunction(() => window.__rtl.source()?.scan === 1, null, { timeout: PAGE_TIMEOUT });
     await carRunsOn(page, xyOf(clouds[1].ring(best)));
+  });
+
+  test('an MCAP without statistics: the topic\'s count is unknown ("?"), the progress bar runs without a total, then ends at 100 %', async () => {
+    const chunks = [];
+    let pos = 0n;
+    const w = new McapWriter({ writable: { position: () => pos, write: async (b) => { chunks.push(b.slice()); pos += BigInt(b.byteLength); } },
+                               useStatistics: false, chunkSize: 8 * 1024 });
+    await w.start({ profile: 'ros2', library: 'rtl-wasm tests' });
+    const type = 'sensor_msgs/msg/LaserScan';
+    const schemaId = await w.registerSchema({ name: type, encoding: 'ros2msg', data: new TextEncoder().encode(TYPES[type]) });
+    const channelId = await w.registerChannel({ topic: '/front/scan', schemaId, messageEncoding: 'cdr', metadata: new Map() });
+    for (const [i, s] of intel.slice(0, 12).entries()) {
+      const t = BigInt(Math.round(s.timestamp * 1e9));
+      await w.addMessage({ channelId, sequence: i, logTime: t, publishTime: t, data: cdr(type, laserScanOf(s)) });
+    }
+    await w.end();
+    const bytes = new Uint8Array(Buffer.concat(chunks));
+    const node = await nodeScans(bytes, 'nostats.mcap', '/front/scan');
+    assert.deepEqual(node.topics, [{ name: '/front/scan', type, count: null }]);
+    await page.evaluate(() => { window.__messages.length = 0; });
+    await drop(page, 'nostats.mcap', bytes);
+    await waitMessage(page, /nostats\.mcap \/front\/scan: 12 scans read/);
+    assert.deepEqual(await topicOptions(page), [['/front/scan · LaserScan · ? messages', false]]);
+    const seen = await page.evaluate(() => window.__messages);
+    assert.ok(seen.includes('nostats.mcap: segmenting, 10 so far'), seen.join(' | '));
+    assert.ok(seen.includes('nostats.mcap: segmenting 100 %'), seen.join(' | '));
+    const options = await lastGroup(page);
+    await page.selectOption('#scan-chooser', options[11][0]);
+    await page.waitForFunction(() => window.__rtl.source()?.scan === 11, null, { timeout: PAGE_TIMEOUT });
+    await carRunsOn(page, node.scans[11].points);
   });
 
   for (const compression of ['none', 'lz4', 'bz2']) {
