@@ -2,10 +2,10 @@
 // CARMEN log, an organised PointCloud2 from the Ouster excerpt), the ROS 1 bags of tests/data/ros1 (written by the
 // rosbag Python package) and PCL's PCD files of tests/data/pcd, dropped or picked in real Chromium. Each opens: the
 // topic chooser lists the log's topics with their counts, the progress bar reaches 100 %, a chosen scan runs the 2D
-// lessons on the points the package gives in Node for the same file (to the last bit of a cosine); bad files (a truncated bag, a corrupt
-// MCAP, a PCD with points missing, a file of another kind) get the package's message under the file's name, and the
-// page keeps working; an MCAP without statistics reads with an unknown count. Screenshots of the chooser at 1280x800
-// and 390x844 go to test-results/.
+// lessons on the points the package gives in Node for the same file (to the last bit of a cosine); bad files (a
+// truncated bag, a corrupt MCAP, a PCD with points missing or miscounted, a file of another kind) get the package's
+// message under the file's name, and the page keeps working; an MCAP without statistics reads with an unknown count.
+// Screenshots of the chooser at 1280x800 and 390x844 go to test-results/.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
