@@ -7,6 +7,22 @@ export const DATASETS = {
   rellis: { url: '/tests/data/rellis3d-os1-4x2048.bin', label: 'RELLIS-3D Ouster OS1', unit: 'ring', beams: 4 },
 };
 
+// Plain arrays of an organised cloud (as a worker posts them) in readOrganizedLidar's shape: ring(b) and column(c)
+// gather their points (x,y,z; beam b of column c is point c * beams + b).
+export function organizedCloud({ beams, columns, points, intensity }) {
+  const ring = (b) => {
+    if (!(Number.isInteger(b) && b >= 0 && b < beams)) throw new RangeError(`ring: beam must be an integer in 0..${beams - 1}, got ${b}`);
+    const out = new Float64Array(3 * columns);
+    for (let c = 0; c < columns; c++) out.set(points.subarray(3 * (c * beams + b), 3 * (c * beams + b) + 3), 3 * c);
+    return out;
+  };
+  const column = (c) => {
+    if (!(Number.isInteger(c) && c >= 0 && c < columns)) throw new RangeError(`column: c must be an integer in 0..${columns - 1}, got ${c}`);
+    return points.slice(3 * c * beams, 3 * (c + 1) * beams);
+  };
+  return { beams, columns, points, intensity, ring, column };
+}
+
 export function createData(rtl) {
   const cache = new Map();
   const done = new Map();   // data sets read to the end: name -> scans (for synchronous use after load())
@@ -29,19 +45,23 @@ export function createData(rtl) {
     return cache.get(name);
   }
 
-  // A data set read elsewhere (the user's own file, web/open-data.js): `scans` as load() gives them. Replaces an
-  // earlier one of the same name.
-  function addDataset(name, { label, unit = 'scan', scans }) {
-    DATASETS[name] = { label, unit, user: true };
+  // A data set read elsewhere (the user's own file, web/open-data.js): `scans` as load() gives them, and for an
+  // organised 3D cloud (a PCD file) the cloud: { beams, columns, points (x,y,z column-major), intensity }, which
+  // loadCloud() then gives in readOrganizedLidar's shape. Replaces an earlier one of the same name.
+  function addDataset(name, { label, unit = 'scan', scans, cloud }) {
+    DATASETS[name] = { label, unit, user: true, cloud: Boolean(cloud) };
     cache.set(name, Promise.resolve(scans));
     done.set(name, scans);
+    if (cloud) cache.set(`${name}:cloud`, Promise.resolve(organizedCloud(cloud)));
+    else cache.delete(`${name}:cloud`);
   }
 
   // The scans of a data set already read by load(), or null (not read yet).
   const loaded = (name) => done.get(name) ?? null;
 
-  // The cloud itself (for the 3D view), read once.
+  // The cloud itself (for the 3D view), read once; a user's data set has one only if it came with it.
   async function loadCloud(name = 'rellis') {
+    if (DATASETS[name]?.user && !cache.has(`${name}:cloud`)) throw new RangeError(`data.loadCloud: ${DATASETS[name].label} is not an organised 3D cloud`);
     const key = `${name}:cloud`;
     if (!cache.has(key)) cache.set(key, (async () => {
       const d = DATASETS[name];

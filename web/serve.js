@@ -1,6 +1,9 @@
 #!/usr/bin/env node
-// Dependency-free static server for the demo page: serves the repository root on 127.0.0.1 so that the page can
-// load /dist/ (the built package), /tests/data/ (real scans) and /web/. Bound to loopback only: it is a dev tool.
+// Static server for the demo page: serves the repository root on 127.0.0.1 so that the page can load /dist/ (the
+// built package), /tests/data/ (real scans) and /web/. Bound to loopback only: it is a dev tool.
+// One path is built, not read: /vendor/rtl-wasm-logs.js, the package's `rtl-wasm/logs` entry bundled at serve time
+// with its optional peers (@mcap/*, @foxglove/*) from node_modules (web/vendor-logs.js), so that a Web Worker,
+// which sees no import map, can read MCAP files and ROS bags without a CDN. Everything else needs no dependency.
 //   node web/serve.js            -> http://127.0.0.1:8080/web/   (PORT=0 picks a free port)
 //   RTL_SERVE_ROOT=dir node web/serve.js   serves dir instead of the repository
 // The first stdout line is the page URL, so scripts and tests can read the port back.
@@ -8,6 +11,7 @@ import { createServer } from 'node:http';
 import { createReadStream, promises as fs } from 'node:fs';
 import { extname, join, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { LOGS_BUNDLE_PATH, bundleLogs } from './vendor-logs.js';
 
 // RTL_SERVE_ROOT serves another folder (e.g. a built app); by default the repository this file lives in.
 const ROOT = resolve(process.env.RTL_SERVE_ROOT || fileURLToPath(new URL('..', import.meta.url)));
@@ -68,6 +72,15 @@ export function createStaticServer(root = ROOT) {
       pathname = new URL(req.url, `http://${HOST}`).pathname;
     } catch {
       return send(res, 400, 'bad request');
+    }
+    if (pathname === LOGS_BUNDLE_PATH) {
+      try {
+        const code = await bundleLogs(root);
+        res.writeHead(200, { 'Content-Type': MIME['.js'], 'Content-Length': Buffer.byteLength(code), 'Cache-Control': 'no-cache' });
+        return res.end(req.method === 'HEAD' ? undefined : code);
+      } catch (e) {
+        return send(res, 503, `${LOGS_BUNDLE_PATH}: ${e.message}`);
+      }
     }
     let file = resolveInside(root, pathname);
     if (!file) return send(res, 403, 'forbidden');
