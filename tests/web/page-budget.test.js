@@ -107,8 +107,8 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     await page.hover('#lesson-title');
     assert.equal(await page.evaluate(() => window.__rtl.highlighted()), null);
     // the figure → the words: the middle of the radial error drawn in the magnifier
-    const { lens } = s, ux = x / range, uy = y / range, half = (lens.M * (r.expectedRanges[i] - range)) / 2;
-    const at = await page.evaluate(([px, py]) => window.__rtl.clientPoint(px, py), [lens.x + half * ux, lens.y + half * uy]);
+    const { lens } = s, ux = x / range, uy = y / range, along = 0.8 * lens.M * (r.expectedRanges[i] - range);   // near the far end: the middle of the magnifier is the ray's marker
+    const at = await page.evaluate(([px, py]) => window.__rtl.clientPoint(px, py), [lens.x + along * ux, lens.y + along * uy]);
     await page.mouse.move(at.x, at.y);
     await page.waitForFunction(() => document.querySelector('#lesson-text [data-q="radial"]').classList.contains('hot'), null, { timeout: PAGE_TIMEOUT });
     await page.mouse.move(5, 5);

@@ -72,14 +72,24 @@ export function beamErrors(beams, snap, i) {
 // half the RMSE, so the error is not rounding noise) and not an outlier (at most three times the RMSE), the one that
 // meets its line at the largest incidence up to 75° (beyond, the ray runs almost along the line and the picture of
 // the two distances is unreadable). null when no beam qualifies.
-export function grazingBeam(beams, snap) {
+// minRange: beams nearer the sensor are passed over (the magnifier sits between sensor and point) unless no other
+// beam qualifies.
+export function grazingBeam(beams, snap, minRange = 0) {
   let best = null;
   for (let i = 0; i < beams.n; i++) {
+    if (!(beams.range[i] >= minRange)) continue;
     const e = beamErrors(beams, snap, i);
     if (!e || e.radial < 0.5 * snap.rmse || e.radial > 3 * snap.rmse || e.incidence > 75) continue;
     if (!best || e.incidence > best.incidence) best = e;
   }
-  return best;
+  return best ?? (minRange > 0 ? grazingBeam(beams, snap) : null);
+}
+
+// The returned beams explained in `snap` but not in `before` (the beams a larger budget newly explains).
+export function newlyExplained(beams, before, snap) {
+  const out = [];
+  for (let i = 0; i < beams.n; i++) if (Number.isFinite(beams.range[i]) && Number.isFinite(snap.expected[i]) && !Number.isFinite(before.expected[i])) out.push(i);
+  return out;
 }
 
 // Runs of consecutive beam indices, as "a–b" text ("12–30, 41").

@@ -4,7 +4,7 @@
 // grazing incidence in a magnifier with its radial and orthogonal errors; the stage shows score, RMSE and f against J.
 import { INK, Scene } from '../figure.js';
 import { numberField, selectField, note, m, num } from './ui.js';
-import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam } from './budget-run.js';
+import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam, newlyExplained, runsText } from './budget-run.js';
 import { budgetChart } from './budget-chart.js';
 import { budgetQuestions } from './predict-questions.js';
 
@@ -63,7 +63,8 @@ export default {
         const all = [...run.points, 0, 0];
         host.figure.fitPoints(all);
         const xs = all.filter((v, j) => j % 2 === 0 && Number.isFinite(v)), ys = all.filter((v, j) => j % 2 === 1 && Number.isFinite(v));
-        run.size = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys), 1);
+        run.box = { minX: Math.min(...xs), maxX: Math.max(...xs), minY: Math.min(...ys), maxY: Math.max(...ys) };
+        run.size = Math.max(run.box.maxX - run.box.minX, run.box.maxY - run.box.minY, 1);
         const J = jField.read();
         return { steps: run.snaps.length, start: Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN };
       },
@@ -103,6 +104,10 @@ export default {
         s.segments(resXY, { colour: INK.current, width: 2, q: 'residuals' });
         s.points(unexplained, { colour: INK.fail, radius: 3.5, q: 'unexplained' });
         s.marker(0, 0, { colour: INK.candidate, shape: 'x', size: 5, q: 'sensor' });
+        // the beams this budget explains and one vertex fewer did not
+        const before = run.snaps[snap.J - J_MIN - 1];
+        run.gained = before ? newlyExplained(beams, before, snap) : [];
+        for (const i of run.gained) s.marker(points[2 * i], points[2 * i + 1], { colour: INK.ok, size: 6, q: 'gained' });
         run.gain = gain;
         run.grazing = grazingBeam(beams, snap);
         if (run.grazing) this.lens(s, snap, run.grazing, D);
@@ -115,10 +120,11 @@ export default {
         const px = r * ux, py = r * uy, { nx, ny } = g.line, off = px * nx + py * ny - g.line.r;
         s.segments([0, 0, px, py], { colour: INK.candidate, width: 1.5, dash: true, q: 'ray' });
         s.marker(px, py, { colour: INK.candidate, size: 6, q: 'ray' });
-        const R = Math.min(0.18 * D, r / 2.6), cx = px - 1.3 * R * ux, cy = py - 1.3 * R * uy;
-        const M = niceFloor((0.7 * R) / Math.max(g.radial, g.orthogonal, 1e-9));
+        const R = 0.16 * D, [cx, cy] = this.lensPlace(snap, px, py, ux, uy, R);
+        const M = niceFloor((0.95 * R) / Math.max(g.radial, g.orthogonal, 1e-9));
         const T = (x, y) => [cx + M * (x - px), cy + M * (y - py)];
-        s.segments([cx + R * ux, cy + R * uy, px, py], { colour: INK.muted, width: 1 });
+        const toP = Math.hypot(px - cx, py - cy) || 1;
+        s.segments([cx + (R * (px - cx)) / toP, cy + (R * (py - cy)) / toP, px, py], { colour: INK.muted, width: 1 });
         s.circle(cx, cy, R, { colour: INK.muted, fill: '#ffffff', width: 1.5 });
         const rayIn = clipToCircle(cx, cy, ux, uy, cx, cy, R);
         if (rayIn) s.segments(rayIn, { colour: INK.candidate, width: 1.5, dash: true, q: 'ray' });
@@ -132,6 +138,23 @@ export default {
         s.label(cx - R * 0.6, cy - R, `beam ${i}, ×${M}`, { colour: INK.segment, bold: true, offset: [0, 16] });
         run.lens = { M, R, x: cx, y: cy };
       },
+      // Where the magnifier hides the least of the scan: of spots along the beam's ray, at the corners and edges of the
+      // scan's extent, the one whose circle covers the fewest beams and vertices (ties: nearest the beam's point).
+      lensPlace(snap, px, py, ux, uy, R) {
+        const { minX, maxX, minY, maxY } = run.box, xy = [...run.points, ...snap.polylines.flat()];
+        const inX = [minX + R, (minX + maxX) / 2, maxX - R], inY = [minY + R, (minY + maxY) / 2, maxY - R];
+        const spots = [1.3, 2, 3].map((t) => [px - t * R * ux, py - t * R * uy]);
+        for (const x of inX) for (const y of inY) spots.push([x, y]);
+        let best = spots[0], bestKey = Infinity;
+        for (const [x, y] of spots) {
+          let covered = 0;
+          for (let j = 0; j + 1 < xy.length; j += 2) if ((xy[j] - x) ** 2 + (xy[j + 1] - y) ** 2 < (1.1 * R) ** 2) covered++;
+          if ((x - px) ** 2 + (y - py) ** 2 < R * R) covered += 1000;   // not over the beam's own point
+          const key = covered + Math.hypot(x - px, y - py) / (10 * R);
+          if (key < bestKey) { bestKey = key; best = [x, y]; }
+        }
+        return best;
+      },
       explain(k) {
         const snap = run.snaps[k], prev = run.snaps[k - 1], g = run.grazing;
         const unexplained = snap.returned - snap.explainedBeams;
@@ -142,9 +165,10 @@ export default {
           `and count as c = ${m(COST, 1)} each. Score f·RMSE² + (1 − f)·c² = <b>${num(snap.score, 4)} m²</b>.</p>`;
         if (prev) {
           const d = snap.score - prev.score;
-          html += d < 0 ? `<p class="why">One vertex more than J = ${prev.J} lowered the score from ${num(prev.score, 4)} to ${num(snap.score, 4)} m².</p>`
+          const gained = run.gained.length ? ` <span data-q="gained">${run.gained.length} beam${run.gained.length === 1 ? '' : 's'} newly explained</span> (${runsText(run.gained)}, green rings).` : '';
+          html += d < 0 ? `<p class="why">One vertex more than J = ${prev.J} lowered the score from ${num(prev.score, 4)} to ${num(snap.score, 4)} m².${gained}</p>`
             : d === 0 ? `<p class="why">One vertex more than J = ${prev.J} changes nothing: no polyline gains from a single vertex here (a new polyline needs two).</p>`
-              : `<p class="why">The score is <b>higher</b> than at J = ${prev.J} (${num(prev.score, 4)} m²): the package shares the budget out exactly by each polyline's line-fit error, but the final score is measured along the beams after the vertices are moved, and the two can disagree by a little.</p>`;
+              : `<p class="why">The score is <b>higher</b> than at J = ${prev.J} (${num(prev.score, 4)} m²): for each J the package picks the best combination of its candidate polylines as they are before the radial refinement; the refinement then improves some maps more than others (and polylines of neighbouring stretches can overlap), so the final score can end up above the one at J − 1.${gained}</p>`;
         }
         if (g) {
           const ratio = g.orthogonal > 0 ? g.radial / g.orthogonal : Infinity;
@@ -154,7 +178,7 @@ export default {
             `${Number.isFinite(ratio) ? `${num(ratio, 1)} times as far` : 'although it lies on the line\'s extension'}: orthogonal = radial × cos ${num(g.incidence, 0)}°. ` +
             `The closer a beam grazes its wall, the more a small miss across the line costs along the beam, which is why the package moves the vertices to fit the radial errors after its line fits.</p>`;
         }
-        html += `<p class="legend">Figure: black = the map, green dots = its vertices, grey = explained beams, red = unexplained beams, orange = each beam's r − r̂ ×${run.gain} toward where the map predicts it, blue = the example beam from the sensor (×), magnified ×${run.lens?.M ?? 1} in the circle.</p>`;
+        html += `<p class="legend">Figure: black = the map, green dots = its vertices, grey = explained beams, red = unexplained beams, green rings = beams explained since J − 1, orange = each beam's r − r̂ ×${run.gain} toward where the map predicts it, blue = the example beam from the sensor (×), magnified ×${run.lens?.M ?? 1} in the circle.</p>`;
         return html;
       },
       finalState() {
@@ -163,7 +187,7 @@ export default {
           J: snap?.J, vertexCount: snap?.vertexCount, polylines: snap?.polylines, rmse: snap?.rmse, explained: snap?.explained, score: snap?.score,
           expected: snap && Array.from(snap.expected),
           curve: run.snaps.map(({ J, vertexCount, rmse, explained, score }) => ({ J, vertexCount, rmse, explained, score })),
-          lens: run.lens, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
+          lens: run.lens, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
       },
       dispose() {},
     };
