@@ -196,6 +196,33 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.equal(await page.inputValue('#lesson-controls input[name="J"]'), '12');
   });
 
+  test('a scan of the user\'s choice (a link\'s source) runs whole, and says so', async () => {
+    await page.goto(`${server.origin}/web/#budget?src=intel%3A3&J=15`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 13, null, { timeout: PAGE_TIMEOUT });
+    const s = await finalState(page);
+    assert.match(s.where, /Intel Research Lab, scan 3/);
+    const r = rtl.extractPolylines(scans.intel[3].points, { maxVertices: 15 });
+    assert.equal(s.vertexCount, r.vertexCount);
+    assert.ok(close3(s.score, r.score));
+    assert.match(await page.textContent('#lesson-controls'), /Your chosen scan/);
+    assert.equal(await page.isDisabled('#lesson-controls select[name="scan"]'), true, 'the source, not the scan menu, decides');
+    assert.match(await page.evaluate(() => window.__rtl.link()), /src=intel%3A3/);
+  });
+
+  test('1280x800: figure, parameters and player on screen together', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.goto(`${server.origin}/web/#budget`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step !== null, null, { timeout: PAGE_TIMEOUT });
+    const box = (sel) => page.locator(sel).first().boundingBox();
+    const fig = await box('#canvas'), controls = await box('#lesson-controls'), player = await box('#player'), chart = await box('.budget-chart');
+    for (const [name, b] of [['figure', fig], ['parameters', controls], ['player', player]]) {
+      assert.ok(b.x >= 0 && b.y >= 0 && b.x + b.width <= 1280.5 && b.y + b.height <= 800.5, `${name} inside the screen: ${JSON.stringify(b)}`);
+    }
+    assert.ok(fig.width >= 600 && fig.height >= 380, `figure ${fig.width}x${fig.height}`);
+    assert.ok(chart.y >= fig.y + fig.height, 'the curves under the figure');
+    assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
+  });
+
   test('no console errors', async () => {
     assert.deepEqual(await page.evaluate(() => window.__rtl.errors), []);
     assert.deepEqual(problems, []);

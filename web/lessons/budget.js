@@ -40,7 +40,7 @@ export default {
     if (src) scanField.input.disabled = true;   // the chosen scan travels in the link as its source
     const jField = numberField(host.controls, { key: 'J', label: 'J: vertex budget for the whole scan', value: DEFAULT_J, min: J_MIN, max: J_MAX, step: 1, digits: 0,
       onInput: () => { const J = jField.read(); if (Number.isInteger(J)) host.goTo?.(J - J_MIN); } });
-    note(host.controls, 'Every map, expected range and score is the package\'s: one <code>extractPolylines(points, { maxVertices: J })</code> call per J (unexplained cost c = 0.5 m, link distance 1 m, its defaults).');
+    note(host.controls, `${src ? `<strong>Your chosen scan</strong> (${host.data.describe(src.dataset, src.scan)}), whole. ` : ''}Every map, expected range and score is the package's: one <code>extractPolylines(points, { maxVertices: J })</code> call per J (unexplained cost c = 0.5 m, link distance 1 m, its defaults); the player steps through J = ${J_MIN}, ${J_MIN + 1}, … ${J_MAX}.`);
     const chart = budgetChart(host.stage, (k) => host.goTo?.(k));
     const run = { snaps: [], points: null, beams: null, where: '', size: 1 };
     // recompute() is synchronous: every scan it may switch to is read now
@@ -134,6 +134,8 @@ export default {
         const rh = snap.expected[i], [hx, hy] = T(rh * ux, rh * uy);
         s.segments([cx, cy, hx, hy], { colour: INK.current, width: 3, q: 'radial' });
         s.segments([cx, cy, fx, fy], { colour: INK.ok, width: 3, q: 'orthogonal' });
+        s.label(hx, hy, 'along the beam', { colour: INK.current, q: 'radial' });
+        s.label(fx, fy, 'across', { colour: INK.ok, q: 'orthogonal', offset: [6, 14] });
         s.marker(cx, cy, { colour: INK.candidate, shape: 'dot', size: 6, q: 'ray' });
         s.label(cx - R * 0.6, cy - R, `beam ${i}, ×${M}`, { colour: INK.segment, bold: true, offset: [0, 16] });
         run.lens = { M, R, x: cx, y: cy };
