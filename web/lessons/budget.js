@@ -59,12 +59,15 @@ export default {
         run.beams = beamsOf(run.points);
         run.where = host.data.describe(dataset, scan);
         run.snaps = runBudgets(host.rtl, run.points, {});
-        // the extent: every beam and the sensor; its larger side sets the size of the enlargements
-        const all = [...run.points, 0, 0];
-        host.figure.fitPoints(all);
-        const xs = all.filter((v, j) => j % 2 === 0 && Number.isFinite(v)), ys = all.filter((v, j) => j % 2 === 1 && Number.isFinite(v));
-        run.box = { minX: Math.min(...xs), maxX: Math.max(...xs), minY: Math.min(...ys), maxY: Math.max(...ys) };
-        run.size = Math.max(run.box.maxX - run.box.minX, run.box.maxY - run.box.minY, 1);
+        // the extent: every beam, the sensor and, beside them on the right, the magnifier (so that it hides nothing
+        // and stays put while J changes); the larger side of the scan sets the size of the enlargements
+        const xs = [0], ys = [0];
+        for (let i = 0; i < run.beams.n; i++) if (Number.isFinite(run.beams.range[i])) { xs.push(run.points[2 * i]); ys.push(run.points[2 * i + 1]); }
+        const box = { minX: Math.min(...xs), maxX: Math.max(...xs), minY: Math.min(...ys), maxY: Math.max(...ys) };
+        run.size = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1);
+        const R = 0.2 * run.size;
+        run.lensAt = { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 };
+        host.figure.setExtent(box.minX, Math.min(box.minY, run.lensAt.y - R), run.lensAt.x + R, Math.max(box.maxY, run.lensAt.y + R));
         const J = jField.read();
         return { steps: run.snaps.length, start: Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN };
       },
@@ -120,7 +123,7 @@ export default {
         const px = r * ux, py = r * uy, { nx, ny } = g.line, off = px * nx + py * ny - g.line.r;
         s.segments([0, 0, px, py], { colour: INK.candidate, width: 1.5, dash: true, q: 'ray' });
         s.marker(px, py, { colour: INK.candidate, size: 6, q: 'ray' });
-        const R = 0.16 * D, [cx, cy] = this.lensPlace(snap, px, py, ux, uy, R);
+        const { R, x: cx, y: cy } = run.lensAt;
         const M = niceFloor((0.95 * R) / Math.max(g.radial, g.orthogonal, 1e-9));
         const T = (x, y) => [cx + M * (x - px), cy + M * (y - py)];
         const toP = Math.hypot(px - cx, py - cy) || 1;
@@ -137,25 +140,8 @@ export default {
         s.label(hx, hy, 'along the beam', { colour: INK.current, q: 'radial' });
         s.label(fx, fy, 'across', { colour: INK.ok, q: 'orthogonal', offset: [6, 14] });
         s.marker(cx, cy, { colour: INK.candidate, shape: 'dot', size: 6, q: 'ray' });
-        s.label(cx - R * 0.6, cy - R, `beam ${i}, ×${M}`, { colour: INK.segment, bold: true, offset: [0, 16] });
+        s.label(cx - R * 0.6, cy - R, `beam ${i}, enlarged ×${M}`, { colour: INK.segment, bold: true, offset: [0, 16] });
         run.lens = { M, R, x: cx, y: cy };
-      },
-      // Where the magnifier hides the least of the scan: of spots along the beam's ray, at the corners and edges of the
-      // scan's extent, the one whose circle covers the fewest beams and vertices (ties: nearest the beam's point).
-      lensPlace(snap, px, py, ux, uy, R) {
-        const { minX, maxX, minY, maxY } = run.box, xy = [...run.points, ...snap.polylines.flat()];
-        const inX = [minX + R, (minX + maxX) / 2, maxX - R], inY = [minY + R, (minY + maxY) / 2, maxY - R];
-        const spots = [1.3, 2, 3].map((t) => [px - t * R * ux, py - t * R * uy]);
-        for (const x of inX) for (const y of inY) spots.push([x, y]);
-        let best = spots[0], bestKey = Infinity;
-        for (const [x, y] of spots) {
-          let covered = 0;
-          for (let j = 0; j + 1 < xy.length; j += 2) if ((xy[j] - x) ** 2 + (xy[j + 1] - y) ** 2 < (1.1 * R) ** 2) covered++;
-          if ((x - px) ** 2 + (y - py) ** 2 < R * R) covered += 1000;   // not over the beam's own point
-          const key = covered + Math.hypot(x - px, y - py) / (10 * R);
-          if (key < bestKey) { bestKey = key; best = [x, y]; }
-        }
-        return best;
       },
       explain(k) {
         const snap = run.snaps[k], prev = run.snaps[k - 1], g = run.grazing;
