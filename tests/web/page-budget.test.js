@@ -55,12 +55,17 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.match(await page.textContent('#lesson-text [data-q="residuals"]'), new RegExp(`RMSE ${s.rmse.toFixed(3)} m`));
     assert.equal(await page.$$eval('.budget-chart .pick', (els) => els.length), 2 * 59, 'one clickable column per J in each panel');
     assert.equal(await page.$$eval('.budget-chart .series-score', (els) => els.length), 1);
+    // each size opened afresh, as a phone or a projector would (the lesson places its magnifier for the canvas)
     for (const [w, h] of [[1280, 800], [390, 844], [1920, 1080]]) {
       await page.setViewportSize({ width: w, height: h });
+      await page.reload();
+      await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
       await page.waitForTimeout(200);
       await page.screenshot({ path: join(SCREENSHOTS, `budget-${w}x${h}.png`), fullPage: w === 390 });
     }
     await page.setViewportSize({ width: 1280, height: 800 });
+    await page.reload();
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
   });
 
   test('moving J (slider, player, chart) changes the map; never more than J vertices', async () => {

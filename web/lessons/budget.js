@@ -66,8 +66,11 @@ export default {
         const box = { minX: Math.min(...xs), maxX: Math.max(...xs), minY: Math.min(...ys), maxY: Math.max(...ys) };
         run.size = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1);
         const R = 0.2 * run.size;
-        run.lensAt = { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 };
-        host.figure.setExtent(box.minX, Math.min(box.minY, run.lensAt.y - R), run.lensAt.x + R, Math.max(box.maxY, run.lensAt.y + R));
+        // a wide canvas puts it on the right, a tall one (a phone) below, with room for its labels
+        const c = host.figure.canvas, wide = !(c.clientHeight > 0) || c.clientWidth / c.clientHeight >= 1.2;
+        run.lensAt = wide ? { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 } : { R, x: (box.minX + box.maxX) / 2, y: box.minY - 1.2 * R };
+        const L = run.lensAt;
+        host.figure.setExtent(Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R));
         const J = jField.read();
         return { steps: run.snaps.length, start: Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN };
       },
@@ -137,10 +140,10 @@ export default {
         const rh = snap.expected[i], [hx, hy] = T(rh * ux, rh * uy);
         s.segments([cx, cy, hx, hy], { colour: INK.current, width: 3, q: 'radial' });
         s.segments([cx, cy, fx, fy], { colour: INK.ok, width: 3, q: 'orthogonal' });
-        s.label(hx, hy, 'along the beam', { colour: INK.current, q: 'radial' });
-        s.label(fx, fy, 'across', { colour: INK.ok, q: 'orthogonal', offset: [6, 14] });
+        s.label(hx, hy, 'radial', { colour: INK.current, q: 'radial' });
+        s.label(fx, fy, 'orthogonal', { colour: INK.ok, q: 'orthogonal', offset: [6, 14] });
         s.marker(cx, cy, { colour: INK.candidate, shape: 'dot', size: 6, q: 'ray' });
-        s.label(cx - R * 0.6, cy - R, `beam ${i}, enlarged ×${M}`, { colour: INK.segment, bold: true, offset: [0, 16] });
+        s.label(cx - R, cy - R, `beam ${i}, enlarged ×${M}`, { colour: INK.segment, bold: true, offset: [0, 16] });
         run.lens = { M, R, x: cx, y: cy };
       },
       explain(k) {
@@ -166,7 +169,7 @@ export default {
             `${Number.isFinite(ratio) ? `${num(ratio, 1)} times as far` : 'although it lies on the line\'s extension'}: orthogonal = radial × cos ${num(g.incidence, 0)}°. ` +
             `The closer a beam grazes its wall, the more a small miss across the line costs along the beam, which is why the package moves the vertices to fit the radial errors after its line fits.</p>`;
         }
-        html += `<p class="legend">Figure: black = the map, green dots = its vertices, grey = explained beams, red = unexplained beams, green rings = beams explained since J − 1, orange = each beam's r − r̂ ×${run.gain} toward where the map predicts it, blue = the example beam from the sensor (×), magnified ×${run.lens?.M ?? 1} in the circle.</p>`;
+        html += `<p class="legend">Figure: black = the map, green dots = its vertices, grey = explained beams, red = unexplained beams, green rings = beams explained since J − 1, orange = each beam's r − r̂ ×${run.gain} toward where the map predicts it, blue = the example beam from the sensor (×), enlarged ×${run.lens?.M ?? 1} in the circle: its radial error (orange, along the beam) and orthogonal distance (green, across the line).</p>`;
         return html;
       },
       finalState() {
