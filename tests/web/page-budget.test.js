@@ -61,7 +61,7 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
       await page.reload();
       await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
       await page.waitForTimeout(200);
-      await page.screenshot({ path: join(SCREENSHOTS, `budget-${w}x${h}.png`), fullPage: w === 390 });
+      await page.screenshot({ path: join(SCREENSHOTS, `page-budget-${w}x${h}.png`), fullPage: w === 390 });
     }
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.reload();
