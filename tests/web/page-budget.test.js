@@ -180,6 +180,23 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     await page.click('#your-turn');
   });
 
+  test('CSAIL scan 16: where one vertex more scores worse, the text says so and the chart marks it', async () => {
+    await page.selectOption('#lesson-controls select[name="scan"]', 'csail:16');
+    await page.waitForFunction(() => /CSAIL, scan 16/.test(window.__rtl.finalState()?.where), null, { timeout: PAGE_TIMEOUT });
+    const points = scans.csail[16].points;
+    const scores = [];
+    for (let J = 2; J <= 60; J++) scores.push(rtl.extractPolylines(points, { maxVertices: J }).score);
+    const rises = scores.map((v, i) => i > 0 && v > scores[i - 1]).map((r, i) => (r ? i + 2 : 0)).filter(Boolean);
+    assert.ok(rises.length > 0, 'this scan has a budget that scores worse than one vertex fewer');
+    const J = rises[0];
+    await setJ(page, J);
+    const s = await finalState(page);
+    assert.ok(close3(s.score, scores[J - 2]));
+    const why = await page.textContent('#lesson-text .why');
+    assert.match(why, new RegExp(`The score is higher than at J = ${J - 1} \\(${scores[J - 3].toFixed(4)} m²\\)`));
+    assert.equal(await page.$$eval('.budget-chart circle[fill="#C0392B"]', (els) => els.length), rises.length, 'one red dot per rise');
+  });
+
   test('a link restores scan and J (and the step), also after a reload', async () => {
     await page.goto(`${server.origin}/web/#budget?scan=csail%3A5&J=33`);
     await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step !== null, null, { timeout: PAGE_TIMEOUT });

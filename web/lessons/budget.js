@@ -166,7 +166,7 @@ export default {
           html += `<p><b>Why radial?</b> A range sensor errs along its beam, so each beam's error is <span data-q="residuals">r − r̂ along its own ray</span> (orange, drawn ×${run.gain}). ` +
             `A line fit measures the distance across the line instead. <span data-q="ray">Beam ${g.beam}</span> meets its line at ${num(g.incidence, 0)}° from the line's normal: its point is only ` +
             `<span data-q="orthogonal">${m(g.orthogonal)} from the line</span> (green), but <span data-q="radial">${m(g.radial)} from it along the beam</span> (orange), ` +
-            `${Number.isFinite(ratio) ? `${num(ratio, 1)} times as far` : 'although it lies on the line\'s extension'}: orthogonal = radial × cos ${num(g.incidence, 0)}°. ` +
+            `${Number.isFinite(ratio) ? `${num(ratio, 1)} times as far` : 'although it lies on the line\'s extension'}: orthogonal = radial × cos ${num(g.incidence, 0)}°. A beam meeting its wall head-on (0°) would have the two equal. ` +
             `The closer a beam grazes its wall, the more a small miss across the line costs along the beam, which is why the package moves the vertices to fit the radial errors after its line fits.</p>`;
         }
         html += `<p class="legend">Figure: black = the map, green dots = its vertices, grey = explained beams, red = unexplained beams, green rings = beams explained since J − 1, orange = each beam's r − r̂ ×${run.gain} toward where the map predicts it, blue = the example beam from the sensor (×), enlarged ×${run.lens?.M ?? 1} in the circle: its radial error (orange, along the beam) and orthogonal distance (green, across the line).</p>`;
