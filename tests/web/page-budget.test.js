@@ -152,6 +152,11 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     };
     let q = await forwardToQuestion();
     assert.equal(await stepOf(page), q - 1, 'stopped before the budget it asks about');
+    // the J slider cannot skip the question either: it stays at the J shown
+    await page.fill('#lesson-controls input[name="J"]', String(q + 10));
+    await page.dispatchEvent('#lesson-controls input[name="J"]', 'input');
+    assert.equal(await stepOf(page), q - 1);
+    assert.equal(await page.inputValue('#lesson-controls input[name="J"]'), String(q + 1));
     let c = candidates(q);
     assert.ok(c.gained.length >= 3 && c.stays.length > 0);
     await page.screenshot({ path: join(SCREENSHOTS, 'predict-budget-question-1280x800.png') });

@@ -36,10 +36,16 @@ export default {
   summary: 'At most J vertices for a whole scan: where does the package spend them, and how far off is each beam along its own ray?',
   async create(host) {
     const src = host.source;
+    let shown = -1;   // the step on screen
     const scanField = selectField(host.controls, { key: 'scan', label: 'scan', options: src ? [['', 'your chosen scan']] : SCANS, value: src ? '' : SCANS[0][0], onInput: host.onParamsChanged });
     if (src) scanField.input.disabled = true;   // the chosen scan travels in the link as its source
     const jField = numberField(host.controls, { key: 'J', label: 'J: vertex budget for the whole scan', value: DEFAULT_J, min: J_MIN, max: J_MAX, step: 1, digits: 0,
-      onInput: () => { const J = jField.read(); if (Number.isInteger(J)) host.goTo?.(J - J_MIN); } });
+      onInput: () => {
+        const J = jField.read();
+        if (Number.isInteger(J)) host.goTo?.(J - J_MIN);
+        // a pending "your turn" question holds the player: the slider goes back to the J shown
+        if (run.snaps[shown]) jField.set(run.snaps[shown].J);
+      } });
     note(host.controls, `${src ? `<strong>Your chosen scan</strong> (${host.data.describe(src.dataset, src.scan)}), whole. ` : ''}Every map, expected range and score is the package's: one <code>extractPolylines(points, { maxVertices: J })</code> call per J (unexplained cost c = 0.5 m, link distance 1 m, its defaults); the player steps through J = ${J_MIN}, ${J_MIN + 1}, … ${J_MAX}.`);
     const chart = budgetChart(host.stage, (k) => host.goTo?.(k));
     const run = { snaps: [], points: null, beams: null, where: '', size: 1 };
@@ -75,7 +81,7 @@ export default {
         return { steps: run.snaps.length, start: Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN };
       },
       show(k) {
-        this.step = k;
+        this.step = shown = k;
         const snap = run.snaps[k];
         if (!snap) { host.text.textContent = 'No scan.'; return; }
         jField.set(snap.J);
