@@ -185,6 +185,35 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     await page.click('#your-turn');
   });
 
+  test('the unexplained cost c: the package\'s numbers at another c, and a bad c marked until fixed', async () => {
+    await setJ(page, 20);
+    const points = scans.intel[21].points;
+    const setC = async (v) => {
+      const rev = await page.evaluate(() => window.__rtl.revision);
+      await page.fill('#lesson-controls input[name="c"]', String(v));
+      await page.dispatchEvent('#lesson-controls input[name="c"]', 'input');
+      await page.waitForFunction((r) => window.__rtl.revision > r, rev, { timeout: PAGE_TIMEOUT });
+    };
+    await setC(0.2);
+    let s = await finalState(page);
+    const r = rtl.extractPolylines(points, { maxVertices: 20, unexplainedCost: 0.2 }), r5 = rtl.extractPolylines(points, { maxVertices: 20 });
+    assert.equal(s.cost, 0.2);
+    assert.equal(s.J, 20, 'J stays');
+    assert.ok(close3(s.score, r.score) && close3(s.rmse, r.rmse) && close3(s.explained, r.explained));
+    assert.notEqual(r.score, r5.score, 'c changes the result');
+    assert.match(await page.textContent('#lesson-text'), /count as c = 0\.20 m each/);
+    assert.match(await page.evaluate(() => window.__rtl.link()), /[?&]c=0\.2(&|$)/);
+    await setC(0);
+    assert.equal(await page.getAttribute('#lesson-controls input[name="c"]', 'aria-invalid'), 'true');
+    assert.equal(await page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'budget').steps), 0);
+    assert.match(await page.textContent('#lesson-text'), /Fix the marked parameter/);
+    await setC(0.5);
+    assert.equal(await page.getAttribute('#lesson-controls input[name="c"]', 'aria-invalid'), null);
+    s = await finalState(page);
+    assert.equal(s.J, 20, 'J survives the parameter error');
+    assert.ok(close3(s.score, r5.score));
+  });
+
   test('CSAIL scan 16: where one vertex more scores worse, the text says so and the chart marks it', async () => {
     await page.selectOption('#lesson-controls select[name="scan"]', 'csail:16');
     await page.waitForFunction(() => /CSAIL, scan 16/.test(window.__rtl.finalState()?.where), null, { timeout: PAGE_TIMEOUT });
@@ -213,7 +242,7 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.ok(close3(s.score, r.score));
     await setJ(page, 12);
     const link = await page.evaluate(() => window.__rtl.link());
-    assert.match(link, /#budget\?scan=csail%3A5&J=12&at=11$/);
+    assert.match(link, /#budget\?scan=csail%3A5&J=12&c=0\.5&at=11$/);
     await page.goto('about:blank');
     await page.goto(link);
     await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step !== null, null, { timeout: PAGE_TIMEOUT });

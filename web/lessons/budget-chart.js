@@ -75,6 +75,7 @@ export function budgetChart(parent, onPick) {
   });
   return {
     update(snaps, k) {
+      if (!snaps.length) { svg.replaceChildren(); legend.textContent = ''; return; }
       const xs = snaps.map((s) => s.J), chosen = snaps[k]?.J ?? xs[0];
       const score = snaps.map((s) => s.score), rmse = snaps.map((s) => s.rmse), f = snaps.map((s) => s.explained);
       // a budget whose score is above the one before it (more vertices, a worse map) is marked

@@ -7,6 +7,7 @@ import { numberField, selectField, note, m, num } from './ui.js';
 import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam, newlyExplained, runsText } from './budget-run.js';
 import { budgetChart } from './budget-chart.js';
 import { budgetQuestions } from './predict-questions.js';
+import { readParams, positive, explainNoSteps } from './common.js';
 
 // The scans offered (bundled excerpts), the first by default: intel 21 explains 77 % of its beams at J = 20 and
 // gains beams at 19 of the 59 budgets, so the budget visibly decides what is explained.
@@ -46,7 +47,9 @@ export default {
         // a pending "your turn" question holds the player: the slider goes back to the J shown
         if (run.snaps[shown]) jField.set(run.snaps[shown].J);
       } });
-    note(host.controls, `${src ? `<strong>Your chosen scan</strong> (${host.data.describe(src.dataset, src.scan)}), whole. ` : ''}Every map, expected range and score is the package's: one <code>extractPolylines(points, { maxVertices: J })</code> call per J (unexplained cost c = 0.5 m, link distance 1 m, its defaults); the player steps through J = ${J_MIN}, ${J_MIN + 1}, … ${J_MAX}.`);
+    const costField = numberField(host.controls, { key: 'c', label: 'c: unexplained cost (m)', kind: 'number', value: COST, min: 0.05, max: 5, step: 0.05,
+      hint: 'a beam left unexplained counts as c²', onInput: host.onParamsChanged });
+    note(host.controls, `${src ? `<strong>Your chosen scan</strong> (${host.data.describe(src.dataset, src.scan)}), whole. ` : ''}Every map, expected range and score is the package's: one <code>extractPolylines(points, { maxVertices: J, unexplainedCost: c })</code> call per J (link distance 1 m, its default); the player steps through J = ${J_MIN}, ${J_MIN + 1}, … ${J_MAX}.`);
     const chart = budgetChart(host.stage, (k) => host.goTo?.(k));
     const run = { snaps: [], points: null, beams: null, where: '', size: 1 };
     // recompute() is synchronous: every scan it may switch to is read now
@@ -64,7 +67,10 @@ export default {
         run.points = scans[scan].points;
         run.beams = beamsOf(run.points);
         run.where = host.data.describe(dataset, scan);
-        run.snaps = runBudgets(host.rtl, run.points, {});
+        const params = readParams({ c: costField }, ({ c }) => (positive(c) ? { c: positive(c) } : {}));
+        if (!params) { run.snaps = []; chart.update([], -1); return { steps: 0 }; }
+        run.cost = params.c;
+        run.snaps = runBudgets(host.rtl, run.points, { unexplainedCost: run.cost });
         // the extent: every beam, the sensor and, beside them on the right, the magnifier (so that it hides nothing
         // and stays put while J changes); the larger side of the scan sets the size of the enlargements
         const xs = [0], ys = [0];
@@ -77,13 +83,15 @@ export default {
         run.lensAt = wide ? { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 } : { R, x: (box.minX + box.maxX) / 2, y: box.minY - 1.2 * R };
         const L = run.lensAt;
         host.figure.setExtent(Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R));
-        const J = jField.read();
-        return { steps: run.snaps.length, start: Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN };
+        // the J slider holds the budget shown (show() keeps it current), so a new scan or c keeps J, also after a
+        // parameter error emptied the player
+        const J = jField.read(), k = Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN;
+        return { steps: run.snaps.length, start: k, jump: k };
       },
       show(k) {
         this.step = shown = k;
         const snap = run.snaps[k];
-        if (!snap) { host.text.textContent = 'No scan.'; return; }
+        if (!snap) { host.figure.show(new Scene('A vertex budget')); explainNoSteps(host, null); return; }
         jField.set(snap.J);
         chart.update(run.snaps, k);
         host.figure.show(this.scene(snap));
@@ -159,7 +167,7 @@ export default {
           `<span data-q="map">${snap.polylines.length} polyline${snap.polylines.length === 1 ? '' : 's'}</span>. They explain ` +
           `<span data-q="explained">${snap.explainedBeams} of the ${snap.returned} returned beams (f = ${num(snap.explained)})</span> with ` +
           `<span data-q="residuals">RMSE ${m(snap.rmse)}</span> along the beams; <span data-q="unexplained">${unexplained} beam${unexplained === 1 ? ' is' : 's are'} unexplained</span> ` +
-          `and count as c = ${m(COST, 1)} each. Score f·RMSE² + (1 − f)·c² = <b>${num(snap.score, 4)} m²</b>.</p>`;
+          `and count as c = ${m(run.cost, 2)} each. Score f·RMSE² + (1 − f)·c² = <b>${num(snap.score, 4)} m²</b>.</p>`;
         if (prev) {
           const d = snap.score - prev.score;
           const gained = run.gained.length ? ` <span data-q="gained">${run.gained.length} beam${run.gained.length === 1 ? '' : 's'} newly explained</span> (${runsText(run.gained)}, green rings).` : '';
@@ -180,7 +188,7 @@ export default {
       },
       finalState() {
         const k = this.step ?? -1, snap = run.snaps[k];
-        return { method: 'budget', where: run.where, step: k, steps: run.snaps.length, points: run.points && Array.from(run.points),
+        return { method: 'budget', where: run.where, cost: run.cost, step: k, steps: run.snaps.length, points: run.points && Array.from(run.points),
           J: snap?.J, vertexCount: snap?.vertexCount, polylines: snap?.polylines, rmse: snap?.rmse, explained: snap?.explained, score: snap?.score,
           expected: snap && Array.from(snap.expected),
           curve: run.snaps.map(({ J, vertexCount, rmse, explained, score }) => ({ J, vertexCount, rmse, explained, score })),
