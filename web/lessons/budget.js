@@ -49,7 +49,7 @@ export default {
       } });
     const costField = numberField(host.controls, { key: 'c', label: 'c: unexplained cost (m)', kind: 'number', value: COST, min: 0.05, max: 5, step: 0.05,
       hint: 'a beam left unexplained counts as c²', onInput: host.onParamsChanged });
-    note(host.controls, `${src ? `<strong>Your chosen scan</strong> (${host.data.describe(src.dataset, src.scan)}), whole. ` : ''}Every map, expected range and score is the package's: one <code>extractPolylines(points, { maxVertices: J, unexplainedCost: c })</code> call per J (link distance 1 m, its default); the player steps through J = ${J_MIN}, ${J_MIN + 1}, … ${J_MAX}.`);
+    note(host.controls, `${src ? `<strong>Your chosen scan</strong> (${host.data.describe(src.dataset, src.scan)}), whole. ` : ''}All numbers are the package's: <code>extractPolylines(points, { maxVertices: J, unexplainedCost: c })</code> for J = ${J_MIN} … ${J_MAX}, one per step of the player.`);
     const chart = budgetChart(host.stage, (k) => host.goTo?.(k));
     const run = { snaps: [], points: null, beams: null, where: '', size: 1 };
     // recompute() is synchronous: every scan it may switch to is read now
