@@ -8,9 +8,10 @@ import aftls from './aftls.js';
 import itls from './itls.js';
 import dp from './dp.js';
 import rw from './rw.js';
+import budget from './budget.js';
 import compare from './compare.js';
 import tfTree from './tf-tree.js';
 import tracking from './tracking.js';
 import lidar3d from './lidar3d.js';
 
-export default [overview, tlsFit, car, ia, ftls, aftls, itls, dp, rw, compare, tfTree, tracking, lidar3d];
+export default [overview, tlsFit, car, ia, ftls, aftls, itls, dp, rw, budget, compare, tfTree, tracking, lidar3d];

@@ -1,6 +1,8 @@
 // The "your turn" questions (web/predict.js) of each trace lesson, read off the package's trace: which event is
 // decisive, what the right answer is and why, in the trace's own numbers. Nothing is computed here that the trace
 // does not already say. Each function returns `predict` for a lesson instance: { ask(k) → question | null }.
+import { newlyExplained, runsText } from './budget-run.js';
+
 const f3 = (v) => (Number.isFinite(v) ? `${v.toFixed(3)} m` : 'infinitely far (the lines are parallel)');
 const YES_NO = [{ value: 'yes', label: 'Yes' }, { value: 'no', label: 'No' }];
 
@@ -86,6 +88,40 @@ export function cornerQuestions(run, chain) {
           const right = (given === 'yes') === e.ok;
           const why = `the two lines cross ${f3(e.crossingDistance)} from the middle of points ${e.boundary - 1} and ${e.boundary}, ${e.ok ? 'within' : 'beyond'} δ = ${f3(e.delta)}`;
           return { right, html: `${e.ok ? 'It meets' : 'It does not meet'}: ${why}${e.ok ? '' : ', so the partition must be repaired there'}.` };
+        },
+      };
+    },
+  };
+}
+
+// The vertex budget: when one more vertex explains beams that were unexplained, "click a beam the bigger budget will
+// explain" among those unexplained now (ringed). run = { snaps (extractPolylines results per J), points, beams
+// (budget-run.js) }; only the package's expected ranges say which beams are explained (r̂ finite) and by how much
+// they miss.
+export function budgetQuestions(run) {
+  const unexplainedIn = (snap) => {
+    const out = [];
+    for (let i = 0; i < run.beams.n; i++) if (Number.isFinite(run.beams.range[i]) && !Number.isFinite(snap.expected[i])) out.push(i);
+    return out;
+  };
+  return {
+    ask(k) {
+      const before = run.snaps[k - 1], after = run.snaps[k];
+      if (!before || !after) return null;
+      const was = unexplainedIn(before), gained = newlyExplained(run.beams, before, after);
+      // a real choice: several beams newly explained, others that stay unexplained
+      if (gained.length < 3 || gained.length === was.length) return null;
+      const range = (i) => run.beams.range[i];
+      const change = `the score went from ${before.score.toFixed(4)} to ${after.score.toFixed(4)} m²`;
+      return {
+        prompt: `The budget grows from J = ${before.J} to J = ${after.J}. ${was.length} beams are unexplained now (ringed). The package spends the budget where the score falls most: click one beam it will explain at J = ${after.J}.`,
+        points: pointsOf(run.points, was),
+        check(given) {
+          const p = Number(given), where = `beams ${runsText(gained)} (${gained.length} beams)`;
+          if (Number.isFinite(after.expected[p])) {
+            return { right: true, html: `Beam ${p} is explained at J = ${after.J}: it misses the map by ${f3(Math.abs(range(p) - after.expected[p]))} along its ray instead of counting as the unexplained cost. The budget went to ${where}; ${change}.` };
+          }
+          return { right: false, html: `You picked beam ${p}: it stays unexplained at J = ${after.J}. The package spent the budget on ${where}, a stretch that lines explain well; ${change}.` };
         },
       };
     },

@@ -1,0 +1,286 @@
+// The lesson "a vertex budget" in real Chromium: the score / RMSE / f curve against J is the package's (the same
+// extractPolylines calls repeated here in Node), J moves the map, the text's quantities light their figure items, the
+// "your turn" question is judged by the package's expected ranges, and a link restores scan and J.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import init from 'rtl-wasm';
+import { DATA, PAGE_TIMEOUT, SCREENSHOTS, openDemoPage, openLesson } from './helpers.js';
+
+const stepOf = (page) => page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'budget').step);
+const finalState = (page) => page.evaluate(() => window.__rtl.finalState());
+const predictState = (page) => page.evaluate(() => window.__rtl.predict());
+const waitStep = (page, k) => page.waitForFunction((s) => window.__rtl.lessons.find((l) => l.id === 'budget').step === s, k, { timeout: PAGE_TIMEOUT });
+const close3 = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(b));
+
+async function setJ(page, J) {
+  await page.fill('#lesson-controls input[name="J"]', String(J));
+  await page.dispatchEvent('#lesson-controls input[name="J"]', 'input');
+  await waitStep(page, J - 2);
+}
+
+describe('lesson: a vertex budget', { timeout: 300000 }, () => {
+  let page, problems, close, server, rtl, scans;
+  before(async () => {
+    rtl = await init();
+    scans = { intel: rtl.readCarmenLog(readFileSync(join(DATA, 'intel.log'), 'utf8')), csail: rtl.readCarmenLog(readFileSync(join(DATA, 'csail.log'), 'utf8')) };
+    mkdirSync(SCREENSHOTS, { recursive: true });
+    ({ page, problems, close, server } = await openDemoPage('/web/#budget'));
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.evaluate(() => sessionStorage.clear());
+  });
+  after(() => close?.());
+
+  test('opens on Intel scan 21 at J = 20; the curve is the package\'s and its score falls with J', async () => {
+    const entry = await openLesson(page, 'budget');
+    assert.equal(entry.steps, 59, 'J = 2..60');
+    assert.equal(await stepOf(page), 18);
+    const s = await finalState(page);
+    assert.equal(s.J, 20);
+    assert.match(s.where, /Intel Research Lab, scan 21/);
+    const points = scans.intel[21].points;
+    assert.deepEqual(s.points.map((v) => (Number.isNaN(v) ? null : v)), Array.from(points, (v) => (Number.isNaN(v) ? null : v)));
+    for (const c of s.curve) {
+      const r = rtl.extractPolylines(points, { maxVertices: c.J });
+      assert.equal(c.vertexCount, r.vertexCount, `J = ${c.J}`);
+      assert.ok(c.vertexCount <= c.J);
+      for (const key of ['score', 'rmse', 'explained']) assert.ok(close3(c[key], r[key]), `J = ${c.J} ${key}: ${c[key]} vs ${r[key]}`);
+    }
+    // monotone in score on this scan: more vertices never make its map worse
+    for (let i = 1; i < s.curve.length; i++) assert.ok(s.curve[i].score <= s.curve[i - 1].score, `J = ${s.curve[i].J}: ${s.curve[i].score} > ${s.curve[i - 1].score}`);
+    assert.ok(s.curve[0].score > 2 * s.curve.at(-1).score, 'the budget matters on this scan');
+    // the text quotes the package's numbers
+    assert.equal(await page.textContent('#lesson-text [data-q="vertices"]'), `${s.vertexCount} vertices`);
+    assert.match(await page.textContent('#lesson-text [data-q="residuals"]'), new RegExp(`RMSE ${s.rmse.toFixed(3)} m`));
+    assert.equal(await page.$$eval('.budget-chart .pick', (els) => els.length), 2 * 59, 'one clickable column per J in each panel');
+    assert.equal(await page.$$eval('.budget-chart .series-score', (els) => els.length), 1);
+    // each size opened afresh, as a phone or a projector would (the lesson places its magnifier for the canvas)
+    for (const [w, h] of [[1280, 800], [390, 844], [1920, 1080]]) {
+      await page.setViewportSize({ width: w, height: h });
+      await page.reload();
+      await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
+      await page.waitForTimeout(200);
+      await page.screenshot({ path: join(SCREENSHOTS, `page-budget-${w}x${h}.png`), fullPage: w === 390 });
+    }
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.reload();
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
+  });
+
+  test('moving J (slider, player, chart) changes the map; never more than J vertices', async () => {
+    const at20 = await finalState(page);
+    await setJ(page, 8);
+    const at8 = await finalState(page);
+    assert.equal(at8.J, 8);
+    assert.ok(at8.vertexCount <= 8);
+    assert.equal(at8.polylines.reduce((n, p) => n + p.length / 2, 0), at8.vertexCount, 'the vertices drawn are the vertices counted');
+    assert.notDeepEqual(at8.polylines, at20.polylines);
+    const r = rtl.extractPolylines(scans.intel[21].points, { maxVertices: 8 });
+    assert.deepEqual(at8.polylines, r.polylines.map((p) => Array.from(p)));
+    await page.click('#player [data-act="forward"]');
+    await waitStep(page, 7);
+    assert.equal(await page.inputValue('#lesson-controls input[name="J"]'), '9', 'the J slider follows the player');
+    // the chart: a click on J's column
+    const box = await page.locator('.budget-chart svg').first().boundingBox();
+    const col = page.locator('.budget-chart svg').first().locator('.pick[data-k="38"]');
+    await col.click({ position: { x: 1, y: 10 } });
+    await waitStep(page, 38);
+    assert.ok(box.width > 100);
+    const at40 = await finalState(page);
+    assert.equal(at40.J, 40);
+    assert.ok(at40.vertexCount <= 40 && at40.vertexCount > at8.vertexCount);
+  });
+
+  test('the grazing beam: its radial and orthogonal errors light their figure items, and back', async () => {
+    await setJ(page, 20);
+    const s = await finalState(page), g = s.grazing, i = g.beam;
+    // independently: r − r̂ from the package's expected range, the orthogonal distance from that beam's segment line
+    const r = rtl.extractPolylines(scans.intel[21].points, { maxVertices: 20 });
+    const x = s.points[2 * i], y = s.points[2 * i + 1], range = Math.hypot(x, y);
+    assert.ok(close3(g.radial, Math.abs(range - r.expectedRanges[i])));
+    const dists = Array.from(r.segments.r, (rs, k) => Math.abs(x * Math.cos(r.segments.theta[k]) + y * Math.sin(r.segments.theta[k]) - rs));
+    assert.ok(dists.some((d) => Math.abs(d - g.orthogonal) < 1e-9), 'the orthogonal distance is to one of the map\'s lines');
+    assert.ok(g.orthogonal < g.radial && g.incidence > 45, `grazing: ${JSON.stringify(g)}`);
+    assert.ok(Math.abs(g.orthogonal - g.radial * Math.cos((g.incidence * Math.PI) / 180)) < 1e-9);
+    assert.equal(await page.textContent('#lesson-text [data-q="radial"]'), `${g.radial.toFixed(3)} m from it along the beam`);
+    assert.equal(await page.textContent('#lesson-text [data-q="orthogonal"]'), `${g.orthogonal.toFixed(3)} m from the line`);
+    await page.hover('#lesson-text [data-q="radial"]');
+    assert.equal(await page.evaluate(() => window.__rtl.highlighted()), 'radial');
+    await page.hover('#lesson-text [data-q="unexplained"]');
+    assert.equal(await page.evaluate(() => window.__rtl.highlighted()), 'unexplained');
+    await page.hover('#lesson-title');
+    assert.equal(await page.evaluate(() => window.__rtl.highlighted()), null);
+    // the figure → the words: the middle of the radial error drawn in the magnifier
+    const { lens } = s, ux = x / range, uy = y / range, along = 0.8 * lens.M * (r.expectedRanges[i] - range);   // near the far end: the middle of the magnifier is the ray's marker
+    const at = await page.evaluate(([px, py]) => window.__rtl.clientPoint(px, py), [lens.x + along * ux, lens.y + along * uy]);
+    await page.mouse.move(at.x, at.y);
+    await page.waitForFunction(() => document.querySelector('#lesson-text [data-q="radial"]').classList.contains('hot'), null, { timeout: PAGE_TIMEOUT });
+    await page.mouse.move(5, 5);
+  });
+
+  test('your turn: "which beam will the bigger budget explain?" answered right, then wrong', async () => {
+    await page.click('#your-turn');
+    await setJ(page, 2);
+    const points = scans.intel[21].points, n = points.length / 2;
+    const explainedAt = (J) => rtl.extractPolylines(points, { maxVertices: J }).expectedRanges;
+    const forwardToQuestion = async () => {
+      for (let t = 0; t < 60; t++) {
+        const q = (await predictState(page)).step;
+        if (q !== null) return q;
+        await page.click('#player [data-act="forward"]');
+      }
+      throw new Error('no question within reach');
+    };
+    const click = async (i) => {
+      const at = await page.evaluate(([x, y]) => window.__rtl.clientPoint(x, y), [points[2 * i], points[2 * i + 1]]);
+      await page.mouse.click(at.x, at.y);
+    };
+    const loneliest = async (among, all) => {
+      const at = await page.evaluate((xy) => xy.map(([x, y]) => window.__rtl.clientPoint(x, y)), all.map((i) => [points[2 * i], points[2 * i + 1]]));
+      const gap = (i) => { const j = all.indexOf(i); return Math.min(...all.map((_, m) => (m === j ? Infinity : Math.hypot(at[m].x - at[j].x, at[m].y - at[j].y)))); };
+      const best = among.reduce((b, i) => (gap(i) > gap(b) ? i : b), among[0]);
+      assert.ok(gap(best) > 1, 'a beam that can be clicked alone');
+      return best;
+    };
+    // the candidates are the beams unexplained before; pick one the package explains after (and one it does not)
+    const candidates = (q) => {
+      const before = explainedAt(q + 1), after = explainedAt(q + 2);   // step q is J = q + 2
+      const was = [];
+      for (let i = 0; i < n; i++) if (Number.isFinite(points[2 * i]) && !Number.isFinite(before[i])) was.push(i);
+      return { after, gained: was.filter((i) => Number.isFinite(after[i])), stays: was.filter((i) => !Number.isFinite(after[i])), was };
+    };
+    let q = await forwardToQuestion();
+    assert.equal(await stepOf(page), q - 1, 'stopped before the budget it asks about');
+    // the J slider cannot skip the question either: it stays at the J shown
+    await page.fill('#lesson-controls input[name="J"]', String(q + 10));
+    await page.dispatchEvent('#lesson-controls input[name="J"]', 'input');
+    assert.equal(await stepOf(page), q - 1);
+    assert.equal(await page.inputValue('#lesson-controls input[name="J"]'), String(q + 1));
+    let c = candidates(q);
+    assert.ok(c.gained.length >= 3 && c.stays.length > 0);
+    await page.screenshot({ path: join(SCREENSHOTS, 'predict-budget-question-1280x800.png') });
+    // of the beams it explains, the one farthest on screen from the other candidates (a click picks the nearest)
+    const right = await loneliest(c.gained, c.was);
+    await click(right);
+    await waitStep(page, q);
+    let verdict = await page.textContent('#predict');
+    assert.match(verdict, /^Right\./);
+    assert.ok(verdict.includes(`Beam ${right} is explained at J = ${q + 2}`), verdict);
+    assert.ok(verdict.includes(`${Math.abs(Math.hypot(points[2 * right], points[2 * right + 1]) - c.after[right]).toFixed(3)} m`), verdict);
+    assert.deepEqual((await predictState(page)).score, { right: 1, asked: 1 });
+
+    q = await forwardToQuestion();
+    c = candidates(q);
+    const wrong = await loneliest(c.stays, c.was);
+    await click(wrong);
+    await waitStep(page, q);
+    verdict = await page.textContent('#predict');
+    assert.match(verdict, /^Not quite\./);
+    assert.ok(verdict.includes(`You picked beam ${wrong}: it stays unexplained at J = ${q + 2}`), verdict);
+    const r0 = rtl.extractPolylines(points, { maxVertices: q + 1 }), r1 = rtl.extractPolylines(points, { maxVertices: q + 2 });
+    assert.ok(verdict.includes(`from ${r0.score.toFixed(4)} to ${r1.score.toFixed(4)} m²`), verdict);
+    assert.deepEqual((await predictState(page)).score, { right: 1, asked: 2 });
+    await page.screenshot({ path: join(SCREENSHOTS, 'predict-budget-wrong-1280x800.png') });
+    await page.click('#your-turn');
+  });
+
+  test('the unexplained cost c: the package\'s numbers at another c, and a bad c marked until fixed', async () => {
+    await setJ(page, 20);
+    const points = scans.intel[21].points;
+    const setC = async (v) => {
+      const rev = await page.evaluate(() => window.__rtl.revision);
+      await page.fill('#lesson-controls input[name="c"]', String(v));
+      await page.dispatchEvent('#lesson-controls input[name="c"]', 'input');
+      await page.waitForFunction((r) => window.__rtl.revision > r, rev, { timeout: PAGE_TIMEOUT });
+    };
+    await setC(0.2);
+    let s = await finalState(page);
+    const r = rtl.extractPolylines(points, { maxVertices: 20, unexplainedCost: 0.2 }), r5 = rtl.extractPolylines(points, { maxVertices: 20 });
+    assert.equal(s.cost, 0.2);
+    assert.equal(s.J, 20, 'J stays');
+    assert.ok(close3(s.score, r.score) && close3(s.rmse, r.rmse) && close3(s.explained, r.explained));
+    assert.notEqual(r.score, r5.score, 'c changes the result');
+    assert.match(await page.textContent('#lesson-text'), /count as c = 0\.20 m each/);
+    assert.match(await page.evaluate(() => window.__rtl.link()), /[?&]c=0\.2(&|$)/);
+    await setC(0);
+    assert.equal(await page.getAttribute('#lesson-controls input[name="c"]', 'aria-invalid'), 'true');
+    assert.equal(await page.evaluate(() => window.__rtl.lessons.find((l) => l.id === 'budget').steps), 0);
+    assert.match(await page.textContent('#lesson-text'), /Fix the marked parameter/);
+    await setC(0.5);
+    assert.equal(await page.getAttribute('#lesson-controls input[name="c"]', 'aria-invalid'), null);
+    s = await finalState(page);
+    assert.equal(s.J, 20, 'J survives the parameter error');
+    assert.ok(close3(s.score, r5.score));
+  });
+
+  test('CSAIL scan 16: where one vertex more scores worse, the text says so and the chart marks it', async () => {
+    await page.selectOption('#lesson-controls select[name="scan"]', 'csail:16');
+    await page.waitForFunction(() => /CSAIL, scan 16/.test(window.__rtl.finalState()?.where), null, { timeout: PAGE_TIMEOUT });
+    const points = scans.csail[16].points;
+    const scores = [];
+    for (let J = 2; J <= 60; J++) scores.push(rtl.extractPolylines(points, { maxVertices: J }).score);
+    const rises = scores.map((v, i) => i > 0 && v > scores[i - 1]).map((r, i) => (r ? i + 2 : 0)).filter(Boolean);
+    assert.ok(rises.length > 0, 'this scan has a budget that scores worse than one vertex fewer');
+    const J = rises[0];
+    await setJ(page, J);
+    const s = await finalState(page);
+    assert.ok(close3(s.score, scores[J - 2]));
+    const why = await page.textContent('#lesson-text .why');
+    assert.match(why, new RegExp(`The score is higher than at J = ${J - 1} \\(${scores[J - 3].toFixed(4)} m²\\)`));
+    assert.equal(await page.$$eval('.budget-chart circle[fill="#C0392B"]', (els) => els.length), rises.length, 'one red dot per rise');
+  });
+
+  test('a link restores scan and J (and the step), also after a reload', async () => {
+    await page.goto(`${server.origin}/web/#budget?scan=csail%3A5&J=33`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step !== null, null, { timeout: PAGE_TIMEOUT });
+    let s = await finalState(page);
+    assert.equal(s.J, 33);
+    assert.match(s.where, /MIT CSAIL, scan 5/);
+    assert.equal(await page.inputValue('#lesson-controls select[name="scan"]'), 'csail:5');
+    const r = rtl.extractPolylines(scans.csail[5].points, { maxVertices: 33 });
+    assert.ok(close3(s.score, r.score));
+    await setJ(page, 12);
+    const link = await page.evaluate(() => window.__rtl.link());
+    assert.match(link, /#budget\?scan=csail%3A5&J=12&c=0\.5&at=11$/);
+    await page.goto('about:blank');
+    await page.goto(link);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step !== null, null, { timeout: PAGE_TIMEOUT });
+    s = await finalState(page);
+    assert.equal(s.J, 12);
+    assert.match(s.where, /MIT CSAIL, scan 5/);
+    assert.equal(await page.inputValue('#lesson-controls input[name="J"]'), '12');
+  });
+
+  test('a scan of the user\'s choice (a link\'s source) runs whole, and says so', async () => {
+    await page.goto(`${server.origin}/web/#budget?src=intel%3A3&J=15`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 13, null, { timeout: PAGE_TIMEOUT });
+    const s = await finalState(page);
+    assert.match(s.where, /Intel Research Lab, scan 3/);
+    const r = rtl.extractPolylines(scans.intel[3].points, { maxVertices: 15 });
+    assert.equal(s.vertexCount, r.vertexCount);
+    assert.ok(close3(s.score, r.score));
+    assert.match(await page.textContent('#lesson-controls'), /Your chosen scan/);
+    assert.equal(await page.isDisabled('#lesson-controls select[name="scan"]'), true, 'the source, not the scan menu, decides');
+    assert.match(await page.evaluate(() => window.__rtl.link()), /src=intel%3A3/);
+  });
+
+  test('1280x800: figure, parameters and player on screen together', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.goto(`${server.origin}/web/#budget`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step !== null, null, { timeout: PAGE_TIMEOUT });
+    const box = (sel) => page.locator(sel).first().boundingBox();
+    const fig = await box('#canvas'), controls = await box('#lesson-controls'), player = await box('#player'), chart = await box('.budget-chart');
+    for (const [name, b] of [['figure', fig], ['parameters', controls], ['player', player]]) {
+      assert.ok(b.x >= 0 && b.y >= 0 && b.x + b.width <= 1280.5 && b.y + b.height <= 800.5, `${name} inside the screen: ${JSON.stringify(b)}`);
+    }
+    assert.ok(fig.width >= 600 && fig.height >= 380, `figure ${fig.width}x${fig.height}`);
+    assert.ok(chart.y >= fig.y + fig.height, 'the curves under the figure');
+    assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
+  });
+
+  test('no console errors', async () => {
+    assert.deepEqual(await page.evaluate(() => window.__rtl.errors), []);
+    assert.deepEqual(problems, []);
+  });
+});

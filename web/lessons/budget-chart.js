@@ -1,0 +1,97 @@
+// The vertex-budget lesson's curves, in the stage under the figure: the score and, beside it, RMSE and the explained
+// fraction f against J, one point per extractPolylines() call, the chosen J marked. Clicking a J chooses it.
+const NS = 'http://www.w3.org/2000/svg';
+const W = 300, H = 170, PAD = { l: 44, r: 34, t: 22, b: 30 };
+const COLOUR = { score: '#111111', rmse: '#D55E00', f: '#0072B2', rise: '#C0392B', chosen: '#FFC400' };
+
+const el = (name, attrs = {}, text) => {
+  const e = document.createElementNS(NS, name);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+  if (text !== undefined) e.textContent = text;
+  return e;
+};
+
+// Tick values 0..top at a 1-2-5 step, about 4 of them.
+function ticks(top) {
+  const raw = top / 4, p = 10 ** Math.floor(Math.log10(raw || 1));
+  const step = [1, 2, 5, 10].map((m) => m * p).find((s) => s >= raw) ?? p;
+  const out = [];
+  for (let v = 0; v <= top * (1 + 1e-9); v += step) out.push(Number(v.toPrecision(6)));
+  return out;
+}
+const label = (v) => (v === 0 ? '0' : Math.abs(v) < 0.01 ? v.toExponential(0) : String(Number(v.toPrecision(3))));
+
+// One panel (an svg of its own, so that narrow screens stack them): series [{ name, ys, colour, axis: 'left' |
+// 'right', top, dots? (colour per point) }] against xs.
+function panel(title, xs, series, chosen) {
+  const g = el('svg', { viewBox: `0 0 ${W} ${H}`, role: 'img' });
+  const pw = W - PAD.l - PAD.r, ph = H - PAD.t - PAD.b, xMin = xs[0], xMax = xs[xs.length - 1];
+  const X = (x) => PAD.l + ((x - xMin) / (xMax - xMin)) * pw;
+  g.append(el('text', { x: PAD.l - 36, y: 13, class: 'chart-title' }, title));
+  g.append(el('line', { x1: X(chosen), x2: X(chosen), y1: PAD.t, y2: PAD.t + ph, stroke: COLOUR.chosen, 'stroke-width': 5, class: 'chosen-j' }));
+  g.append(el('path', { d: `M${PAD.l},${PAD.t}V${PAD.t + ph}H${PAD.l + pw}${series.some((s) => s.axis === 'right') ? `V${PAD.t}` : ''}`, fill: 'none', stroke: '#5a6475' }));
+  for (const J of [xMin, 10, 20, 30, 40, 50, xMax]) {
+    g.append(el('text', { x: X(J), y: PAD.t + ph + 12, 'text-anchor': 'middle', class: 'tick' }, String(J)));
+  }
+  g.append(el('text', { x: PAD.l + pw / 2, y: H - 3, 'text-anchor': 'middle', class: 'tick' }, 'J (vertex budget)'));
+  for (const s of series) {
+    const Y = (y) => PAD.t + ph - (Math.min(y, s.top) / s.top) * ph;
+    for (const t of ticks(s.top)) {
+      const right = s.axis === 'right';
+      g.append(el('text', { x: right ? PAD.l + pw + 3 : PAD.l - 3, y: Y(t) + 3, 'text-anchor': right ? 'start' : 'end', class: 'tick', style: `fill: ${s.colour}` }, label(t)));
+    }
+    let d = '';
+    xs.forEach((x, i) => { if (Number.isFinite(s.ys[i])) d += `${d ? 'L' : 'M'}${X(x).toFixed(1)},${Y(s.ys[i]).toFixed(1)}`; });
+    g.append(el('path', { d, fill: 'none', stroke: s.colour, 'stroke-width': 1.6, class: `series-${s.name}` }));
+    xs.forEach((x, i) => {
+      if (!Number.isFinite(s.ys[i]) || !(s.dots?.[i] || x === chosen)) return;
+      g.append(el('circle', { cx: X(x), cy: Y(s.ys[i]), r: x === chosen ? 3.5 : 3, fill: s.dots?.[i] ?? s.colour }));
+    });
+  }
+  // one transparent column per J: clicking chooses it
+  xs.forEach((x, i) => {
+    const half = pw / (xs.length - 1) / 2;
+    const hit = el('rect', { x: X(x) - half, y: PAD.t, width: 2 * half, height: ph, fill: 'transparent', 'data-k': i, class: 'pick' });
+    hit.append(el('title', {}, `J = ${x}`));
+    g.append(hit);
+  });
+  return g;
+}
+
+// Mounts the chart in `parent`; returns { update(snaps, k) }. onPick(k) when a J column is clicked.
+export function budgetChart(parent, onPick) {
+  const box = document.createElement('div');
+  box.className = 'budget-chart';
+  const svg = document.createElement('div');
+  svg.className = 'panels';
+  svg.setAttribute('role', 'group');
+  const legend = document.createElement('p');
+  legend.className = 'legend';
+  box.append(svg, legend);
+  parent.append(box);
+  svg.addEventListener('click', (ev) => {
+    const k = ev.target.closest?.('[data-k]')?.dataset.k;
+    if (k !== undefined) onPick(Number(k));
+  });
+  return {
+    update(snaps, k) {
+      if (!snaps.length) { svg.replaceChildren(); legend.textContent = ''; return; }
+      const xs = snaps.map((s) => s.J), chosen = snaps[k]?.J ?? xs[0];
+      const score = snaps.map((s) => s.score), rmse = snaps.map((s) => s.rmse), f = snaps.map((s) => s.explained);
+      // a budget whose score is above the one before it (more vertices, a worse map) is marked
+      const rises = score.map((v, i) => (i > 0 && v > score[i - 1] ? COLOUR.rise : null));
+      const top = (ys) => Math.max(1e-9, ...ys.filter(Number.isFinite)) * 1.08;
+      svg.replaceChildren(
+        panel('score (m²): lower is better', xs, [{ name: 'score', ys: score, colour: COLOUR.score, axis: 'left', top: top(score), dots: rises }], chosen),
+        panel('RMSE (m, left) and f (right)', xs, [
+          { name: 'rmse', ys: rmse, colour: COLOUR.rmse, axis: 'left', top: top(rmse) },
+          { name: 'f', ys: f, colour: COLOUR.f, axis: 'right', top: 1 }], chosen));
+      svg.firstChild.setAttribute('aria-label', `Score for J = ${xs[0]} to ${xs[xs.length - 1]}; J = ${chosen}: ${score[k]?.toFixed(4)} m².`);
+      svg.lastChild.setAttribute('aria-label', `RMSE, RMSE and explained fraction for J = ${xs[0]} to ${xs[xs.length - 1]}; J = ${chosen} is marked: score ${score[k]?.toFixed(4)} m², RMSE ${rmse[k]?.toFixed(3)} m, f ${f[k]?.toFixed(3)}.`);
+      const nRises = rises.filter(Boolean).length;
+      legend.innerHTML = `One extractPolylines() call per J; the yellow bar is the J shown (click the chart to choose another). ` +
+        `<span style="color:${COLOUR.rmse}">RMSE</span> is over the explained beams only, so it can grow while <span style="color:${COLOUR.f}">f</span> grows: the score weighs both.` +
+        (nRises ? ` <span style="color:${COLOUR.rise}">Red dots</span>: ${nRises} budget${nRises === 1 ? '' : 's'} where the score is higher than one vertex fewer.` : '');
+    },
+  };
+}
