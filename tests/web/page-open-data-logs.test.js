@@ -218,6 +218,10 @@ describe('open your own robot files: MCAP, ROS 1 bags, PCD', { timeout: 400000 }
     await page.selectOption('#scan-chooser', rings[2][0]);
     await page.waitForFunction(() => window.__rtl.source()?.scan === 2, null, { timeout: PAGE_TIMEOUT });
     await carRunsOn(page, xyOf(cloud.ring(2)));
+    // the 3D lesson shows the opened cloud instead of the bundled Ouster scan
+    await openLesson(page, 'lidar-3d');
+    await page.waitForFunction(() => /organized\.binary\.pcd, 4 rings × 64 columns: \d+ clusters/.test(document.querySelector('.lidar3d-caption')?.textContent ?? ''),
+      null, { timeout: PAGE_TIMEOUT });
 
     const unorganised = readFileSync(join(DATA, 'pcd', 'unorganized.compressed.pcd'));
     const points = rtl.readPcd(unorganised).points;

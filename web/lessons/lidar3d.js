@@ -9,7 +9,10 @@ export default {
   summary: 'Ouster rings segmented and vectorized in 3D by the package: orbit the view, compare it with the top view.',
   noFigure: true,
   async create(host) {
-    const panel = await mountLidar3D(host.stage, host.rtl);
+    // A user's organised cloud (an opened PCD) replaces the bundled Ouster scan.
+    const d = host.source && host.data.DATASETS[host.source.dataset];
+    const cloud = d?.cloud ? await host.data.loadCloud(host.source.dataset) : undefined;
+    const panel = await mountLidar3D(host.stage, host.rtl, cloud ? { cloud, label: d.label } : {});
     host.text.textContent = 'Each ring (one laser beam over a full turn) is segmented like a 2D scan; clusters are vectorized into 3D line segments, and patches of neighbouring rings are fitted with planes.';
     return {
       recompute: () => ({ steps: 0 }),

@@ -42,11 +42,15 @@ function drawTopView(canvas, scene, minPoints) {
  * mountLidar3D(container, rtl, { url, beams }) → Promise<{ view, scene(), settings(), recompute(), dispose() }>
  * container: an empty element; the panel fills it. rtl: the initialised package.
  */
-export async function mountLidar3D(container, rtl, { url = LIDAR_URL, beams = LIDAR_BEAMS } = {}) {
+// `cloud` (readOrganizedLidar's shape, e.g. a user's organised PCD) and its `label` replace the bundled scan.
+export async function mountLidar3D(container, rtl, { url = LIDAR_URL, beams = LIDAR_BEAMS, cloud: given, label } = {}) {
   if (!(container instanceof HTMLElement)) throw new TypeError('mountLidar3D: container must be an HTMLElement');
-  const res = await fetch(url);
-  if (!res.ok) throw new Error(`mountLidar3D: ${url}: HTTP ${res.status}`);
-  const cloud = rtl.readOrganizedLidar(new Uint8Array(await res.arrayBuffer()), { beams });
+  let cloud = given;
+  if (!cloud) {
+    const res = await fetch(url);
+    if (!res.ok) throw new Error(`mountLidar3D: ${url}: HTTP ${res.status}`);
+    cloud = rtl.readOrganizedLidar(new Uint8Array(await res.arrayBuffer()), { beams });
+  }
 
   container.classList.add('lidar3d');
   container.innerHTML = `
@@ -74,7 +78,7 @@ export async function mountLidar3D(container, rtl, { url = LIDAR_URL, beams = LI
 
   const describe = () => {
     const nSeg = scene.segments.reduce((s, v) => s + v.length / 6, 0);
-    caption.textContent = `RELLIS-3D, one Ouster OS1-64 scan, ${cloud.beams} of its 64 beams (every 4th) × ${cloud.columns} columns: ` +
+    caption.textContent = `${label ? `${label}, ${cloud.beams} rings` : `RELLIS-3D, one Ouster OS1-64 scan, ${cloud.beams} of its 64 beams (every 4th)`} × ${cloud.columns} columns: ` +
       `${scene.clusters} clusters of ≥ ${settings.minPoints} points (segment, dim 3, step ${settings.step}), ${nSeg} line segments ` +
       `(vectorize FTLS 3D, σ ${settings.sigma} m${scene.failed ? `, ${scene.failed} clusters failed` : ''}) and ${scene.planes.length} planes ` +
       `(AFTLS plane mode, σ ${settings.planeSigma} m, on a chain that runs back and forth along the rings in blocks of ${settings.planeBlockColumns} columns; light green: planes within 25° of level ground, violet: steeper; ${scene.degenerate} more patches lie nearly on a line and do not determine a plane). Drag (or focus the view and press Shift+arrow keys) to orbit, wheel to zoom, right-drag or arrow keys to pan.`;
