@@ -217,9 +217,8 @@ namespace rtl
         //! - the predecessors of x are tried in the order (best(w, x), w) and the first that passes is taken;
         //! - a row x that no range reaches (every best(w, x) unset) is skipped: none of its cells can be set, so
         //!   its ranges are never fitted (a range is fitted only when some predecessor may use it).
-        //! The scan of all w (p^3 / 6 steps) and the fits of all p^2 / 2 ranges were 97 % of FTLS's time on inputs
-        //! that never reach the exact search (bench/b_vect_fast_worst_case.cpp's corpus, seed 28, 1,019 points, 5
-        //! calls of up to p = 127: 6.8M instructions; 4.1M since, now mostly the fits of the ranges that rows reach).
+        //! Why: the scan of all w (p^3 / 6 steps) and the fits of all p^2 / 2 ranges dominated FTLS's time on inputs
+        //! that never reach the exact search (measured in docs/vect.md).
         bool repartition(const std::vector<VectorType> &pts, const SumArray &a, std::vector<Approximation> &lines,
                          std::vector<IndexType> &indices, size_t r0, size_t r1, size_t k) const
         {

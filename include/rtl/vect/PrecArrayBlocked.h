@@ -12,7 +12,7 @@
 // the points between those and beg/end), and when one block's sum of squares exceeds 256 times the mean block's,
 // the prefix is rebuilt as unevaluated sums hi + lo (an error-free TwoSum per block and sum). The sums of a range
 // then carry the rounding of its own points only, whatever lies outside it. The plain pass is kept for chains
-// without such outliers because the TwoSums would cost ~0.6 ns per point, as much as the pass itself.
+// without such outliers because the TwoSums would cost as much as the pass itself (docs/vect.md).
 //
 // Speed of the plain pass: it writes hi rows of 5/9 sums only (lo rows apart, written by the
 // compensated pass); with SSE2 it accumulates two blocks at once, lane by lane in the scalar pass's order (rows

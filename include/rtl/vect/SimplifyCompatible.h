@@ -32,9 +32,8 @@
 #endif
 
 // The passes over all points (radialPass, copyAll) and Douglas-Peucker (simplify) are functions of their own, not
-// inlined into simplifyIndices: V8 runs wasm in its baseline compiler first and optimizes a function once it is hot,
-// in the background. The radial pass alone compiled in 2 ms and ran optimized from its second call; inlined, it ran
-// unoptimized until the whole had compiled (~100 ms, 55-120 calls of 100k points: 0.25 instead of 0.13 ms a call).
+// inlined into simplifyIndices: a just-in-time compiler that optimizes hot functions one at a time then optimizes
+// each pass early instead of waiting for the whole (measured in docs/vect.md, "Measurements behind the vect headers").
 // noinline keeps the compiler from inlining them; Binaryen (wasm-opt, which emcc runs at link) still inlines a
 // function with one caller, so the callers call them through RTL_SIMPLIFY_PASS_CALL(f): by default f itself; an
 // includer that must keep each pass a function of its own defines it, before including this header, to hide which
@@ -133,8 +132,8 @@ namespace rtl
         //! that two consecutive points' coordinates load as one vector.
         //! g: the largest |coordinate| of the points (bounds the filter's rounding errors, farthestFiltered);
         //! f: the points as floats for that filter, each axis zero-padded to fstride (a multiple of four beyond m);
-        //! scratch: the filter's values. c is not zero-filled: every value read is written first (filling 16 MB at
-        //! 1M points cost ~1.5 ms).
+        //! scratch: the filter's values. c is not zero-filled: every value read is written first (zero-filling
+        //! would be a pass over all of it for nothing).
         template<int dim>
         struct AxisPoints
         {
@@ -400,7 +399,7 @@ namespace rtl
         //! no square overflows a float; |d|^2 >= 1e-12, so that underflow costs less than filter_abs in distance;
         //! the part 4 eps G of the bound at most 1/64 of the tolerance, else the band of candidates is too wide to
         //! gain). Ranges of at most filter_min_points interior points are scanned exactly (farthestShort), longer
-        //! ones filtered (32: walk 100k fast 0.73 -> 0.72 ms, hq 2.03 -> 1.92 against 16 in wasm; 48, 64 no better).
+        //! ones filtered (32 measured best; docs/vect.md).
         constexpr double filter_eps = 0x1p-24, filter_abs = 1e-15, filter_max_g = 1e9, filter_min_dd = 1e-12;
         constexpr std::size_t filter_min_points = 32;
 
@@ -497,9 +496,8 @@ namespace rtl
 #if defined(__GNUC__)
         //! farthest() for a 2D range of 1 to filter_min_points interior points whose chord differences dx, dy are
         //! finite: the arithmetic of segmentDistance2Pair (so each lane's value is the scalar one), from values
-        //! held in registers, inlined into the Douglas-Peucker loop. Most ranges are this short (after the radial
-        //! pass on the benchmark's random walk of 100k points, 92 % of 7,900 ranges hold at most 32 points, 20 %
-        //! one); the chord and lane set-up of the general path, or the filter's, cost them more than their distances. The maximum is taken from `best` on (so NaN never enters),
+        //! held in registers, inlined into the Douglas-Peucker loop. Most ranges are this short (docs/vect.md); the
+        //! chord and lane set-up of the general path, or the filter's, cost them more than their distances. The maximum is taken from `best` on (so NaN never enters),
         //! then the first index holding it if it exceeds best: the library's scan, without its branch per point
         //! (mispredicted on ragged data). An odd count's last pair reads point `last`, whose lane is set to best.
         __attribute__((always_inline)) inline std::size_t farthestShort(const double *x, const double *y, std::size_t first,
@@ -630,8 +628,7 @@ namespace rtl
         {
             std::size_t i = 0;
 #if defined(__GNUC__)
-            // Two per vector: the scalar loop does not vectorize (its `>` is not a max to the compiler), and
-            // took 0.025 ms of the random walk's 0.64 (100k points, 12k after the radial pass, wasm).
+            // Two per vector: the scalar loop does not vectorize (its `>` is not a max to the compiler).
             typedef long long Bits2 __attribute__((vector_size(16)));
             const Bits2 abs_mask = Bits2{} + 0x7fffffffffffffffLL;
             Double2 top0 = Double2{}, top1 = Double2{};
@@ -720,8 +717,8 @@ namespace rtl
                 // Eight points per step against the same last kept point P: between two kept points (24 points
                 // apart on the noisy semicircle) no lane passes and nothing depends on the previous step. Each
                 // lane's distance is the scalar formula in its order: (x - Px)^2 then + (y - Py)^2. The first lane
-                // that passes is the next kept point; the step after it starts at the point after it. (Eight: the
-                // random walk's radial pass 0.22 -> 0.19 ms against four, the semicircle's equal, wasm at 100k.)
+                // that passes is the next kept point; the step after it starts at the point after it (eight rather
+                // than four: measured, docs/vect.md).
                 const Double2 tol = Double2{} + sq_tolerance;
                 Double2 last = {prev[0], prev[1]}, sum = Double2{};
                 const auto distances = [&](std::size_t j) {   // of points j and j + 1, one per lane
@@ -754,8 +751,7 @@ namespace rtl
                 prev[1] = last[1];
                 // The sum of the distances is finite if every coordinate is: a point with an infinite or NaN
                 // coordinate has an infinite or NaN distance. Finite coordinates can overflow it too: then the
-                // coordinates are checked one by one (cheaper than v - v of every coordinate on the way: 20 % of
-                // the pass's instructions).
+                // coordinates are checked one by one (cheaper than v - v of every coordinate on the way).
                 if (!(sum[0] + sum[1] <= std::numeric_limits<double>::max()))
                     for (std::size_t j = 0; j < 2 * i; ++j)
                         nan = nan + (xyz[j] - xyz[j]);
