@@ -1,6 +1,6 @@
 // The FTLS and AFTLS lessons (one factory, two methods): the package's vectorize(…, { trace: true }) trace drawn
 // event by event, and, for a cluster the vectorizer cannot close within δ, why it fails and what to change
-// (strict mode: result.failure; split mode: result.breaks, see api.md / wasm/js/index.d.ts).
+// (strict mode: result.failure; split mode: result.breaks, see wasm/js/index.d.ts).
 //
 // Events are drawn from their fields, whatever their kind: a range [first, end) is highlighted, `rms` values of
 // the run are plotted against `sigma`, a `crossingDistance` is drawn as the δ circle around point `boundary`, and
