@@ -44,7 +44,7 @@ namespace
     struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
-    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1;
+    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
     {
@@ -55,6 +55,7 @@ namespace
         if (g_exact_breaks >= 0) ex.setExactBreakCosts(g_exact_breaks > 0);
         if (g_window >= 0) ex.setNeighbourRefinement(static_cast<std::size_t>(g_window));
         if (g_trim >= 0) ex.setEndTrimming(g_trim > 0);
+        if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window);
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -166,6 +167,9 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--breaks=", 9) == 0) g_break_candidates = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--trim=", 7) == 0) g_trim = std::atoi(argv[i] + 7);
         else if (std::strncmp(argv[i], "--window=", 9) == 0) g_window = std::atoi(argv[i] + 9);
+        else if (std::strncmp(argv[i], "--points=", 9) == 0) g_points = std::atoi(argv[i] + 9);
+        else if (std::strncmp(argv[i], "--point-lm=", 11) == 0) g_point_iterations = std::atoi(argv[i] + 11);
+        else if (std::strncmp(argv[i], "--point-window=", 15) == 0) g_point_window = std::atoi(argv[i] + 15);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
     }
     if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";

@@ -49,6 +49,7 @@
 #include "rtl/core/VectorND.h"
 #include "rtl/vect/scan_polylines/BudgetAllocation.h"
 #include "rtl/vect/scan_polylines/ChainPartition.h"
+#include "rtl/vect/scan_polylines/PointPolylines.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
 
@@ -104,6 +105,16 @@ namespace rtl
         //! Partitions may leave a chain's end beams out (each at the unexplained cost squared) when a line fits them
         //! worse: clutter and curved ends at no vertex (true), or every partition spans its whole chain (false, default).
         void setEndTrimming(bool on) { trim_ends_ = on; }
+        //! A second candidate family per chain (default off): for every k, the polyline through k + 1 of the chain's
+        //! measured points with the least squared orthogonal distances of the points between its vertices
+        //! (scan_polylines/PointPolylines.h), offered to the budget beside the TLS partitions; its vertices lie on their
+        //! own beams, so it never breaks. With refinement on, each is refined radially (at most `iterations` LM
+        //! iterations; 0: none): every one before the allocation when `window` < 0, else only those within `window`
+        //! vertices of each chain's first choice, after which the budget is allocated again.
+        void setPointCandidates(bool on, int iterations = 20, int window = 2)
+        {
+            point_candidates_ = on; point_iterations_ = iterations; point_window_ = window;
+        }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
@@ -124,8 +135,25 @@ namespace rtl
             std::vector<std::vector<scan_polylines::BudgetOption>> options(chains_.size());
             if (candidates_.size() < chains_.size()) candidates_.resize(chains_.size());   // kept: their memory is reused
             candidate_count_.assign(chains_.size(), 0);
+            point_first_.assign(chains_.size(), 0);
             for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
             std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            if (refine_ && point_candidates_ && point_window_ >= 0 && point_iterations_ > 0 && !chosen.empty())
+            {
+                // Refine the point-vertex candidates near each chain's choice, then allocate again on their refined costs.
+                const std::size_t w = static_cast<std::size_t>(point_window_);
+                for (std::size_t c = 0; c < chains_.size(); ++c)
+                {
+                    const std::size_t v0 = options[c][chosen[c]].vertices;
+                    for (std::size_t o = std::max<std::size_t>(point_first_[c], 1); o < options[c].size(); ++o)
+                    {
+                        const std::size_t v = options[c][o].vertices;
+                        if (v + w < v0 || v > v0 + w) continue;
+                        options[c][o].cost = refineCandidate(c, o - 1, point_iterations_, options[c][o].cost);
+                    }
+                }
+                chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            }
             if (refine_ && neighbour_window_ > 0 && !chosen.empty())
             {
                 // Refine the candidates near each chain's choice, then allocate again on their refined costs.
@@ -306,6 +334,36 @@ namespace rtl
                     cost -= corners_[b].second;
                     offerCandidate(c, assemble(c, newCandidate(c), nullptr), opts, exact_breaks_ ? scan_polylines::kNaN : cost);
                 }
+            }
+            if (point_candidates_) buildPointCandidates(c, opts);
+        }
+
+        //! The point-vertex family of chain c (see setPointCandidates): each polyline hit-tested, refined, offered.
+        void buildPointCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts)
+        {
+            const auto [cf, cl] = chains_[c];
+            const std::size_t n = cl - cf + 1;
+            point_first_[c] = opts.size();
+            points_.load(&px_[cf], &py_[cf], n);
+            points_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
+            points_.solve(max_vertices_ - 1);
+            for (std::size_t k = 1; k <= points_.maxSegments(); ++k)
+            {
+                points_.vertices(k, vertex_index_);
+                Candidate &cand = newCandidate(c);
+                Polyline &p = cand.next();
+                for (std::size_t v = 0; v <= k; ++v)
+                {
+                    const std::size_t i = cf + vertex_index_[v];
+                    p.x.push_back(px_[i]); p.y.push_back(py_[i]);
+                }
+                // Segment s explains the beams from its first vertex's up to the next vertex's (the last one both).
+                for (std::size_t s = 0; s < k; ++s)
+                    p.segs.push_back({cf + vertex_index_[s], cf + vertex_index_[s + 1] - (s + 1 < k ? 1 : 0)});
+                double cost = chainCost(cand, cf, cl);
+                if (refine_ && point_iterations_ > 0 && point_window_ < 0) cost = refineCandidate(c, candidate_count_[c], point_iterations_, cost);
+                opts.push_back({k + 1, cost});
+                ++candidate_count_[c];
             }
         }
 
@@ -529,6 +587,11 @@ namespace rtl
         bool trim_ends_ = false;
         std::size_t neighbour_window_ = 0;
         bool exact_breaks_ = false;
+        bool point_candidates_ = false;
+        int point_iterations_ = 20, point_window_ = 2;
+        std::vector<std::size_t> point_first_;   // per chain: index of its first point-vertex option (0: none)
+        scan_polylines::PointPolylines points_;
+        std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
         std::vector<std::pair<std::size_t, double>> corners_;
 
