@@ -108,9 +108,11 @@ namespace rtl
         //! A second candidate family per chain (default off): for every k, the polyline through k + 1 of the chain's
         //! measured points with the least squared orthogonal distances of the points between its vertices
         //! (scan_polylines/PointPolylines.h), offered to the budget beside the TLS partitions; its vertices lie on their
-        //! own beams, so it never breaks. With refinement on, each is refined radially (at most `iterations` LM
-        //! iterations; 0: none): every one before the allocation when `window` < 0, else only those within `window`
-        //! vertices of each chain's first choice, after which the budget is allocated again.
+        //! own beams, so it never breaks. With `window` >= 0, the family is built after a first allocation of the TLS
+        //! candidates, for each chain only up to `window` vertices beyond its choice there, and the budget allocated
+        //! again; with `window` < 0, in full before the only allocation. With refinement on, the polylines within
+        //! `window` vertices of the first choice (all, when `window` < 0) are refined radially (at most `iterations`
+        //! LM iterations; 0: none) before they are offered.
         void setPointCandidates(bool on, int iterations = 20, int window = 2)
         {
             point_candidates_ = on; point_iterations_ = iterations; point_window_ = window;
@@ -135,22 +137,17 @@ namespace rtl
             std::vector<std::vector<scan_polylines::BudgetOption>> options(chains_.size());
             if (candidates_.size() < chains_.size()) candidates_.resize(chains_.size());   // kept: their memory is reused
             candidate_count_.assign(chains_.size(), 0);
-            point_first_.assign(chains_.size(), 0);
             for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
             std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
-            if (refine_ && point_candidates_ && point_window_ >= 0 && point_iterations_ > 0 && !chosen.empty())
+            if (point_candidates_ && point_window_ >= 0 && !chosen.empty())
             {
-                // Refine the point-vertex candidates near each chain's choice, then allocate again on their refined costs.
+                // The point-vertex family near each chain's first choice (up to `window` vertices more), refined within
+                // `window` of it, then the budget allocated again with them.
                 const std::size_t w = static_cast<std::size_t>(point_window_);
                 for (std::size_t c = 0; c < chains_.size(); ++c)
                 {
                     const std::size_t v0 = options[c][chosen[c]].vertices;
-                    for (std::size_t o = std::max<std::size_t>(point_first_[c], 1); o < options[c].size(); ++o)
-                    {
-                        const std::size_t v = options[c][o].vertices;
-                        if (v + w < v0 || v > v0 + w) continue;
-                        options[c][o].cost = refineCandidate(c, o - 1, point_iterations_, options[c][o].cost);
-                    }
+                    if (v0 + w >= 2) buildPointCandidates(c, options[c], v0 + w - 1, v0 > w ? v0 - w : 0, v0 + w);
                 }
                 chosen = scan_polylines::allocateBudget(options, max_vertices_);
             }
@@ -335,18 +332,20 @@ namespace rtl
                     offerCandidate(c, assemble(c, newCandidate(c), nullptr), opts, exact_breaks_ ? scan_polylines::kNaN : cost);
                 }
             }
-            if (point_candidates_) buildPointCandidates(c, opts);
+            if (point_candidates_ && point_window_ < 0) buildPointCandidates(c, opts, max_vertices_ - 1, 0, max_vertices_);
         }
 
-        //! The point-vertex family of chain c (see setPointCandidates): each polyline hit-tested, refined, offered.
-        void buildPointCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts)
+        //! The point-vertex family of chain c (see setPointCandidates) with up to maxSegments segments, each polyline
+        //! hit-tested, refined when its vertex count lies in [refineLo, refineHi], and offered.
+        void buildPointCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts, std::size_t maxSegments,
+                                  std::size_t refineLo, std::size_t refineHi)
         {
             const auto [cf, cl] = chains_[c];
             const std::size_t n = cl - cf + 1;
-            point_first_[c] = opts.size();
+            if (n < 2 || maxSegments == 0) return;
             points_.load(&px_[cf], &py_[cf], n);
             points_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
-            points_.solve(max_vertices_ - 1);
+            points_.solve(std::min(maxSegments, max_vertices_ - 1));
             for (std::size_t k = 1; k <= points_.maxSegments(); ++k)
             {
                 points_.vertices(k, vertex_index_);
@@ -361,7 +360,7 @@ namespace rtl
                 for (std::size_t s = 0; s < k; ++s)
                     p.segs.push_back({cf + vertex_index_[s], cf + vertex_index_[s + 1] - (s + 1 < k ? 1 : 0)});
                 double cost = chainCost(cand, cf, cl);
-                if (refine_ && point_iterations_ > 0 && point_window_ < 0) cost = refineCandidate(c, candidate_count_[c], point_iterations_, cost);
+                if (refine_ && point_iterations_ > 0 && k + 1 >= refineLo && k + 1 <= refineHi) cost = refineCandidate(c, candidate_count_[c], point_iterations_, cost);
                 opts.push_back({k + 1, cost});
                 ++candidate_count_[c];
             }
@@ -589,7 +588,6 @@ namespace rtl
         bool exact_breaks_ = false;
         bool point_candidates_ = false;
         int point_iterations_ = 20, point_window_ = 2;
-        std::vector<std::size_t> point_first_;   // per chain: index of its first point-vertex option (0: none)
         scan_polylines::PointPolylines points_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;

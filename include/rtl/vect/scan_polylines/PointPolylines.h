@@ -91,11 +91,10 @@ namespace rtl::scan_polylines
         {
             const std::size_t n = n_;
             K_ = n >= 2 ? std::min(maxK, n - 1) : 0;
-            costs_.assign(n * n, kInf);
-            bounds_.assign(n * n, 0.0);
-            // costs_[j * n + i] = chord(i, j), contiguous in i for the inner loop below; bounds_ likewise.
+            costs_.resize(n * n);   // only the entries i < j are written and read
+            // costs_[j * n + i] = chord(i, j), contiguous in i for the inner loop below.
             for (std::size_t j = 1; j < n; ++j)
-                for (std::size_t i = 0; i < j; ++i) { costs_[j * n + i] = chordCost(i, j); bounds_[j * n + i] = lineBound(i, j); }
+                for (std::size_t i = 0; i < j; ++i) costs_[j * n + i] = chordCost(i, j);
             best_.assign((K_ + 1) * n, kInf);
             from_.assign((K_ + 1) * n, 0);
             if (n == 0) return;
@@ -110,15 +109,16 @@ namespace rtl::scan_polylines
                 const std::size_t lo = k - 1;   // row k - 1 is finite from index k - 1 on
                 for (std::size_t j = k; j < n; ++j)
                 {
-                    const double *c = &costs_[j * n], *bound = &bounds_[j * n];
+                    const double *c = &costs_[j * n];
                     double m = kInf;
                     std::size_t at = j - 1;
                     // Last chord from i, scanned from the shortest: once the TLS error of the points it spans (which
-                    // only grows as i falls) reaches the best total, no earlier i can win. Exact.
+                    // only grows as i falls) reaches the best total, no earlier i can win. Exact; the bound (a square
+                    // root) is tested every 8th chord only, which stops the scan at most 7 chords later.
                     for (std::size_t i = j; i-- > lo;)
                     {
-                        if (bound[i] >= m) break;
-                        const double v = prev[i] + c[i];
+                        if (((j - i) & 7) == 0 && lineBound(i, j) >= m) break;
+                        const double v = prev[i] + c[i];   // infinite where row k - 1 has no polyline
                         if (v < m) { m = v; at = i; }
                     }
                     cur[j] = m;
@@ -162,7 +162,7 @@ namespace rtl::scan_polylines
 
         std::size_t n_ = 0, K_ = 0;
         double x0_ = 0, y0_ = 0, skip_ = 0;
-        std::vector<double> ax_, ay_, sums_, costs_, bounds_, best_, total_;
+        std::vector<double> ax_, ay_, sums_, costs_, best_, total_;
         std::vector<std::size_t> end_;
         std::vector<std::uint32_t> from_;
     };
