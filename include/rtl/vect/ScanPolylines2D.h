@@ -20,6 +20,8 @@
 //     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
 //     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
 //     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
+//     optionally (setPointCandidates) a second family: polylines whose vertices are measured points, the optimal
+//     polygonal approximation per k (scan_polylines/PointPolylines.h), radially refined; they never break;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
 //     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement);
