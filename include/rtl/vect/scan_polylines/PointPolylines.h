@@ -9,8 +9,9 @@
 // A chord's cost comes in O(1) from prefix sums of x, y, x^2, xy, y^2 (about the chain's first point): for the line
 // through a and b, sum over the points p strictly between them of ((p - a) x (b - a))^2 / |b - a|^2. The programme
 //   F[k][j] = min over i < j of F[k-1][i] + chord(i, j)
-// gives every k's optimum in one pass: O(n^2) chord costs, then at most O(K n^2) additions (the scan over the last
-// chord stops once the TLS error of the points it spans reaches the best total, see solve); O(n^2 + K n) memory.
+// gives every k's optimum in one pass: at most O(n^2) chord costs (each computed once, when first needed), then at
+// most O(K n^2) additions (the scan over the last chord stops once the TLS error of the points it spans reaches the
+// best total, see solve); O(n^2 + K n) memory.
 // The first and last vertices are the chain's ends, or (setEndSkipCost) any points, the points before the first and
 // after the last left out at a fixed cost each (started from F[0][i] = i s, ended at min over j of F[k][j] + (n-1-j) s).
 #pragma once
@@ -91,10 +92,12 @@ namespace rtl::scan_polylines
         {
             const std::size_t n = n_;
             K_ = n >= 2 ? std::min(maxK, n - 1) : 0;
-            costs_.resize(n * n);   // only the entries i < j are written and read
-            // costs_[j * n + i] = chord(i, j), contiguous in i for the inner loop below.
-            for (std::size_t j = 1; j < n; ++j)
-                for (std::size_t i = 0; i < j; ++i) costs_[j * n + i] = chordCost(i, j);
+            // costs_[j * n + i] = chord(i, j), contiguous in i for the inner loop below, filled on first use: column j
+            // holds the chords from low_[j] up to j - 1 (the scans run downward from j - 1 and stop early, so most of
+            // the table is never needed when maxK is small).
+            costs_.resize(n * n);
+            low_.assign(n, 0);
+            for (std::size_t j = 0; j < n; ++j) low_[j] = j;
             best_.assign((K_ + 1) * n, kInf);
             from_.assign((K_ + 1) * n, 0);
             if (n == 0) return;
@@ -107,9 +110,16 @@ namespace rtl::scan_polylines
                 double *cur = &best_[k * n];
                 std::uint32_t *arg = &from_[k * n];
                 const std::size_t lo = k - 1;   // row k - 1 is finite from index k - 1 on
+                if (k == 1 && !(skip_ > 0))
+                {
+                    // from the chain's first point only
+                    for (std::size_t j = 1; j < n; ++j) { cur[j] = chordCost(0, j); arg[j] = 0; }
+                    continue;
+                }
                 for (std::size_t j = k; j < n; ++j)
                 {
-                    const double *c = &costs_[j * n];
+                    double *c = &costs_[j * n];
+                    std::size_t &filled = low_[j];
                     double m = kInf;
                     std::size_t at = j - 1;
                     // Last chord from i, scanned from the shortest: once the TLS error of the points it spans (which
@@ -117,8 +127,10 @@ namespace rtl::scan_polylines
                     // root) is tested every 8th chord only, which stops the scan at most 7 chords later.
                     for (std::size_t i = j; i-- > lo;)
                     {
-                        if (((j - i) & 7) == 0 && lineBound(i, j) >= m) break;
-                        const double v = prev[i] + c[i];   // infinite where row k - 1 has no polyline
+                        if (((j - i) & 7) == 0 && m < kInf && lineBound(i, j) >= m) break;
+                        if (!(prev[i] < m)) continue;   // no better through i (or row k - 1 has no polyline to i)
+                        while (filled > i) { --filled; c[filled] = chordCost(filled, j); }   // keeps the column contiguous
+                        const double v = prev[i] + c[i];
                         if (v < m) { m = v; at = i; }
                     }
                     cur[j] = m;
@@ -163,7 +175,7 @@ namespace rtl::scan_polylines
         std::size_t n_ = 0, K_ = 0;
         double x0_ = 0, y0_ = 0, skip_ = 0;
         std::vector<double> ax_, ay_, sums_, costs_, best_, total_;
-        std::vector<std::size_t> end_;
+        std::vector<std::size_t> end_, low_;
         std::vector<std::uint32_t> from_;
     };
 }
