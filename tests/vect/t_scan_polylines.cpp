@@ -444,3 +444,30 @@ TEST(ScanPolylines2D, PointCandidatesExplainADepthStepExactly)
     ASSERT_TRUE(points(scan));
     EXPECT_GT(points.score(), 1e-4);
 }
+
+TEST(ScanPolylines2D, PointCandidatesSurviveRepeatedPointsAndHoles)
+{
+    // Runs of points that coincide in float (60 beams 1e-9 rad apart at one range: zero-length chords), single returns
+    // between holes, a float instantiation: every budget is kept and the score stays finite and below the all-unexplained
+    // cost.
+    std::vector<rtl::Vector2f> scan;
+    for (int d = 0; d < 180; ++d)
+    {
+        const double a = d < 60 ? 0.5 + d * 1e-9 : d < 120 ? 1.0 + (d - 60) * 1e-9 : 1.2 + (d - 120) * kPi / 180;
+        const double r = d % 37 == 5 ? std::nan("") : d < 120 ? 2.0 : 2.0 + 0.3 * std::sin(0.2 * d);
+        scan.emplace_back(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)));
+    }
+    ASSERT_EQ(scan[10][0], scan[11][0]);   // the runs really coincide
+    ASSERT_EQ(scan[10][1], scan[11][1]);
+    rtl::ScanPolylines2D<float> points;
+    points.setPointCandidates(true);
+    for (std::size_t J : {2u, 3u, 5u, 10u, 50u})
+    {
+        points.setMaxVertices(J);
+        ASSERT_TRUE(points(scan));
+        EXPECT_LE(points.vertexCount(), J);
+        EXPECT_TRUE(std::isfinite(points.score()));
+        EXPECT_GE(points.score(), 0.0);
+        EXPECT_LE(points.score(), 0.25);   // never worse than leaving every beam unexplained
+    }
+}
