@@ -45,6 +45,7 @@ namespace
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
+    int g_radial = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
@@ -58,6 +59,7 @@ namespace
         if (g_trim >= 0) ex.setEndTrimming(g_trim > 0);
         if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window);
         if (g_cost > 0) ex.setUnexplainedCost(g_cost);
+        if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -173,6 +175,7 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--point-lm=", 11) == 0) g_point_iterations = std::atoi(argv[i] + 11);
         else if (std::strncmp(argv[i], "--point-window=", 15) == 0) g_point_window = std::atoi(argv[i] + 15);
         else if (std::strcmp(argv[i], "--frontier") == 0) frontier = true;
+        else if (std::strncmp(argv[i], "--radial=", 9) == 0) g_radial = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
     }
     if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";
