@@ -44,7 +44,9 @@ namespace
     struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
-    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1;
+    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
+    int g_radial = -1;
+    double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
     {
@@ -55,6 +57,9 @@ namespace
         if (g_exact_breaks >= 0) ex.setExactBreakCosts(g_exact_breaks > 0);
         if (g_window >= 0) ex.setNeighbourRefinement(static_cast<std::size_t>(g_window));
         if (g_trim >= 0) ex.setEndTrimming(g_trim > 0);
+        if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window);
+        if (g_cost > 0) ex.setUnexplainedCost(g_cost);
+        if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -154,7 +159,7 @@ namespace
 
 int main(int argc, char **argv)
 {
-    bool smoke = false;
+    bool smoke = false, frontier = false;
     int reps = 5;
     std::string dir;
     if (const char *e = std::getenv("RTL_FULL_DATA_DIR")) dir = e;
@@ -166,6 +171,11 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--breaks=", 9) == 0) g_break_candidates = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--trim=", 7) == 0) g_trim = std::atoi(argv[i] + 7);
         else if (std::strncmp(argv[i], "--window=", 9) == 0) g_window = std::atoi(argv[i] + 9);
+        else if (std::strncmp(argv[i], "--points=", 9) == 0) g_points = std::atoi(argv[i] + 9);
+        else if (std::strncmp(argv[i], "--point-lm=", 11) == 0) g_point_iterations = std::atoi(argv[i] + 11);
+        else if (std::strncmp(argv[i], "--point-window=", 15) == 0) g_point_window = std::atoi(argv[i] + 15);
+        else if (std::strcmp(argv[i], "--frontier") == 0) frontier = true;
+        else if (std::strncmp(argv[i], "--radial=", 9) == 0) g_radial = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
     }
     if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";
@@ -205,6 +215,40 @@ int main(int argc, char **argv)
         {
             std::fprintf(stderr, "%s: %s (give --data=DIR or RTL_FULL_DATA_DIR)\n", c.name, e.what());
             return 1;
+        }
+        if (frontier)
+        {
+            // The (RMSE, f) trade-off of DP+LM over the unexplained cost c the extractor optimises (scored with PLE's
+            // c = 0.5 all the same), and where PLE+'s point lies against it: our RMSE at PLE+'s f, interpolated
+            // linearly in f between the neighbouring c (NaN when PLE+'s f is outside our range).
+            for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
+            {
+                std::vector<std::pair<double, double>> curve;   // (f, RMSE)
+                for (double cost : {0.2, 0.3, 0.4, 0.5})
+                {
+                    g_cost = cost;
+                    const Row r = evaluate(scans, J, true, reps);
+                    curve.push_back({r.f, r.rmse});
+                    std::printf("%-6s %3zu c=%.1f      %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J, cost,
+                                r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices, c.ple[j].rmse, c.ple[j].f,
+                                c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]));
+                }
+                g_cost = -1;
+                std::sort(curve.begin(), curve.end());
+                double at = std::nan("");
+                const double fp = c.plus[j].f;
+                for (std::size_t q = 0; q + 1 < curve.size(); ++q)
+                    if (curve[q].first <= fp && fp <= curve[q + 1].first)
+                    {
+                        const double span = curve[q + 1].first - curve[q].first;
+                        const double t = span > 0 ? (fp - curve[q].first) / span : 0.0;
+                        at = curve[q].second + t * (curve[q + 1].second - curve[q].second);
+                        break;
+                    }
+                std::printf("%-6s %3zu frontier: at PLE+'s f = %.3f our RMSE %.4f against PLE+'s %.3f: %s\n", c.name, J, fp, at,
+                            c.plus[j].rmse, std::isnan(at) ? "f outside our range" : at <= c.plus[j].rmse ? "PLE+ dominated" : "PLE+ ahead");
+            }
+            continue;
         }
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
             for (int method = 0; method < 3; ++method)

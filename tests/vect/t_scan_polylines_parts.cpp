@@ -1,7 +1,9 @@
 // The exact parts of ScanPolylines2D against brute force: the per-chain partition programme (every partition of a
-// small chain into k ranges of >= 2 points enumerated) and the budget allocation (every combination of options).
+// small chain into k ranges of >= 2 points enumerated), the point-vertex polyline programme (every choice of vertices
+// enumerated) and the budget allocation (every combination of options).
 #include "rtl/vect/scan_polylines/BudgetAllocation.h"
 #include "rtl/vect/scan_polylines/ChainPartition.h"
+#include "rtl/vect/scan_polylines/PointPolylines.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +16,7 @@
 using rtl::scan_polylines::allocateBudget;
 using rtl::scan_polylines::BudgetOption;
 using rtl::scan_polylines::ChainPartition;
+using rtl::scan_polylines::PointPolylines;
 
 namespace
 {
@@ -60,6 +63,93 @@ namespace
                 best = std::min(best, bruteForce(xs, ys, k) + skip * static_cast<double>(a + n - b));
             }
         return best;
+    }
+}
+
+namespace
+{
+    //! Squared orthogonal distances of points i+1..j-1 to the line through points i and j, computed directly.
+    double chordError(const std::vector<double> &x, const std::vector<double> &y, std::size_t i, std::size_t j)
+    {
+        const double dx = x[j] - x[i], dy = y[j] - y[i], len = std::hypot(dx, dy);
+        double sum = 0;
+        for (std::size_t p = i + 1; p < j; ++p)
+        {
+            const double d = ((x[p] - x[i]) * dy - (y[p] - y[i]) * dx) / len;
+            sum += d * d;
+        }
+        return sum;
+    }
+
+    //! Minimum over every polyline through k + 1 of the points (increasing indices) of its chord errors, the points
+    //! before its first vertex and after its last left out at `skip` each (skip <= 0: vertices 0 and n - 1 fixed).
+    double bruteForcePoints(const std::vector<double> &x, const std::vector<double> &y, std::size_t k, double skip)
+    {
+        const std::size_t n = x.size();
+        double best = std::numeric_limits<double>::infinity();
+        std::function<void(std::size_t, std::size_t, double)> rec = [&](std::size_t at, std::size_t left, double acc) {
+            if (left == 0)
+            {
+                if (skip > 0) best = std::min(best, acc + skip * static_cast<double>(n - 1 - at));
+                else if (at == n - 1) best = std::min(best, acc);
+                return;
+            }
+            for (std::size_t next = at + 1; next < n; ++next) rec(next, left - 1, acc + chordError(x, y, at, next));
+        };
+        if (skip > 0)
+            for (std::size_t first = 0; first < n; ++first) rec(first, k, skip * static_cast<double>(first));
+        else
+            rec(0, k, 0.0);
+        return best;
+    }
+}
+
+TEST(ScanPolylinesPointPolylines, MatchesBruteForceOnSmallChains)
+{
+    std::mt19937 rng(5);
+    std::normal_distribution<double> noise(0.0, 0.05);
+    std::uniform_real_distribution<double> turn(-1.5, 1.5);
+    for (int trial = 0; trial < 60; ++trial)
+    {
+        const std::size_t n = 2 + static_cast<std::size_t>(trial % 10);   // 2..11 points
+        const double skip = trial % 2 ? 0.01 : 0.0;                        // odd trials: trimmable ends
+        std::vector<double> x(n), y(n);
+        double px = 3, py = 1, heading = turn(rng);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            if (i % 3 == 0) heading += turn(rng);
+            px += 0.2 * std::cos(heading); py += 0.2 * std::sin(heading);
+            x[i] = px + noise(rng); y[i] = py + noise(rng);
+        }
+        PointPolylines pp;
+        pp.load(x.data(), y.data(), n);
+        pp.setEndSkipCost(skip);
+        pp.solve(8);
+        ASSERT_EQ(pp.maxSegments(), std::min<std::size_t>(8, n - 1));
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+            {
+                const double direct = chordError(x, y, i, j);
+                EXPECT_NEAR(pp.chordCost(i, j), direct, 1e-10 * (1 + direct));
+                EXPECT_LE(pp.lineBound(i, j), pp.chordCost(i, j));
+            }
+        std::vector<std::size_t> v;
+        for (std::size_t k = 1; k <= pp.maxSegments(); ++k)
+        {
+            const double brute = bruteForcePoints(x, y, k, skip);
+            EXPECT_NEAR(pp.cost(k), brute, 1e-9 * (1 + brute)) << "n " << n << " k " << k << " skip " << skip;
+            // the reported vertices are increasing and their chords (plus left-out ends) add up to cost(k)
+            pp.vertices(k, v);
+            ASSERT_EQ(v.size(), k + 1);
+            if (skip <= 0) { EXPECT_EQ(v.front(), 0u); EXPECT_EQ(v.back(), n - 1); }
+            double sum = skip > 0 ? skip * static_cast<double>(v.front() + n - 1 - v.back()) : 0.0;
+            for (std::size_t s = 0; s < k; ++s)
+            {
+                ASSERT_LT(v[s], v[s + 1]);
+                sum += chordError(x, y, v[s], v[s + 1]);
+            }
+            EXPECT_NEAR(sum, pp.cost(k), 1e-9 * (1 + sum));
+        }
     }
 }
 

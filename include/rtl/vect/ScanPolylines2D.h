@@ -20,9 +20,13 @@
 //     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
 //     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
 //     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
+//     optionally (setPointCandidates) a second family: polylines whose vertices are measured points, the optimal
+//     polygonal approximation per k (scan_polylines/PointPolylines.h), radially refined; they never break;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
-//     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement);
+//     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement; optionally
+//     each chosen partition's boundaries then moved within a few beams by the ranges' own radial errors,
+//     setRadialRepartition);
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
 //     so refinement never raises the score.
@@ -49,6 +53,7 @@
 #include "rtl/core/VectorND.h"
 #include "rtl/vect/scan_polylines/BudgetAllocation.h"
 #include "rtl/vect/scan_polylines/ChainPartition.h"
+#include "rtl/vect/scan_polylines/PointPolylines.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
 
@@ -104,6 +109,23 @@ namespace rtl
         //! Partitions may leave a chain's end beams out (each at the unexplained cost squared) when a line fits them
         //! worse: clutter and curved ends at no vertex (true), or every partition spans its whole chain (false, default).
         void setEndTrimming(bool on) { trim_ends_ = on; }
+        //! A second candidate family per chain (default off): for every k, the polyline through k + 1 of the chain's
+        //! measured points with the least squared orthogonal distances of the points between its vertices
+        //! (scan_polylines/PointPolylines.h), offered to the budget beside the TLS partitions; its vertices lie on their
+        //! own beams, so it never breaks. With `window` >= 0, the family is built after a first allocation of the TLS
+        //! candidates, for each chain only up to `window` vertices beyond its choice there, and the budget allocated
+        //! again; with `window` < 0, in full before the only allocation. With refinement on, the polylines within
+        //! `window` vertices of the first choice (all, when `window` < 0) are refined radially (at most `iterations`
+        //! LM iterations; 0: none) before they are offered.
+        void setPointCandidates(bool on, int iterations = 20, int window = 2)
+        {
+            point_candidates_ = on; point_iterations_ = iterations; point_window_ = window;
+        }
+        //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
+        //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
+        //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
+        //! vertices and score lower on the chain's beams (default 0: off).
+        void setRadialRepartition(std::size_t window) { radial_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
@@ -126,6 +148,18 @@ namespace rtl
             candidate_count_.assign(chains_.size(), 0);
             for (std::size_t c = 0; c < chains_.size(); ++c) buildCandidates(c, options[c]);
             std::vector<std::size_t> chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            if (point_candidates_ && point_window_ >= 0 && !chosen.empty())
+            {
+                // The point-vertex family near each chain's first choice (up to `window` vertices more), refined within
+                // `window` of it, then the budget allocated again with them.
+                const std::size_t w = static_cast<std::size_t>(point_window_);
+                for (std::size_t c = 0; c < chains_.size(); ++c)
+                {
+                    const std::size_t v0 = options[c][chosen[c]].vertices;
+                    if (v0 + w >= 2) buildPointCandidates(c, options[c], v0 + w - 1, v0 > w ? v0 - w : 0, v0 + w);
+                }
+                chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            }
             if (refine_ && neighbour_window_ > 0 && !chosen.empty())
             {
                 // Refine the candidates near each chain's choice, then allocate again on their refined costs.
@@ -141,6 +175,9 @@ namespace rtl
                 }
                 chosen = scan_polylines::allocateBudget(options, max_vertices_);
             }
+            if (radial_window_ > 0)
+                for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
+                    if (chosen[c] > 0) radialRepartition(c, candidates_[c][chosen[c] - 1], options[c][chosen[c]].cost);
             std::vector<Polyline> map;
             for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
                 if (chosen[c] > 0)
@@ -193,6 +230,8 @@ namespace rtl
         {
             std::vector<Polyline> polylines;
             std::size_t used = 0;
+            bool partition = false;             // a plain TLS partition (no forced breaks) of `ranges`
+            std::vector<BeamRange> ranges;      // its ranges, chain-local
 
             Polyline &next()
             {
@@ -288,8 +327,11 @@ namespace rtl
                 fits.clear();
                 for (const auto &r : ranges) fits.push_back(part_.fit(r.first, r.second));
                 forced_.assign(k, 0);
-                const std::size_t vertices = assemble(c, newCandidate(c), &corners_);
+                Candidate &plain = newCandidate(c);
+                const std::size_t vertices = assemble(c, plain, &corners_);
                 if (vertices > max_vertices_) continue;
+                plain.partition = true;
+                plain.ranges = ranges;
                 const double base = offerCandidate(c, vertices, opts, scan_polylines::kNaN);
                 if (break_rounds_ == 0 || corners_.empty()) continue;
                 // Corners whose break would explain the boundary beams better, best first: each conversion costs one
@@ -307,6 +349,120 @@ namespace rtl
                     offerCandidate(c, assemble(c, newCandidate(c), nullptr), opts, exact_breaks_ ? scan_polylines::kNaN : cost);
                 }
             }
+            if (point_candidates_ && point_window_ < 0) buildPointCandidates(c, opts, max_vertices_ - 1, 0, max_vertices_);
+        }
+
+        //! Sum of squared radial errors of chain-local beams a..b predicted by their own TLS line (part_ loaded with the
+        //! chain starting at beam cf).
+        double radialRangeCost(std::size_t cf, std::size_t a, std::size_t b) const
+        {
+            const scan_polylines::TlsFit f = part_.fit(a, b);
+            double sum = 0;
+            for (std::size_t i = a; i <= b; ++i) sum += lineError(f, cf + i);
+            return sum;
+        }
+
+        //! See setRadialRepartition: `cand` (chosen for chain c at `cost`) replaced by the better re-partition, if any.
+        void radialRepartition(std::size_t c, Candidate &cand, double cost)
+        {
+            if (!cand.partition || cand.ranges.size() < 2) return;
+            const auto [cf, cl] = chains_[c];
+            const std::size_t n = cl - cf + 1, k = cand.ranges.size(), w = radial_window_, W = 2 * w + 1;
+            part_.load(&px_[cf], &py_[cf], n);
+            const std::size_t first = cand.ranges.front().first, last = cand.ranges.back().second;
+            // start of range s (1 <= s < k) with offset d in [0, W): the original start moved by d - w
+            auto start = [&](std::size_t s, std::size_t d) -> long {
+                return static_cast<long>(cand.ranges[s].first) + static_cast<long>(d) - static_cast<long>(w);
+            };
+            const double inf = std::numeric_limits<double>::infinity();
+            repart_cost_.assign(k * W, inf);
+            repart_from_.assign(k * W, 0);
+            for (std::size_t d = 0; d < W; ++d)
+            {
+                const long b = start(1, d);
+                if (b >= static_cast<long>(first) + 2 && b + 1 <= static_cast<long>(last))
+                    repart_cost_[W + d] = radialRangeCost(cf, first, static_cast<std::size_t>(b) - 1);
+            }
+            for (std::size_t s = 2; s < k; ++s)
+                for (std::size_t d = 0; d < W; ++d)
+                {
+                    const long b = start(s, d);
+                    if (b + 1 > static_cast<long>(last)) continue;
+                    for (std::size_t e = 0; e < W; ++e)
+                    {
+                        const double prev = repart_cost_[(s - 1) * W + e];
+                        const long a = start(s - 1, e);
+                        if (!(prev < inf) || b < a + 2) continue;
+                        const double v = prev + radialRangeCost(cf, static_cast<std::size_t>(a), static_cast<std::size_t>(b) - 1);
+                        if (v < repart_cost_[s * W + d]) { repart_cost_[s * W + d] = v; repart_from_[s * W + d] = e; }
+                    }
+                }
+            double best = inf;
+            std::size_t at = 0;
+            for (std::size_t d = 0; d < W; ++d)
+            {
+                const double prev = repart_cost_[(k - 1) * W + d];
+                const long a = start(k - 1, d);
+                if (!(prev < inf) || static_cast<long>(last) < a + 1) continue;
+                const double v = prev + radialRangeCost(cf, static_cast<std::size_t>(a), last);
+                if (v < best) { best = v; at = d; }
+            }
+            if (!(best < inf)) return;
+            ranges_.assign(k, {0, 0});
+            ranges_.back().second = last;
+            for (std::size_t s = k - 1; s >= 1; --s)
+            {
+                const std::size_t b = static_cast<std::size_t>(start(s, at));
+                ranges_[s].first = b;
+                ranges_[s - 1].second = b - 1;
+                at = repart_from_[s * W + at];
+            }
+            ranges_.front().first = first;
+            if (ranges_ == cand.ranges) return;
+            fits_.clear();
+            for (const auto &r : ranges_) fits_.push_back(part_.fit(r.first, r.second));
+            forced_.assign(k, 0);
+            std::size_t old_vertices = 0;
+            for (std::size_t q = 0; q < cand.used; ++q) old_vertices += cand.polylines[q].x.size();
+            repart_.used = 0;
+            if (assemble(c, repart_, nullptr) > old_vertices) return;
+            if (chainCost(repart_, cf, cl) < cost)
+            {
+                std::swap(cand.polylines, repart_.polylines);
+                std::swap(cand.used, repart_.used);
+                cand.ranges = ranges_;
+            }
+        }
+
+        //! The point-vertex family of chain c (see setPointCandidates) with up to maxSegments segments, each polyline
+        //! hit-tested, refined when its vertex count lies in [refineLo, refineHi], and offered.
+        void buildPointCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts, std::size_t maxSegments,
+                                  std::size_t refineLo, std::size_t refineHi)
+        {
+            const auto [cf, cl] = chains_[c];
+            const std::size_t n = cl - cf + 1;
+            if (n < 2 || maxSegments == 0) return;
+            points_.load(&px_[cf], &py_[cf], n);
+            points_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
+            points_.solve(std::min(maxSegments, max_vertices_ - 1));
+            for (std::size_t k = 1; k <= points_.maxSegments(); ++k)
+            {
+                points_.vertices(k, vertex_index_);
+                Candidate &cand = newCandidate(c);
+                Polyline &p = cand.next();
+                for (std::size_t v = 0; v <= k; ++v)
+                {
+                    const std::size_t i = cf + vertex_index_[v];
+                    p.x.push_back(px_[i]); p.y.push_back(py_[i]);
+                }
+                // Segment s explains the beams from its first vertex's up to the next vertex's (the last one both).
+                for (std::size_t s = 0; s < k; ++s)
+                    p.segs.push_back({cf + vertex_index_[s], cf + vertex_index_[s + 1] - (s + 1 < k ? 1 : 0)});
+                double cost = chainCost(cand, cf, cl);
+                if (refine_ && point_iterations_ > 0 && k + 1 >= refineLo && k + 1 <= refineHi) cost = refineCandidate(c, candidate_count_[c], point_iterations_, cost);
+                opts.push_back({k + 1, cost});
+                ++candidate_count_[c];
+            }
         }
 
         Candidate &newCandidate(std::size_t c)
@@ -314,6 +470,7 @@ namespace rtl
             if (candidate_count_[c] == candidates_[c].size()) candidates_[c].emplace_back();
             Candidate &cand = candidates_[c][candidate_count_[c]];
             cand.used = 0;
+            cand.partition = false;
             return cand;
         }
 
@@ -529,6 +686,14 @@ namespace rtl
         bool trim_ends_ = false;
         std::size_t neighbour_window_ = 0;
         bool exact_breaks_ = false;
+        std::size_t radial_window_ = 0;
+        std::vector<double> repart_cost_;
+        std::vector<std::size_t> repart_from_;
+        Candidate repart_;
+        bool point_candidates_ = false;
+        int point_iterations_ = 20, point_window_ = 2;
+        scan_polylines::PointPolylines points_;
+        std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
         std::vector<std::pair<std::size_t, double>> corners_;
 
