@@ -19,7 +19,7 @@
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
-import { copyFileSync, cpSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { copyFileSync, cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -74,6 +74,33 @@ test('every code block of the README and the guides has a language this test kno
   assert.ok(ofKind('not run').some((b) => cliCommands(b.code)), 'the command-line block (npx rtl lines) is found');
   const notRun = [...ofKind('not run').filter((b) => !cliCommands(b.code)), ...ofKind('cmake').filter((b) => !/find_package\(RTL\b/.test(b.code))];
   t.diagnostic(`not run (install/build commands, a browser page, a sub-project path): ${notRun.map(label).join('; ')}`);
+});
+
+// GitHub's anchor of a heading: lower case, punctuation dropped, spaces to hyphens.
+const slug = (heading) => heading.trim().toLowerCase().replace(/[^\p{L}\p{N}\s_-]/gu, '').replace(/\s/g, '-');
+
+test('the README and the guides name files that exist: links (with their headings) and `path/file.ext` in code spans', () => {
+  let checked = 0;
+  for (const file of DOCS) {
+    const text = readFileSync(join(ROOT, file), 'utf8');
+    for (const [, target] of text.matchAll(/\]\(([^)\s]+)\)/g)) {
+      if (/^[a-z]+:/.test(target)) continue;   // an absolute URL
+      const [path, anchor] = target.split('#');
+      const resolved = join(ROOT, dirname(file), path);
+      assert.ok(existsSync(resolved), `${file}: link to ${target}: no ${path}`);
+      if (anchor) {
+        const headings = [...readFileSync(resolved, 'utf8').matchAll(/^#{1,6}\s+(.*)$/gm)].map((m) => slug(m[1]));
+        assert.ok(headings.includes(anchor), `${file}: link to ${target}: no heading #${anchor} (${headings.join(', ')})`);
+      }
+      checked++;
+    }
+    // Code spans that name a file of the repository (`web/figure.js`, `rtl/io/Svg2D.h` under include/).
+    for (const [, path] of text.matchAll(/`((?:docs|tests|web|wasm|bin|bench|examples|rtl)\/[\w./-]+\.\w+)`/g)) {
+      assert.ok(existsSync(join(ROOT, path)) || existsSync(join(ROOT, 'include', path)), `${file}: \`${path}\` does not exist`);
+      checked++;
+    }
+  }
+  assert.ok(checked >= 40, `${checked} names checked`);
 });
 
 describe('README examples in a project with the packed tarball installed', { timeout: 600_000 }, () => {
