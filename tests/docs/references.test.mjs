@@ -92,7 +92,9 @@ describe('./run serve: both references served beside the page', { timeout: 300_0
     const index = await get(server.port, '/docs/js/');
     assert.equal(index.status, 200);
     assert.match(index.type, /^text\/html/);
-    for (const slug of ['rtl-wasm', 'rtl-wasm_logs', 'rtl-wasm_ros']) assert.ok(index.body.includes(`modules/${slug}.html`), slug);
+    assert.match(index.body, /rtl-wasm: the JavaScript API reference/);   // docs/typedoc/index.md
+    const modules = await get(server.port, '/docs/js/modules.html');
+    for (const slug of ['rtl-wasm', 'rtl-wasm_logs', 'rtl-wasm_ros']) assert.ok(modules.body.includes(`modules/${slug}.html`), slug);
     const logs = await get(server.port, '/docs/js/modules/rtl-wasm_logs.html');
     assert.equal(logs.status, 200);
     assert.ok(logs.body.includes('openLog'));
