@@ -82,7 +82,9 @@ export function createStaticServer(root = ROOT) {
         return send(res, 503, `${LOGS_BUNDLE_PATH}: ${e.message}`);
       }
     }
-    let file = resolveInside(root, pathname);
+    // The generated API references (docs/build-references.mjs writes build/docs/) are served beside the page.
+    const reference = /^\/docs\/(js|cpp)(\/.*)?$/.exec(pathname);
+    let file = reference ? resolveInside(join(root, 'build', 'docs', reference[1]), reference[2] ?? '/') : resolveInside(root, pathname);
     if (!file) return send(res, 403, 'forbidden');
     try {
       let st = await fs.stat(file);

@@ -1,5 +1,5 @@
-// The fenced code blocks of a Markdown file, with what the README test does with each, and the output a block
-// promises through `// prints: <text>` comments.
+// The fenced code blocks of a Markdown file (the README and the guides in docs/), with what the README test does with
+// each, and the output a block promises through `// prints: <text>` comments.
 
 // Language tag -> what the test does with the block. A block with another (or no) tag fails the test, so that a new
 // kind of example cannot slip in unchecked.
@@ -12,8 +12,8 @@ export const KINDS = {
   bash: 'not run', sh: 'not run', shell: 'not run', html: 'not run',
 };
 
-// [{ lang, code, line (1-based line of the opening fence), section (nearest heading above) }]
-export function fencedBlocks(markdown) {
+// [{ file, lang, code, line (1-based line of the opening fence), section (nearest heading above) }]
+export function fencedBlocks(markdown, file = 'README.md') {
   const lines = markdown.split('\n');
   const blocks = [];
   let section = '', open = null;
@@ -26,9 +26,9 @@ export function fencedBlocks(markdown) {
     const heading = /^#{1,6}\s+(.*)$/.exec(text);
     if (heading) section = heading[1].trim();
     const fence = /^(\s*)```\s*([\w+-]*)\s*$/.exec(text);
-    if (fence) open = { lang: fence[2].toLowerCase(), line: i + 1, section, indent: fence[1].length, body: [] };
+    if (fence) open = { file, lang: fence[2].toLowerCase(), line: i + 1, section, indent: fence[1].length, body: [] };
   });
-  if (open) throw new Error(`README line ${open.line}: code block never closed`);
+  if (open) throw new Error(`${file} line ${open.line}: code block never closed`);
   return blocks.map(({ body, indent, ...b }) => b);
 }
 
@@ -61,4 +61,4 @@ export function cliCommands(code) {
 }
 
 export const isCommonJs = (code) => /^\s*\/\/ CommonJS\b/.test(code);
-export const label = (b) => `README line ${b.line} (${b.section}): \`\`\`${b.lang}`;
+export const label = (b) => `${b.file} line ${b.line} (${b.section}): \`\`\`${b.lang}`;

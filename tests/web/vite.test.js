@@ -1,6 +1,6 @@
 // The package in a bundler: `npm pack` the repository, install the tarball into a fresh copy of the consumer app in
 // tests/vite-app/, build it with `vite build` (no plugins), serve the output and run it in headless Chromium; then the
-// same app under the Vite dev server with the one setting the README gives (optimizeDeps.exclude).
+// same app under the Vite dev server with the one setting docs/guide-js.md gives (optimizeDeps.exclude).
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn, spawnSync } from 'node:child_process';
@@ -123,7 +123,7 @@ describe('packed tarball in a consumer folder: the rtl command, and tests/vite-a
     await checkApp(browser, server.pageUrl, 'vite-app-build.png');
   });
 
-  test('the same app works under the Vite dev server (optimizeDeps.exclude from the README)', async () => {
+  test('the same app works under the Vite dev server (optimizeDeps.exclude from docs/guide-js.md)', async () => {
     const port = await freePort();
     // Started with node directly (npx would leave a child running); stopped by PID below.
     const dev = spawn(process.execPath, [VITE, '--host', '127.0.0.1', '--port', String(port), '--strictPort'],
