@@ -1,7 +1,8 @@
 // The page's boot: loads the package (through the import map, /dist/index.js), builds the lesson menu from
 // web/lessons/index.js, opens the lesson named by the URL hash, and connects it to the figure, the player and
 // the export buttons. Test hook: window.__rtl = { ready, errors, lessons: [{ id, title, steps, step }], current,
-// revision, finalState(), figureExtent(), clientPoint(x, y), exportArguments() }.
+// revision, finalState(), figureExtent(), clientPoint(x, y), exportArguments(), highlighted(), figureQuantities(),
+// lecture, link() }.
 import init from 'rtl-wasm';
 import { createData } from './data.js';
 import { Figure } from './figure.js';
@@ -208,6 +209,9 @@ async function main() {
   hook.source = () => state.source && { ...state.source };
   const textLink = wireTextLink($('lesson-text'), () => state.figure);
   hook.highlighted = () => textLink.current();
+  // the figure's items that draw a quantity of the text, as plain data (tests hover them)
+  hook.figureQuantities = () => (state.figure?.scene.items ?? []).filter((it) => it.q)
+    .map((it) => ({ ...it, ...(it.xy ? { xy: Array.from(it.xy) } : {}) }));
   hook.lecture = wireLecture({ player: state.player, button: $('lecture'), onChange: () => state.figure?.render() });
   // a parameter the lesson redraws without a new trace (a selected point) changes the link too
   $('lesson-controls').addEventListener('input', () => queueMicrotask(writeLink));
