@@ -55,6 +55,26 @@ export function lineThrough(x0, y0, x1, y1, reach) {
   return [x0 - (dx / l) * reach, y0 - (dy / l) * reach, x0 + (dx / l) * reach, y0 + (dy / l) * reach];
 }
 
+// `text` in lines no wider than `max` (measure(s) = its width), broken at spaces, at most `maxLines`; a last line
+// that would not fit is shortened and ends with an ellipsis (so is a word wider than a line).
+export function wrapText(text, measure, max, maxLines) {
+  const words = String(text).split(' '), lines = [];
+  let line = '';
+  for (let i = 0; i < words.length; i++) {
+    const next = line ? `${line} ${words[i]}` : words[i];
+    if (measure(next) <= max || !line) { line = next; continue; }
+    if (lines.length === maxLines - 1) { line = `${line} ${words.slice(i).join(' ')}`; break; }
+    lines.push(line);
+    line = words[i];
+  }
+  if (measure(line) > max) {
+    while (line.length > 1 && measure(`${line}…`) > max) line = line.slice(0, -1);
+    line = `${line.trimEnd()}…`;
+  }
+  lines.push(line);
+  return lines;
+}
+
 export class Figure {
   constructor(canvas) {
     this.canvas = canvas;
@@ -176,22 +196,30 @@ export class Figure {
       this.drawItem(item);
     }
     for (const item of this.overlay) this.drawItem(item);
-    if (this.scene.inset) this.drawInset(this.scene.inset);
-    this.drawTitle();
+    const title = this.titleLayout();
+    if (this.scene.inset) this.drawInset(this.scene.inset, title.height);
+    this.drawTitle(title);
   }
 
-  // The scene's title on top, as in the exported SVG/TikZ (shortened with an ellipsis when it does not fit).
-  drawTitle() {
+  // The scene's title on top, as in the exported SVG/TikZ: wrapped at spaces onto up to three lines when it is wider
+  // than the canvas (large type in lecture mode, a phone's narrow figure), the last line shortened with an ellipsis.
+  // { lines, width, height (device px) } of the title as drawTitle draws it.
+  titleLayout() {
     const { ctx } = this, v = this.view, d = v.t, t = this.scene.title;
-    if (!t) return;
+    if (!t) return { lines: [], width: 0, height: 0 };
     ctx.font = `${12 * d}px system-ui, sans-serif`;
-    let text = t;
-    while (text.length > 8 && ctx.measureText(text).width > v.W - 16 * d) text = text.slice(0, -2);
-    if (text !== t) text = text.slice(0, -1) + '…';
+    const lines = wrapText(t, (s) => ctx.measureText(s).width, v.W - 16 * d, 3);
+    return { lines, width: Math.max(...lines.map((l) => ctx.measureText(l).width)), height: (lines.length * 16 + 5) * d };
+  }
+
+  drawTitle({ lines, width, height }) {
+    if (!lines.length) return;
+    const { ctx } = this, d = this.view.t;
+    ctx.font = `${12 * d}px system-ui, sans-serif`;
     ctx.fillStyle = 'rgba(255,255,255,0.85)';
-    ctx.fillRect(0, 0, Math.min(v.W, ctx.measureText(text).width + 16 * d), 20 * d);
+    ctx.fillRect(0, 0, Math.min(this.view.W, width + 16 * d), height);
     ctx.fillStyle = '#1c2330';
-    ctx.fillText(text, 8 * d, 14 * d);
+    lines.forEach((l, i) => ctx.fillText(l, 8 * d, (14 + 16 * i) * d));
   }
 
   drawItem(it) {
@@ -278,11 +306,12 @@ export class Figure {
   }
 
   // A small chart in the top right corner: values against their index, with a horizontal limit line.
-  drawInset(ch) {
+  // titleHeight: the title's height (device px); the chart's top corners sit below it.
+  drawInset(ch, titleHeight = 20 * this.view.dpr) {
     const { ctx } = this, v = this.view, d = v.dpr;
-    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35);
+    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35), below = titleHeight + 6 * d;
     // the corner that hides the fewest points of the scene
-    const corners = [[v.W - w - 8 * d, 26 * d], [8 * d, 26 * d], [v.W - w - 8 * d, v.H - h - 8 * d], [8 * d, v.H - h - 30 * d]];
+    const corners = [[v.W - w - 8 * d, below], [8 * d, below], [v.W - w - 8 * d, v.H - h - 8 * d], [8 * d, v.H - h - 30 * d]];
     const hidden = corners.map(([cx, cy]) => {
       let n = 0;
       for (const it of this.scene.items) {
