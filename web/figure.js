@@ -23,7 +23,7 @@ export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2
 //   { type: 'label', x, y, text, colour?, bold?, offset? }  offset: [dx, dy] CSS px from the point (default 6, -6)
 // Any item may carry `q: name`, the quantity of the explanation it draws (web/text-link.js): the figure draws the
 // items of its highlighted quantity over a halo.
-// and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
+// and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel, yformat }.
 export class Scene {
   constructor(title = '') { this.title = title; this.items = []; this.inset = null; }
   add(item) { this.items.push(item); return this; }
@@ -305,13 +305,15 @@ export class Figure {
     ctx.fillText(len >= 1 ? `${len} m` : `${Math.round(len * 1000)} mm`, x, y - 5 * d);
   }
 
-  // A small chart in the top right corner: values against their index, with a horizontal limit line.
+  // A small chart in a corner: values against their index, with a horizontal limit line, its value, and the range of
+  // both axes (yformat(v) writes a value, e.g. in mm). Sized in text units, so it grows with the type (lecture mode).
   // titleHeight: the title's height (device px); the chart's top corners sit below it.
   drawInset(ch, titleHeight = 20 * this.view.dpr) {
-    const { ctx } = this, v = this.view, d = v.dpr;
-    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35), below = titleHeight + 6 * d;
+    const { ctx } = this, v = this.view, d = v.t;
+    const fmt = ch.yformat ?? ((y) => String(Number(y.toPrecision(2))));
+    const w = Math.min(270 * d, v.W * 0.45), h = Math.min(140 * d, v.H * 0.38), below = titleHeight + 6 * v.dpr;
     // the corner that hides the fewest points of the scene
-    const corners = [[v.W - w - 8 * d, below], [8 * d, below], [v.W - w - 8 * d, v.H - h - 8 * d], [8 * d, v.H - h - 30 * d]];
+    const corners = [[v.W - w - 8 * v.dpr, below], [8 * v.dpr, below], [v.W - w - 8 * v.dpr, v.H - h - 8 * v.dpr], [8 * v.dpr, v.H - h - 30 * v.t]];
     const hidden = corners.map(([cx, cy]) => {
       let n = 0;
       for (const it of this.scene.items) {
@@ -324,24 +326,38 @@ export class Figure {
       return n;
     });
     const [x0, y0] = corners[hidden.indexOf(Math.min(...hidden))];
-    ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * d;
+    ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * v.dpr;
     ctx.fillRect(x0, y0, w, h); ctx.strokeRect(x0, y0, w, h);
-    ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330';
-    ctx.fillText(ch.title, x0 + 6 * d, y0 + 13 * d);
-    const px = x0 + 30 * d, py = y0 + 20 * d, pw = w - 38 * d, ph = h - 38 * d;
+    ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330'; ctx.textAlign = 'left';
+    ctx.fillText(ch.title, x0 + 6 * d, y0 + 13 * d, w - 12 * d);
     const finite = ch.ys.filter(Number.isFinite);
     const top = Math.max(ch.hline ?? 0, ...finite, 1e-9) * 1.15;
+    ctx.font = `${10 * d}px system-ui, sans-serif`;
+    const left = Math.max(ctx.measureText(fmt(top)).width, ctx.measureText('0').width) + 10 * d;
+    const px = x0 + left, py = y0 + 22 * d, pw = w - left - 10 * d, ph = h - 42 * d;
     const xsMin = Math.min(...ch.xs), xsMax = Math.max(...ch.xs, xsMin + 1);
     const X = (x) => px + ((x - xsMin) / (xsMax - xsMin)) * pw, Y = (y) => py + ph - (Math.min(y, top) / top) * ph;
     ctx.strokeStyle = '#5a6475'; ctx.beginPath(); ctx.moveTo(px, py); ctx.lineTo(px, py + ph); ctx.lineTo(px + pw, py + ph); ctx.stroke();
+    // the axes' ranges: 0 and the top value on the left, the first and last index below
     ctx.fillStyle = '#5a6475';
-    ctx.fillText(ch.xlabel ?? '', px, py + ph + 13 * d);
+    ctx.textAlign = 'right';
+    ctx.fillText(fmt(top), px - 4 * d, py + 8 * d);
+    ctx.fillText('0', px - 4 * d, py + ph);
+    ctx.textAlign = 'left';
+    ctx.fillText(String(xsMin), px, py + ph + 12 * d);
+    ctx.textAlign = 'right';
+    ctx.fillText(String(xsMax), px + pw, py + ph + 12 * d);
+    ctx.textAlign = 'center';
+    ctx.fillText(ch.xlabel ?? '', px + pw / 2, py + ph + 12 * d, pw - 2 * ctx.measureText(String(xsMax)).width - 8 * d);
+    ctx.textAlign = 'left';
     if (ch.hline !== undefined) {
-      ctx.strokeStyle = INK.fail; ctx.setLineDash([4 * d, 3 * d]);
+      ctx.strokeStyle = INK.fail; ctx.lineWidth = 1 * v.dpr; ctx.setLineDash([4 * d, 3 * d]);
       ctx.beginPath(); ctx.moveTo(px, Y(ch.hline)); ctx.lineTo(px + pw, Y(ch.hline)); ctx.stroke(); ctx.setLineDash([]);
-      ctx.fillStyle = INK.fail; ctx.fillText(ch.hlabel ?? '', px - 28 * d, Y(ch.hline) + 4 * d);
+      ctx.fillStyle = INK.fail; ctx.textAlign = 'right';
+      ctx.fillText(`${ch.hlabel ?? ''} = ${fmt(ch.hline)}`, px + pw, Y(ch.hline) - 3 * d);
+      ctx.textAlign = 'left';
     }
-    ctx.strokeStyle = INK.candidate; ctx.lineWidth = 1.5 * d; ctx.beginPath();
+    ctx.strokeStyle = INK.candidate; ctx.lineWidth = 1.5 * v.m; ctx.beginPath();
     let started = false;
     ch.xs.forEach((x, i) => {
       if (!Number.isFinite(ch.ys[i])) return;
@@ -351,7 +367,7 @@ export class Figure {
     ch.xs.forEach((x, i) => {
       if (!Number.isFinite(ch.ys[i])) return;
       ctx.fillStyle = ch.ok && !ch.ok[i] ? INK.fail : INK.ok;
-      ctx.beginPath(); ctx.arc(X(x), Y(ch.ys[i]), (i === ch.xs.length - 1 ? 4 : 2.5) * d, 0, 2 * Math.PI); ctx.fill();
+      ctx.beginPath(); ctx.arc(X(x), Y(ch.ys[i]), (i === ch.xs.length - 1 ? 4 : 2.5) * v.m, 0, 2 * Math.PI); ctx.fill();
     });
   }
 

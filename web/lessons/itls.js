@@ -54,7 +54,7 @@ export default {
           s.marker(...pt(chain, e.index), { colour: e.fits ? INK.ok : INK.fail, q: 'added' });
           const run = [];
           for (let i = k; i >= 0 && trace[i].kind === 'add' && trace[i].first === e.first; i--) run.unshift(trace[i]);
-          s.setInset({ title: `RMS of the run from point ${e.first}`, xs: run.map((a) => a.count), ys: run.map((a) => a.rms), ok: run.map((a) => a.fits), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the run' });
+          s.setInset({ title: `RMS of the run from point ${e.first}`, xs: run.map((a) => a.count), ys: run.map((a) => a.rms), ok: run.map((a) => a.fits), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the run', yformat: (y) => mm(y) });
           html = `<p>Point <b data-q="added">${e.index}</b> joins <span data-q="run">the run that starts at point ${e.first} (now ${e.count} points)</span>.</p>` +
             (!e.tested ? `<p class="why">One or two points always fit a line exactly, so nothing is tested yet.</p>`
               : e.fits ? `<p class="why"><span data-q="run">The run's TLS line has RMS ${mm(e.rms)}</span> &lt; σ = ${mm(e.sigma)}: the point stays.</p>`

@@ -215,7 +215,7 @@ export default {
             const d = Math.abs(a * points[2 * i] + b * points[2 * i + 1] + c);
             xs.push(EXCERPT.firstBeam + i); ys.push(d); ok.push(d < sigma);
           }
-          scene.setInset({ title: `|orthogonal residual| per beam, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: 'beam' });
+          scene.setInset({ title: `|orthogonal residual| per beam, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: 'beam', yformat: (y) => mm(y) });
         }
         fig.show(scene);
 

@@ -147,7 +147,7 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
               const rms = Math.sqrt(e.meanSquaredError);
               s.points(slice(chain, e.first, e.end), { label: -1, colour: e.pass ? INK.ok : INK.fail, radius: 3.5, q: 'trial' });
               const run = trace.slice(0, k + 1).filter((t) => t.kind === 'trial' && t.first === e.first);
-              s.setInset({ title: `RMS of trial ranges from point ${e.first}`, xs: run.map((t) => t.end - t.first), ys: run.map((t) => Math.sqrt(t.meanSquaredError)), ok: run.map((t) => t.pass), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the trial range' });
+              s.setInset({ title: `RMS of trial ranges from point ${e.first}`, xs: run.map((t) => t.end - t.first), ys: run.map((t) => Math.sqrt(t.meanSquaredError)), ok: run.map((t) => t.pass), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the trial range', yformat: (y) => mm(y) });
               html = `<p>${PHASE[e.phase] ?? 'Trial'}: <span data-q="trial">points <b>${e.first}–${e.end - 1}</b> (${e.end - e.first} points)</span> fitted with one line: RMS ${mm(rms)} ${e.pass ? '&lt;' : '≥'} σ = ${mm(e.sigma)} — ${e.pass ? 'pass' : 'fail'}.</p>` +
                 `<p class="why">${e.phase === 1 ? 'Doubling the length finds, in a few fits, a range that is too long.' : e.phase === 2 ? 'Halving the interval between the last passing and the first failing end finds the longest passing range.' : e.phase === 0 ? 'If the whole rest of the chain fits one line, the search is over.' : 'A single point left at the end is joined to its neighbour range.'} Each fit costs O(1) from prefix sums.</p>`;
               break;
@@ -171,7 +171,7 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
             case 'repairRange': html = `<p>New range <b>${e.first}–${e.end - 1}</b> from the repair.</p>`; break;
             case 'move': {
               const moves = trace.slice(0, k + 1).filter((t) => t.kind === 'move');
-              s.setInset({ title: 'total squared residual after each move', xs: moves.map((_, q) => q + 1), ys: moves.map((t) => t.totalError), xlabel: 'optimizer moves' });
+              s.setInset({ title: 'total squared residual after each move', xs: moves.map((_, q) => q + 1), ys: moves.map((t) => t.totalError), xlabel: 'optimizer moves', yformat: (y) => `${(y * 1e6).toFixed(0)} mm²` });
               s.marker(...pt(chain, e.to), { colour: INK.current, q: 'moved' });
               html = `<p>Optimizer: breakpoint ${e.breakpoint} moves from point ${e.from} to <b data-q="moved">${e.to}</b>; total squared residual now ${(e.totalError * 1e6).toFixed(0)} mm².</p>`;
               break;
