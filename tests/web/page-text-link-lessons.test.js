@@ -1,5 +1,5 @@
 // Text and figure linked both ways in every 2D lesson whose text names a number the figure draws (IA, FTLS, AFTLS,
-// ITLS, RW, the TLS fit, compare; DP and CAR: page-text-link.test.js). For each lesson, at steps found in the
+// ITLS, RW, the TLS fit, compare, CAR's threshold step; DP and CAR's comparison: page-text-link.test.js). For each lesson, at steps found in the
 // package's own trace (recomputed here in Node from the lesson's chain and parameters): the text's quantities are
 // the expected ones and carry the trace's numbers; hovering each lights the figure item(s) of that name; hovering
 // such an item in the figure marks exactly those words.
@@ -97,6 +97,19 @@ describe('text and figure linked in every 2D lesson', { timeout: 300000 }, () =>
     const t = trace.findIndex((x) => x.kind === 'threshold');
     await scrubTo(page, 'ia', t);
     await checkBothWays(page, 'IA threshold', ['current', 'threshold']);
+  });
+
+  test('CAR: a point\'s threshold event names the point and its threshold', async () => {
+    await openLesson(page, 'car');
+    const s = await page.evaluate(() => window.__rtl.finalState());
+    const { trace } = rtl.segment(new Float64Array(s.points), { step: s.params.step, lowerBound: s.params.lowerBound, upperBound: s.params.upperBound, trace: true });
+    const k = trace.findIndex((e) => e.kind === 'threshold' && e.i === 38);
+    await scrubTo(page, 'car', k);
+    assert.equal(await textOf(page, 'threshold'), `the threshold is ${trace[k].threshold.toFixed(3)} m`);
+    await checkBothWays(page, 'CAR threshold', ['current', 'threshold']);
+    const c = trace.findIndex((e) => e.kind === 'compare' && e.i === 39 && e.j === 38);
+    await scrubTo(page, 'car', c);
+    await checkBothWays(page, 'CAR compare', ['current', 'distance', 'threshold']);
   });
 
   for (const id of ['ftls', 'aftls']) {
