@@ -205,8 +205,8 @@ export default {
           // the axes' names, over the centroid's mark: the short axis is a few pixels long, so its label stands off it
           const off = 0.08 * (view[2] - view[0]), lmin = fit.rms ** 2, L = 2 * Math.sqrt(spread.sxx + spread.syy - lmin);
           scene.label(cx + L * dx, cy + L * dy, 'λmax', { colour: '#00704F', q: 'major' });
-          scene.segments([cx, cy, cx + off * a, cy + off * b], { colour: '#CC79A7', width: 1, dash: true });
-          scene.label(cx + off * a, cy + off * b, 'λmin (across)', { colour: '#8E3B73', q: 'minor' });
+          scene.segments([cx, cy, cx + off * a, cy + off * b], { colour: '#CC79A7', width: 1, dash: true, q: 'minor' });
+          scene.label(cx + off * a, cy + off * b, 'λmin (across)', { colour: '#8E3B73', q: 'minor', offset: [6, 16] });   // below, apart from "centroid"
         }
         if (step === 4) {
           // each point's orthogonal distance against σ (the quantities whose mean square the RMS is)
