@@ -23,7 +23,7 @@ export const INK = { segment: '#111111', current: '#D55E00', candidate: '#0072B2
 //   { type: 'label', x, y, text, colour?, bold?, offset? }  offset: [dx, dy] CSS px from the point (default 6, -6)
 // Any item may carry `q: name`, the quantity of the explanation it draws (web/text-link.js): the figure draws the
 // items of its highlighted quantity over a halo.
-// and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel }.
+// and optionally one `inset` chart in screen space: { title, xs, ys, ok (bool per value), hline, hlabel, xlabel, yformat }.
 export class Scene {
   constructor(title = '') { this.title = title; this.items = []; this.inset = null; }
   add(item) { this.items.push(item); return this; }
@@ -53,6 +53,26 @@ function haloOf(it) {
 export function lineThrough(x0, y0, x1, y1, reach) {
   const dx = x1 - x0, dy = y1 - y0, l = Math.hypot(dx, dy) || 1;
   return [x0 - (dx / l) * reach, y0 - (dy / l) * reach, x0 + (dx / l) * reach, y0 + (dy / l) * reach];
+}
+
+// `text` in lines no wider than `max` (measure(s) = its width), broken at spaces, at most `maxLines`; a last line
+// that would not fit is shortened and ends with an ellipsis (so is a word wider than a line).
+export function wrapText(text, measure, max, maxLines) {
+  const words = String(text).split(' '), lines = [];
+  let line = '';
+  for (let i = 0; i < words.length; i++) {
+    const next = line ? `${line} ${words[i]}` : words[i];
+    if (measure(next) <= max || !line) { line = next; continue; }
+    if (lines.length === maxLines - 1) { line = `${line} ${words.slice(i).join(' ')}`; break; }
+    lines.push(line);
+    line = words[i];
+  }
+  if (measure(line) > max) {
+    while (line.length > 1 && measure(`${line}…`) > max) line = line.slice(0, -1);
+    line = `${line.trimEnd()}…`;
+  }
+  lines.push(line);
+  return lines;
 }
 
 export class Figure {
@@ -176,22 +196,30 @@ export class Figure {
       this.drawItem(item);
     }
     for (const item of this.overlay) this.drawItem(item);
-    if (this.scene.inset) this.drawInset(this.scene.inset);
-    this.drawTitle();
+    const title = this.titleLayout();
+    if (this.scene.inset) this.drawInset(this.scene.inset, title.height);
+    this.drawTitle(title);
   }
 
-  // The scene's title on top, as in the exported SVG/TikZ (shortened with an ellipsis when it does not fit).
-  drawTitle() {
+  // The scene's title on top, as in the exported SVG/TikZ: wrapped at spaces onto up to three lines when it is wider
+  // than the canvas (large type in lecture mode, a phone's narrow figure), the last line shortened with an ellipsis.
+  // { lines, width, height (device px) } of the title as drawTitle draws it.
+  titleLayout() {
     const { ctx } = this, v = this.view, d = v.t, t = this.scene.title;
-    if (!t) return;
+    if (!t) return { lines: [], width: 0, height: 0 };
     ctx.font = `${12 * d}px system-ui, sans-serif`;
-    let text = t;
-    while (text.length > 8 && ctx.measureText(text).width > v.W - 16 * d) text = text.slice(0, -2);
-    if (text !== t) text = text.slice(0, -1) + '…';
+    const lines = wrapText(t, (s) => ctx.measureText(s).width, v.W - 16 * d, 3);
+    return { lines, width: Math.max(...lines.map((l) => ctx.measureText(l).width)), height: (lines.length * 16 + 5) * d };
+  }
+
+  drawTitle({ lines, width, height }) {
+    if (!lines.length) return;
+    const { ctx } = this, d = this.view.t;
+    ctx.font = `${12 * d}px system-ui, sans-serif`;
     ctx.fillStyle = 'rgba(255,255,255,0.85)';
-    ctx.fillRect(0, 0, Math.min(v.W, ctx.measureText(text).width + 16 * d), 20 * d);
+    ctx.fillRect(0, 0, Math.min(this.view.W, width + 16 * d), height);
     ctx.fillStyle = '#1c2330';
-    ctx.fillText(text, 8 * d, 14 * d);
+    lines.forEach((l, i) => ctx.fillText(l, 8 * d, (14 + 16 * i) * d));
   }
 
   drawItem(it) {
@@ -277,12 +305,15 @@ export class Figure {
     ctx.fillText(len >= 1 ? `${len} m` : `${Math.round(len * 1000)} mm`, x, y - 5 * d);
   }
 
-  // A small chart in the top right corner: values against their index, with a horizontal limit line.
-  drawInset(ch) {
-    const { ctx } = this, v = this.view, d = v.dpr;
-    const w = Math.min(260 * d, v.W * 0.45), h = Math.min(130 * d, v.H * 0.35);
+  // A small chart in a corner: values against their index, with a horizontal limit line, its value, and the range of
+  // both axes (yformat(v) writes a value, e.g. in mm). Sized in text units, so it grows with the type (lecture mode).
+  // titleHeight: the title's height (device px); the chart's top corners sit below it.
+  drawInset(ch, titleHeight = 20 * this.view.dpr) {
+    const { ctx } = this, v = this.view, d = v.t;
+    const fmt = ch.yformat ?? ((y) => String(Number(y.toPrecision(2))));
+    const w = Math.min(270 * d, v.W * 0.45), h = Math.min(140 * d, v.H * 0.38), below = titleHeight + 6 * v.dpr;
     // the corner that hides the fewest points of the scene
-    const corners = [[v.W - w - 8 * d, 26 * d], [8 * d, 26 * d], [v.W - w - 8 * d, v.H - h - 8 * d], [8 * d, v.H - h - 30 * d]];
+    const corners = [[v.W - w - 8 * v.dpr, below], [8 * v.dpr, below], [v.W - w - 8 * v.dpr, v.H - h - 8 * v.dpr], [8 * v.dpr, v.H - h - 30 * v.t]];
     const hidden = corners.map(([cx, cy]) => {
       let n = 0;
       for (const it of this.scene.items) {
@@ -295,24 +326,38 @@ export class Figure {
       return n;
     });
     const [x0, y0] = corners[hidden.indexOf(Math.min(...hidden))];
-    ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * d;
+    ctx.fillStyle = 'rgba(255,255,255,0.93)'; ctx.strokeStyle = '#b7c0cd'; ctx.lineWidth = 1 * v.dpr;
     ctx.fillRect(x0, y0, w, h); ctx.strokeRect(x0, y0, w, h);
-    ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330';
-    ctx.fillText(ch.title, x0 + 6 * d, y0 + 13 * d);
-    const px = x0 + 30 * d, py = y0 + 20 * d, pw = w - 38 * d, ph = h - 38 * d;
+    ctx.font = `${11 * d}px system-ui, sans-serif`; ctx.fillStyle = '#1c2330'; ctx.textAlign = 'left';
+    ctx.fillText(ch.title, x0 + 6 * d, y0 + 13 * d, w - 12 * d);
     const finite = ch.ys.filter(Number.isFinite);
     const top = Math.max(ch.hline ?? 0, ...finite, 1e-9) * 1.15;
+    ctx.font = `${10 * d}px system-ui, sans-serif`;
+    const left = Math.max(ctx.measureText(fmt(top)).width, ctx.measureText('0').width) + 10 * d;
+    const px = x0 + left, py = y0 + 22 * d, pw = w - left - 10 * d, ph = h - 42 * d;
     const xsMin = Math.min(...ch.xs), xsMax = Math.max(...ch.xs, xsMin + 1);
     const X = (x) => px + ((x - xsMin) / (xsMax - xsMin)) * pw, Y = (y) => py + ph - (Math.min(y, top) / top) * ph;
     ctx.strokeStyle = '#5a6475'; ctx.beginPath(); ctx.moveTo(px, py); ctx.lineTo(px, py + ph); ctx.lineTo(px + pw, py + ph); ctx.stroke();
+    // the axes' ranges: 0 and the top value on the left, the first and last index below
     ctx.fillStyle = '#5a6475';
-    ctx.fillText(ch.xlabel ?? '', px, py + ph + 13 * d);
+    ctx.textAlign = 'right';
+    ctx.fillText(fmt(top), px - 4 * d, py + 8 * d);
+    ctx.fillText('0', px - 4 * d, py + ph);
+    ctx.textAlign = 'left';
+    ctx.fillText(String(xsMin), px, py + ph + 12 * d);
+    ctx.textAlign = 'right';
+    ctx.fillText(String(xsMax), px + pw, py + ph + 12 * d);
+    ctx.textAlign = 'center';
+    ctx.fillText(ch.xlabel ?? '', px + pw / 2, py + ph + 12 * d, pw - 2 * ctx.measureText(String(xsMax)).width - 8 * d);
+    ctx.textAlign = 'left';
     if (ch.hline !== undefined) {
-      ctx.strokeStyle = INK.fail; ctx.setLineDash([4 * d, 3 * d]);
+      ctx.strokeStyle = INK.fail; ctx.lineWidth = 1 * v.dpr; ctx.setLineDash([4 * d, 3 * d]);
       ctx.beginPath(); ctx.moveTo(px, Y(ch.hline)); ctx.lineTo(px + pw, Y(ch.hline)); ctx.stroke(); ctx.setLineDash([]);
-      ctx.fillStyle = INK.fail; ctx.fillText(ch.hlabel ?? '', px - 28 * d, Y(ch.hline) + 4 * d);
+      ctx.fillStyle = INK.fail; ctx.textAlign = 'right';
+      ctx.fillText(`${ch.hlabel ?? ''} = ${fmt(ch.hline)}`, px + pw, Y(ch.hline) - 3 * d);
+      ctx.textAlign = 'left';
     }
-    ctx.strokeStyle = INK.candidate; ctx.lineWidth = 1.5 * d; ctx.beginPath();
+    ctx.strokeStyle = INK.candidate; ctx.lineWidth = 1.5 * v.m; ctx.beginPath();
     let started = false;
     ch.xs.forEach((x, i) => {
       if (!Number.isFinite(ch.ys[i])) return;
@@ -322,7 +367,7 @@ export class Figure {
     ch.xs.forEach((x, i) => {
       if (!Number.isFinite(ch.ys[i])) return;
       ctx.fillStyle = ch.ok && !ch.ok[i] ? INK.fail : INK.ok;
-      ctx.beginPath(); ctx.arc(X(x), Y(ch.ys[i]), (i === ch.xs.length - 1 ? 4 : 2.5) * d, 0, 2 * Math.PI); ctx.fill();
+      ctx.beginPath(); ctx.arc(X(x), Y(ch.ys[i]), (i === ch.xs.length - 1 ? 4 : 2.5) * v.m, 0, 2 * Math.PI); ctx.fill();
     });
   }
 

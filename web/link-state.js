@@ -7,28 +7,34 @@
 export const STEP_KEY = 'at';
 // the data source when it is not the lesson's own excerpt: "dataset:scan" (a bundled log, or a file the user opened)
 export const SOURCE_KEY = 'src';
+// lecture mode (web/lecture.js) on: the link opens the figure full screen for a projector
+export const LECTURE_KEY = 'lecture';
 
-// { id, params: [[name, value], …] in URL order, at: 1-based step or null, src: { dataset, scan } or null } of a hash.
+// { id, params: [[name, value], …] in URL order, at: 1-based step or null, src: { dataset, scan } or null,
+//   lecture: true when the link asks for lecture mode } of a hash.
 export function parseHash(hash) {
   const text = String(hash ?? '').replace(/^#/, '');
   const q = text.indexOf('?');
   const id = decodeURIComponent(q < 0 ? text : text.slice(0, q));
   const query = new URLSearchParams(q < 0 ? '' : text.slice(q + 1));
   const params = [];
-  let at = null, src = null;
+  let at = null, src = null, lecture = false;
   for (const [k, v] of query) {
     if (k === STEP_KEY) { const n = Number(v); at = Number.isInteger(n) && n >= 1 ? n : null; }
+    else if (k === LECTURE_KEY) lecture = v === '1';
     else if (k === SOURCE_KEY) { const m = v.match(/^([\w.-]+):(\d+)$/); src = m ? { dataset: m[1], scan: Number(m[2]) } : null; }
     else params.push([k, v]);
   }
-  return { id, params, at, src };
+  return { id, params, at, src, lecture };
 }
 
 // The hash (with its "#") of lesson `id`, its parameters ([[name, value], …]), the 1-based step `at` (null: none)
-// and the data source `src` ({ dataset, scan }, null: the lesson's own excerpt).
-export function formatHash(id, params = [], at = null, src = null) {
+// the data source `src` ({ dataset, scan }, null: the lesson's own excerpt) and lecture mode (`lecture`: true adds
+// lecture=1).
+export function formatHash(id, params = [], at = null, src = null, lecture = false) {
   const query = new URLSearchParams(params);
   if (src) query.set(SOURCE_KEY, `${src.dataset}:${src.scan}`);
+  if (lecture) query.set(LECTURE_KEY, '1');
   if (at !== null && at !== undefined) query.set(STEP_KEY, String(at));
   const q = query.toString();
   return `#${encodeURIComponent(id)}${q ? `?${q}` : ''}`;

@@ -1,7 +1,8 @@
 // The page's boot: loads the package (through the import map, /dist/index.js), builds the lesson menu from
 // web/lessons/index.js, opens the lesson named by the URL hash, and connects it to the figure, the player and
 // the export buttons. Test hook: window.__rtl = { ready, errors, lessons: [{ id, title, steps, step }], current,
-// revision, finalState(), figureExtent(), clientPoint(x, y), exportArguments() }.
+// revision, finalState(), figureExtent(), clientPoint(x, y), exportArguments(), highlighted(), figureQuantities(),
+// figureTitle(), lecture, link() }.
 import init from 'rtl-wasm';
 import { createData } from './data.js';
 import { Figure } from './figure.js';
@@ -66,7 +67,7 @@ function showStep(k) {
 function currentHash() {
   const { lesson, player } = state;
   const steps = entry(lesson.id).steps;
-  return formatHash(lesson.id, readControls($('lesson-controls')), steps > 0 ? player.step + 1 : null, state.source);
+  return formatHash(lesson.id, readControls($('lesson-controls')), steps > 0 ? player.step + 1 : null, state.source, Boolean(hook.lecture?.on));
 }
 function writeLink() {
   if (!state.instance || !state.lesson) return;
@@ -81,7 +82,7 @@ async function copyLink() {
   const url = location.href, out = $('link-status');
   try {
     await navigator.clipboard.writeText(url);
-    out.textContent = 'Link copied: it opens this lesson with these parameters at this step.';
+    out.textContent = `Link copied: it opens this lesson with these parameters at this step${hook.lecture.on ? ', in lecture mode' : ''}.`;
   } catch {
     // no clipboard (permission refused, insecure origin): show the link selected, ready for Ctrl+C
     out.replaceChildren('Copy this link: ');
@@ -132,6 +133,8 @@ async function open(hash) {
   state.figure?.dispose();
   state.instance = null;
   state.predict.attach(null);
+  // a link in lecture mode opens in it (a link without it, e.g. one in the text, leaves the mode as it is)
+  if (link.lecture && !hook.lecture.on) hook.lecture.set(true);
   state.lesson = lesson;
   hook.current = lesson.id;
   for (const a of $('lesson-menu').querySelectorAll('a')) {
@@ -208,7 +211,12 @@ async function main() {
   hook.source = () => state.source && { ...state.source };
   const textLink = wireTextLink($('lesson-text'), () => state.figure);
   hook.highlighted = () => textLink.current();
-  hook.lecture = wireLecture({ player: state.player, button: $('lecture'), onChange: () => state.figure?.render() });
+  // the figure's title as the scene names it, and the lines the canvas shows of it (wrapped, maybe shortened)
+  hook.figureTitle = () => state.figure && { title: state.figure.scene.title, lines: state.figure.titleLayout().lines };
+  // the figure's items that draw a quantity of the text, as plain data (tests hover them)
+  hook.figureQuantities = () => (state.figure?.scene.items ?? []).filter((it) => it.q)
+    .map((it) => ({ ...it, ...(it.xy ? { xy: Array.from(it.xy) } : {}) }));
+  hook.lecture = wireLecture({ player: state.player, button: $('lecture'), onChange: () => { state.figure?.render(); writeLink(); } });
   // a parameter the lesson redraws without a new trace (a selected point) changes the link too
   $('lesson-controls').addEventListener('input', () => queueMicrotask(writeLink));
   hook.link = () => { writeLink(); return location.href; };

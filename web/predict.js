@@ -42,6 +42,9 @@ export class Predict {
     this.cancel();
     this.instance = instance;
     this.answered.clear();
+    // the switch only where the lesson asks questions (it keeps its state for the next lesson that does)
+    const label = this.toggle.closest('label');
+    if (instance && label) label.hidden = !instance.predict;
     this.render();
   }
 

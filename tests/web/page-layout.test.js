@@ -65,6 +65,11 @@ describe('lesson page layout', { timeout: 240000 }, () => {
       assert.ok(w <= 390, `${id}: document width ${w}`);
       const fig = await box(page, '#canvas');
       assert.ok(fig.width >= 300 && fig.x >= 0 && fig.x + fig.width <= 390, `${id}: figure ${JSON.stringify(fig)}`);
+      // under the figure: the player and the explanation before the parameters (stepping needs no long scroll)
+      const player = await box(page, '#player'), text = await box(page, '#lesson-text'), controls = await box(page, '#lesson-controls');
+      if (player && controls && controls.height > 0) {
+        assert.ok(fig.y + fig.height <= player.y && player.y < text.y && text.y + text.height <= controls.y + 1, `${id}: figure ${fig.y}, player ${player.y}, text ${text.y}, parameters ${controls.y}`);
+      }
     }
     await openLesson(page, 'compare');
     const cols = await page.$$eval('#lesson-stage table thead th', (ths) => ths.map((th) => th.getBoundingClientRect().width));

@@ -104,10 +104,11 @@ describe('lesson page: traces, final states, screenshots', { timeout: 300000 }, 
     assert.equal(fixed.untraced.ok, rtl.vectorize(new Float64Array(s.chain), { method: 'ftls', sigma: 0.03, delta: fixed.params.delta, split: false }).ok);
   });
 
-  test('screenshots of every lesson at 1280x800, 390x844 and 1920x1080', async () => {
+  test('screenshots of every lesson at 1280x800, 390x844 and 1920x1080 (and in lecture mode there): nothing sideways, titles whole', async () => {
     const ids = await page.evaluate(() => window.__rtl.lessons.map((l) => l.id));
-    for (const [w, h] of [[1280, 800], [390, 844], [1920, 1080]]) {
+    for (const [w, h, lecture] of [[1280, 800], [390, 844], [1920, 1080], [1920, 1080, true]]) {
       await page.setViewportSize({ width: w, height: h });
+      await page.evaluate((on) => window.__rtl.lecture.set(on), Boolean(lecture));
       for (const id of ids) {
         const e = await openLesson(page, id);
         // a few steps after the one the lesson opens at shows the algorithm at work
@@ -116,9 +117,14 @@ describe('lesson page: traces, final states, screenshots', { timeout: 300000 }, 
           await page.dispatchEvent('#player [data-act="scrub"]', 'input');
         }
         await page.waitForTimeout(150);
-        await page.screenshot({ path: join(SHOTS, `${id}-${w}x${h}.png`), fullPage: w < 500 });
+        await page.screenshot({ path: join(SHOTS, `${lecture ? 'lecture-' : ''}${id}-${w}x${h}.png`), fullPage: w < 500 });
+        const width = await page.evaluate(() => Math.max(document.documentElement.scrollWidth, document.body.scrollWidth));
+        assert.ok(width <= w, `${id} at ${w}x${h}: the page is ${width} px wide`);
+        const t = await page.evaluate(() => window.__rtl.figureTitle());
+        if (t && t.title && await page.isVisible('#canvas')) assert.equal(t.lines.join(' '), t.title, `${id} at ${w}x${h}${lecture ? ' (lecture)' : ''}: the figure's title is whole`);
       }
     }
+    await page.evaluate(() => window.__rtl.lecture.set(false));
     await page.setViewportSize({ width: 1280, height: 800 });
   });
 

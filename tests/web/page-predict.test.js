@@ -126,6 +126,13 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     assert.equal(await page.isChecked('#your-turn'), false);
   });
 
+  test('the switch is offered only in lessons that ask questions', async () => {
+    for (const [id, asks] of [['compare', false], ['tls-fit', false], ['dp', true], ['itls', false], ['rw', true]]) {
+      await openLesson(page, id);
+      assert.equal(await page.isVisible('#your-turn'), asks, id);
+    }
+  });
+
   test('no console errors', async () => {
     assert.deepEqual(await page.evaluate(() => window.__rtl.errors), []);
     assert.deepEqual(problems, []);

@@ -80,7 +80,6 @@ export default {
         if (e.i !== undefined) for (let q = k; q >= 0; q--) if (trace[q].kind === 'threshold' && trace[q].i === e.i) { thr = trace[q]; break; }
         if (thr && ['threshold', 'compare', 'link', 'merge', 'start', 'seam'].includes(e.kind)) {
           s.circle(...P(thr.i), thr.threshold, { colour: INK.candidate, dash: true, q: 'threshold' });
-          s.marker(...P(thr.i), { colour: INK.current, q: 'current' });
           for (let d = 1; d <= w; d++) { const j = (thr.i - d + n) % n; if (Number.isFinite(points[2 * j])) s.marker(...P(j), { colour: INK.muted, size: 5 }); }
         }
         switch (e.kind) {
@@ -90,7 +89,7 @@ export default {
             break;
           case 'gap': html = `<p>Beam <b>${e.i}</b> has no return (a gap): it joins no cluster and is never compared.</p>`; break;
           case 'threshold':
-            html = `<p>Point <b>${e.i}</b> at range ${m(e.range, 2)}: ${e.raw < e.threshold ? `scaling · range = ${m(e.raw)} is below the lower bound, so the threshold is ${m(e.threshold)}` : e.raw > e.threshold ? `scaling · range = ${m(e.raw)} is above the upper bound, so the threshold is ${m(e.threshold)}` : `threshold = scaling · range = ${m(e.threshold)}`}.</p><p class="why">The dashed circle has that radius: an earlier point of the window (grey rings) inside it is close.</p>`;
+            html = `<p>Point <b data-q="current">${e.i}</b> at range ${m(e.range, 2)}: ${e.raw < e.threshold ? `scaling · range = ${m(e.raw)} is below the lower bound, so <span data-q="threshold">the threshold is ${m(e.threshold)}</span>` : e.raw > e.threshold ? `scaling · range = ${m(e.raw)} is above the upper bound, so <span data-q="threshold">the threshold is ${m(e.threshold)}</span>` : `<span data-q="threshold">threshold = scaling · range = ${m(e.threshold)}</span>`}.</p><p class="why">The dashed circle has that radius: an earlier point of the window (grey rings) inside it is close.</p>`;
             break;
           case 'compare': case 'seam':
             s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5, q: 'distance' });
@@ -106,6 +105,8 @@ export default {
           case 'cluster': html = `<p>Result: cluster ${e.index + 1} starts at point ${e.first} and has ${e.size} point${e.size === 1 ? '' : 's'}.</p>`; break;
           default: html = `<p>${e.kind}</p>`;
         }
+        // the current point's ring on top of its comparison line, so that hovering it names the point
+        if (thr && ['threshold', 'compare', 'link', 'merge', 'start', 'seam'].includes(e.kind)) s.marker(...P(thr.i), { colour: INK.current, q: 'current' });
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${clusters.length} clusters, as the package's untraced segment() (${untraced.clusters.length}).</p>`;
         if (e.i !== undefined) host.figure.ensureVisible(points[2 * e.i], points[2 * e.i + 1]);
         host.figure.show(s);

@@ -106,11 +106,16 @@ export default {
         this.step = k;
         const s = new Scene(`Compare: ${METHODS[Math.max(k, 0)][1]} on cluster ${Number(select.value) + 1} of ${host.data.describe(SRC.dataset, SRC.scan)}`);
         s.points(chain, { label: 0 });
-        if (k >= 0) s.segments(results[k].segments, { colour: INK.segment, width: 2.5 });
+        if (k >= 0) {
+          s.segments(results[k].segments, { colour: INK.segment, width: 2.5, q: 'segments' });
+          // the segments' end points, as markers (screen only: the export keeps the cluster's points alone)
+          const seg = results[k].segments;
+          for (let i = 0; i + 1 < seg.length; i += 2) s.marker(seg[i], seg[i + 1], { colour: INK.current, shape: 'dot', size: 6, q: 'vertices' });
+        }
         host.figure.show(s);
         for (const tr of table.querySelectorAll('tbody tr')) tr.classList.toggle('current', Number(tr.dataset.k) === k);
         const r = rows[k];
-        host.text.innerHTML = r ? `<p><b>${r.name}</b>: ${r.ok ? `${r.segments} segments, ${r.vertices} vertices, total squared residual ${(r.ssr * 1e6).toFixed(0)} mm² (RMS over all points ${mm(r.rmsAll)})` : 'failed on this cluster'}.</p><p class="why">Step through the methods (or pick a table row); the table below the figure compares them all.</p>` : '';
+        host.text.innerHTML = r ? `<p><b>${r.name}</b>: ${r.ok ? `<span data-q="segments">${r.segments} segments</span>, <span data-q="vertices">${r.vertices} vertices</span>, total squared residual ${(r.ssr * 1e6).toFixed(0)} mm² (RMS over all points ${mm(r.rmsAll)})` : 'failed on this cluster'}.</p><p class="why">Step through the methods (or pick a table row); the table below the figure compares them all.</p>` : '';
       },
       finalState() { return { method: 'compare', rows: rows.map((r) => ({ ...r })), verdict: verdict.textContent, params, cluster: Number(select.value), step: this.step ?? -1, steps: rows.length ? METHODS.length : 0 }; },
       dispose() {},

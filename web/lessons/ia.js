@@ -84,16 +84,15 @@ export default {
         let thr = null;
         if (i !== undefined) for (let q = k; q >= 0; q--) if (trace[q].kind === 'threshold' && trace[q].i === i) { thr = trace[q]; break; }
         if (thr && ['threshold', 'compare', 'link', 'merge', 'open'].includes(e.kind)) {
-          s.circle(...P(i), thr.threshold, { colour: INK.candidate, dash: true });
-          s.marker(...P(i), { colour: INK.current });
+          s.circle(...P(i), thr.threshold, { colour: INK.candidate, dash: true, q: 'threshold' });
         }
         switch (e.kind) {
           case 'add': html = `<p>Point <b>${e.i}</b> arrives and enters the window${e.gap ? ' — a gap (no return): it takes a window place but joins nothing' : ''}.</p>`; break;
           case 'threshold':
-            html = `<p>Its threshold: scaling · range = ${params.scaling} · ${m(e.range, 2)} = ${m(e.raw)}${e.raw !== e.threshold ? `, clamped to ${m(e.threshold)}` : ''}.</p>`; break;
+            html = `<p>The threshold of point <b data-q="current">${e.i}</b>: scaling · range = ${params.scaling} · ${m(e.range, 2)} = ${m(e.raw)}${e.raw !== e.threshold ? `, clamped to <span data-q="threshold">${m(e.threshold)}</span>` : ` = <span data-q="threshold">threshold ${m(e.threshold)}</span>`}.</p>`; break;
           case 'compare':
-            s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5 });
-            html = `<p>Point <b>${e.i}</b> vs window point ${e.j}: distance ${m(e.distance)} ${e.linked ? '≤' : '>'} threshold ${m(e.threshold)} — ${e.linked ? 'close' : 'too far'}.</p>`; break;
+            s.segments([...P(e.i), ...P(e.j)], { colour: e.linked ? INK.ok : INK.fail, width: 2.5, q: 'distance' });
+            html = `<p>Point <b data-q="current">${e.i}</b> vs window point ${e.j}: <span data-q="distance">distance ${m(e.distance)}</span> ${e.linked ? '≤' : '>'} <span data-q="threshold">threshold ${m(e.threshold)}</span> — ${e.linked ? 'close' : 'too far'}.</p>`; break;
           case 'link': html = `<p>Point <b>${e.i}</b> joins cluster #${e.cluster} (the cluster of point ${e.j}).</p>`; break;
           case 'open': html = `<p>Point <b>${e.i}</b> is close to no window point: it opens cluster #${e.cluster}.</p>`; break;
           case 'merge': html = `<p>Point <b>${e.i}</b> links two clusters: #${e.from} merges into #${e.into} (the older one survives).</p>`; break;
@@ -102,6 +101,8 @@ export default {
           case 'close': html = `<p>Cluster #${e.cluster} has no point left in the window: it <b>closes</b> with ${e.size} point${e.size === 1 ? '' : 's'}.</p><p class="why">A streaming segmenter can hand it on now, before the scan ends.</p>`; break;
           default: html = `<p>${e.kind}</p>`;
         }
+        // the new point's ring on top of its comparison line, so that hovering it names the point
+        if (thr && ['threshold', 'compare', 'link', 'merge', 'open'].includes(e.kind)) s.marker(...P(i), { colour: INK.current, q: 'current' });
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${closed.length} closed clusters, as the untraced StreamSegmenter (${untraced.length}).</p>`;
         if (e.i !== undefined) host.figure.ensureVisible(points[2 * e.i], points[2 * e.i + 1]);
         host.figure.show(s);

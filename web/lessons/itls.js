@@ -50,30 +50,32 @@ export default {
         let html;
         if (e.kind === 'add') {
           // the run so far, its RMS history (this run's add events) as a curve against σ
-          s.points(slice(chain, e.first, e.index + 1), { label: -1, colour: INK.candidate, radius: 3.5 });
-          s.marker(...pt(chain, e.index), { colour: e.fits ? INK.ok : INK.fail });
+          s.points(slice(chain, e.first, e.index + 1), { label: -1, colour: INK.candidate, radius: 3.5, q: 'run' });
+          s.marker(...pt(chain, e.index), { colour: e.fits ? INK.ok : INK.fail, q: 'added' });
           const run = [];
           for (let i = k; i >= 0 && trace[i].kind === 'add' && trace[i].first === e.first; i--) run.unshift(trace[i]);
-          s.setInset({ title: `RMS of the run from point ${e.first}`, xs: run.map((a) => a.count), ys: run.map((a) => a.rms), ok: run.map((a) => a.fits), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the run' });
-          html = `<p>Point <b>${e.index}</b> joins the run that starts at point ${e.first} (now ${e.count} points).</p>` +
+          s.setInset({ title: `RMS of the run from point ${e.first}`, xs: run.map((a) => a.count), ys: run.map((a) => a.rms), ok: run.map((a) => a.fits), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the run', yformat: (y) => mm(y) });
+          html = `<p>Point <b data-q="added">${e.index}</b> joins <span data-q="run">the run that starts at point ${e.first} (now ${e.count} points)</span>.</p>` +
             (!e.tested ? `<p class="why">One or two points always fit a line exactly, so nothing is tested yet.</p>`
-              : e.fits ? `<p class="why">The run's TLS line has RMS ${mm(e.rms)} &lt; σ = ${mm(e.sigma)}: the point stays.</p>`
-                : `<p class="why">The RMS would rise to ${mm(e.rms)} ≥ σ = ${mm(e.sigma)}: the point is taken out again and the run is closed before it.</p>`);
+              : e.fits ? `<p class="why"><span data-q="run">The run's TLS line has RMS ${mm(e.rms)}</span> &lt; σ = ${mm(e.sigma)}: the point stays.</p>`
+                : `<p class="why">The RMS would rise to ${mm(e.rms)} ≥ σ = ${mm(e.sigma)}: <span data-q="added">the point</span> is taken out again and the run is closed before it.</p>`);
         } else if (e.kind === 'close') {
-          s.points(slice(chain, e.first, e.end), { label: -1, colour: INK.ok, radius: 3.5 });
-          html = `<p>Run <b>${e.first}–${e.end - 1}</b> is closed with RMS ${mm(e.rms)}.</p><p class="why">` +
-            (e.atEnd ? 'The chain ended.' : `With point ${e.end} its RMS would be ${mm(e.rmsWithNext)} ≥ σ = ${mm(e.sigma)}; point ${e.end} starts the next run.`) + '</p>';
+          s.points(slice(chain, e.first, e.end), { label: -1, colour: INK.ok, radius: 3.5, q: 'run' });
+          if (!e.atEnd && e.end < chain.length / 2) s.marker(...pt(chain, e.end), { colour: INK.fail, q: 'next' });
+          html = `<p><span data-q="run">Run <b>${e.first}–${e.end - 1}</b></span> is closed with RMS ${mm(e.rms)}.</p><p class="why">` +
+            (e.atEnd ? 'The chain ended.' : `With <span data-q="next">point ${e.end}</span> its RMS would be ${mm(e.rmsWithNext)} ≥ σ = ${mm(e.sigma)}; point ${e.end} starts the next run.`) + '</p>';
         } else if (e.kind === 'tail') {
-          s.marker(...pt(chain, e.index), { colour: INK.current });
-          html = `<p>The last point <b>${e.index}</b> was left alone when the chain ended: it is ${TAIL[e.method] ?? `placed (method ${e.method})`}. The first ${e.kept} ranges stay.</p>`;
+          s.marker(...pt(chain, e.index), { colour: INK.current, q: 'tail' });
+          html = `<p>The last point <b data-q="tail">${e.index}</b> was left alone when the chain ended: it is ${TAIL[e.method] ?? `placed (method ${e.method})`}. The first ${e.kept} ranges stay.</p>`;
         } else if (e.kind === 'tailRange') {
           html = `<p>Repaired tail: range <b>${e.first}–${e.end - 1}</b>, RMS ${mm(e.rms)}.</p>`;
         } else if (e.kind === 'segment') {
-          html = `<p>Segment ${e.range + 1}: the fitted line of points ${e.first}–${e.end - 1}, trimmed at the projections of its first and last point.</p>`;
+          html = `<p><span data-q="segment">Segment ${e.range + 1}</span>: the fitted line of points ${e.first}–${e.end - 1}, trimmed at the projections of its first and last point.</p>`;
         } else {
           html = `<p>${e.count} points, σ = ${mm(e.sigma)}: the first run starts at point 0.</p>`;
         }
         s.segments(segments.flatMap((g) => g.slice(2)), { colour: INK.segment, width: 2.5 });
+        if (e.kind === 'segment') s.segments([e.x0, e.y0, e.x1, e.y1], { colour: INK.current, width: 3, q: 'segment' });
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${segments.length} segments, as the package's untraced result (${untraced.count}). Segments are trimmed fitted lines, so they need not touch.</p>`;
         host.figure.show(s);
         host.text.innerHTML = html + '<p class="legend">Figure: large blue points = the run being grown, green/red ring = the point just added fits / does not; colours = closed runs; inset = the RMS of the run against σ.</p>';

@@ -45,22 +45,31 @@ export default {
           const [ax, ay] = pt(chain, strip.key), [bx, by] = pt(chain, strip.through);
           // the strip runs from the key point ahead, through the next point
           const l = Math.hypot(bx - ax, by - ay) || 1, far = 1000;
-          s.strip(ax, ay, ax + ((bx - ax) / l) * far, ay + ((by - ay) / l) * far, strip.epsilon, { colour: INK.candidate, bounded: true });
-          s.marker(ax, ay, { colour: INK.candidate, size: 8 });
+          s.strip(ax, ay, ax + ((bx - ax) / l) * far, ay + ((by - ay) / l) * far, strip.epsilon, { colour: INK.candidate, bounded: true, q: 'epsilon' });
+          s.marker(ax, ay, { colour: INK.candidate, size: 8, q: 'key' });
+          s.marker(bx, by, { colour: INK.candidate, size: 5, q: 'through' });
         }
         s.polyline(kept.flatMap((i) => pt(chain, i)), { colour: INK.segment, width: 2 });
         for (const i of kept) s.marker(...pt(chain, i), { colour: INK.segment, shape: 'dot', size: 6 });
         let html;
+        const eps = (v) => `<span data-q="epsilon">ε = ${m(v)}</span>`;
         if (e.kind === 'start') html = `<p>${e.count} points, strip half-width ε = ${m(e.epsilon)}. Point 0 is the first key point.</p>`;
         else if (e.kind === 'keep') html = `<p>Point <b>${e.index}</b> is kept as a vertex${e.index === 0 ? ' (the first point)' : e.index === chain.length / 2 - 1 ? ' (the last point: the polyline ends there)' : ': it was the last point inside the strip'}.</p>`;
-        else if (e.kind === 'strip') html = `<p>New strip: the line from key point <b>${e.key}</b> through point ${e.through}, ε = ${m(e.epsilon)} on each side. The scan continues at point ${e.through + 1} while the points stay inside.</p>`;
+        else if (e.kind === 'strip') html = `<p>New strip: the line from <span data-q="key">key point <b>${e.key}</b></span> through <span data-q="through">point ${e.through}</span>, ${eps(e.epsilon)} on each side. The scan continues at point ${e.through + 1} while the points stay inside.</p>`;
         else if (e.kind === 'exit') {
-          s.marker(...pt(chain, e.index), { colour: INK.fail, shape: 'x' });
-          html = `<p>Point <b>${e.index}</b> lies ${m(e.distance)} from the strip's axis &gt; ε = ${m(e.epsilon)}: it leaves the strip.</p><p class="why">So point ${e.index - 1}, the last one inside, becomes the next key point and a new strip starts there.</p>`;
+          // the distance as a perpendicular from the leaving point to the strip's axis
+          const [px, py] = pt(chain, e.index);
+          if (strip) {
+            const [ax, ay] = pt(chain, strip.key), [bx, by] = pt(chain, strip.through);
+            const dx = bx - ax, dy = by - ay, t = ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy || 1);
+            s.segments([px, py, ax + t * dx, ay + t * dy], { colour: INK.fail, width: 2, q: 'distance' });
+          }
+          s.marker(px, py, { colour: INK.fail, shape: 'x', q: 'exit' });
+          html = `<p>Point <b data-q="exit">${e.index}</b> lies <span data-q="distance">${m(e.distance)} from the strip's axis</span> &gt; ${eps(e.epsilon)}: it leaves the strip.</p><p class="why">So point ${e.index - 1}, the last one inside, becomes the next key point and a new strip starts there.</p>`;
         } else html = `<p>${e.kind}</p>`;
         if (k === trace.length - 1) html += `<p><b>Done:</b> ${kept.length} vertices, ${kept.length - 1} segments, as the package's untraced result (${untraced.count}). One pass, fast, but each strip is aimed by only two noisy points.</p>`;
         host.figure.show(s);
-        host.text.innerHTML = html + '<p class="legend">Figure: blue band = the strip (ε each side) from its key point (ring) ahead; red × = the point that leaves it; black = the polyline kept so far.</p>';
+        host.text.innerHTML = html + '<p class="legend">Figure: blue band = the strip (ε each side) from its key point (large ring) through the next point (small ring); red × = the point that leaves it, red line = its distance from the axis; black = the polyline kept so far.</p>';
       },
       finalState() {
         const { params, untraced, trace } = run;

@@ -124,7 +124,9 @@ export default {
         if (name === 'mount') scene.points(result.sensor, { colour: '#f3c4a8', radius: 1.8 });
         if (name === 'pose') scene.points(result.robot, { colour: '#a9c8e6', radius: 1.8 });
         scene.points(pts, { colour: name === 'sensor' ? FRAME_COLOURS.sensor : name === 'mount' ? FRAME_COLOURS.robot : '#222', radius: 2.2 });
-        const len = mapView ? 2 : 0.8;
+        // axes at least 50 CSS px long, so that their names do not pile up on a phone's small figure
+        fig.layout();
+        const len = Math.max(mapView ? 2 : 0.8, 50 / fig.scale);
         if (mapView) axes(scene, frameTf('map'), 'map', len);
         // with the identity mount the sensor frame is the robot frame: one set of axes, named so
         const same = mount.x === 0 && mount.y === 0 && mount.angle === 0;

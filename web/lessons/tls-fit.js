@@ -172,35 +172,42 @@ export default {
         const name = STEPS[step];
         const scene = new Scene(`TLS line fit, Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}-${EXCERPT.lastBeam}: ${name}`);
         // line and residuals first, points on top
-        if (step >= 2) lineItem(scene, cx, cy, dx, dy, { colour: '#0072B2', width: 2.5 });
+        if (step >= 2) lineItem(scene, cx, cy, dx, dy, { colour: '#0072B2', width: 2.5, q: 'line' });
         if (step >= 3) {
-          lineItem(scene, cx, ols.slope * cx + ols.intercept, 1, ols.slope, { colour: '#D55E00', width: 1.5, dash: true });
+          lineItem(scene, cx, ols.slope * cx + ols.intercept, 1, ols.slope, { colour: '#D55E00', width: 1.5, dash: true, q: 'ols' });
           const orth = [], vert = [];
           for (let i = 0; i < n; i++) {
             const x = points[2 * i], y = points[2 * i + 1], d = a * x + b * y + c;
             orth.push(x, y, x - d * a, y - d * b);
             vert.push(x, y, x, ols.slope * x + ols.intercept);
           }
-          scene.segments(vert, { colour: '#D55E00', width: 1, dash: true });
-          scene.segments(orth, { colour: '#0072B2', width: 1.5 });
+          scene.segments(vert, { colour: '#D55E00', width: 1, dash: true, q: 'vertical' });
+          scene.segments(orth, { colour: '#0072B2', width: 1.5, q: 'residuals' });
         }
         if (step === 1 || step === 2) {
           // principal axes of the spread, along the package's direction and normal, half-lengths 2√λ (display)
           const lmin = fit.rms ** 2, lmax = spread.sxx + spread.syy - lmin;
           const L = 2 * Math.sqrt(lmax), S = 2 * Math.sqrt(lmin);
-          scene.segments([cx - L * dx, cy - L * dy, cx + L * dx, cy + L * dy], { colour: '#009E73', width: 2 });
-          scene.segments([cx - S * a, cy - S * b, cx + S * a, cy + S * b], { colour: '#CC79A7', width: 3 });
+          scene.segments([cx - L * dx, cy - L * dy, cx + L * dx, cy + L * dy], { colour: '#009E73', width: 2, q: 'major' });
+          scene.segments([cx - S * a, cy - S * b, cx + S * a, cy + S * b], { colour: '#CC79A7', width: 3, q: 'minor' });
         }
         if (step === 2) {
           const len = 0.2 * (view[2] - view[0]);
-          scene.segments([cx, cy, cx + len * a, cy + len * b], { colour: '#CC79A7', width: 2.5 });
-          scene.marker(cx + len * a, cy + len * b, { shape: 'dot', colour: '#CC79A7', size: 8 });
-          scene.label(cx + len * a, cy + len * b, 'normal n', { colour: '#762A83' });
+          scene.segments([cx, cy, cx + len * a, cy + len * b], { colour: '#CC79A7', width: 2.5, q: 'normal' });
+          scene.marker(cx + len * a, cy + len * b, { shape: 'dot', colour: '#CC79A7', size: 8, q: 'normal' });
+          scene.label(cx + len * a, cy + len * b, 'normal n', { colour: '#762A83', q: 'normal' });
         }
         scene.points(points, { colour: '#222', radius: 4 });
         scene.marker(points[2 * selected], points[2 * selected + 1], { colour: '#E69F00', size: 9 });
-        scene.marker(cx, cy, { shape: 'x', colour: '#000', size: 7 });
-        scene.label(cx, cy, 'centroid');
+        scene.marker(cx, cy, { shape: 'x', colour: '#000', size: 7, q: 'centroid' });
+        scene.label(cx, cy, 'centroid', { q: 'centroid' });
+        if (step === 1) {
+          // the axes' names, over the centroid's mark: the short axis is a few pixels long, so its label stands off it
+          const off = 0.08 * (view[2] - view[0]), lmin = fit.rms ** 2, L = 2 * Math.sqrt(spread.sxx + spread.syy - lmin);
+          scene.label(cx + L * dx, cy + L * dy, 'λmax', { colour: '#00704F', q: 'major' });
+          scene.segments([cx, cy, cx + off * a, cy + off * b], { colour: '#CC79A7', width: 1, dash: true, q: 'minor' });
+          scene.label(cx + off * a, cy + off * b, 'λmin (across)', { colour: '#8E3B73', q: 'minor', offset: [6, 16] });   // below, apart from "centroid"
+        }
         if (step === 4) {
           // each point's orthogonal distance against σ (the quantities whose mean square the RMS is)
           const xs = [], ys = [], ok = [];
@@ -208,20 +215,20 @@ export default {
             const d = Math.abs(a * points[2 * i] + b * points[2 * i + 1] + c);
             xs.push(EXCERPT.firstBeam + i); ys.push(d); ok.push(d < sigma);
           }
-          scene.setInset({ title: `|orthogonal residual| per beam, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: 'beam' });
+          scene.setInset({ title: `|orthogonal residual| per beam, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: 'beam', yformat: (y) => mm(y) });
         }
         fig.show(scene);
 
         const olsRms = Math.sqrt(points.reduce((s, v, i) => (i % 2 ? s + (v - ols.slope * points[i - 1] - ols.intercept) ** 2 : s), 0) / n);
         const lmin = fit.rms ** 2, lmax = spread.sxx + spread.syy - lmin;
         const text = {
-          centroid: `Step 1 of 5 · centroid. The ${n} points are Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}, a wall in the robot frame. The best line in the total-least-squares sense always passes through their centroid (+) = (${f3(cx)}, ${f3(cy)}) m, so only its direction is left to find.`,
-          spread: `Step 2 of 5 · spread. Around the centroid the points spread as the covariance matrix [[${spread.sxx.toExponential(2)}, ${spread.sxy.toExponential(2)}], [${spread.sxy.toExponential(2)}, ${spread.syy.toExponential(2)}]] m². Its eigenvectors are the axes drawn: the long green one along the wall (λ = ${lmax.toExponential(2)} m²), the short pink one across it (λ = ${lmin.toExponential(2)} m²).`,
-          normal: `Step 3 of 5 · normal. The normal of the fitted line is the eigenvector of the smaller eigenvalue: n = (${f3(a)}, ${f3(b)}), so the line is ${f3(a)}·x + ${f3(b)}·y ${c < 0 ? '−' : '+'} ${f3(Math.abs(c))} = 0 (package fitLine). Turning the line any other way around the centroid would increase the sum of squared orthogonal distances.`,
-          residuals: `Step 4 of 5 · residuals. TLS measures each point's orthogonal distance to the line (solid blue). Ordinary least squares (dashed orange, a teaching comparison computed in this page, not by the package) measures vertical distances: y = ${f3(ols.slope)}·x ${ols.intercept < 0 ? '−' : '+'} ${f3(Math.abs(ols.intercept))}. For a wall seen this steeply the vertical residuals are much longer (OLS vertical RMS ${mm(olsRms)}), and they depend on how the axes happen to lie, which a wall does not care about.`,
-          rms: `Step 5 of 5 · RMS against σ. The RMS orthogonal distance is √λmin = ${mm(fit.rms)} (package fitLine), against σ = ${mm(sigma)}: ${fit.rms < sigma ? 'below σ, so FTLS would accept these points as one segment.' : 'above σ, so FTLS would not accept these points as one segment and would split them.'} Drag a point away from the wall and watch both the RMS and the OLS line react.`,
+          centroid: `Step 1 of 5 · centroid. The ${n} points are Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}, a wall in the robot frame. The best line in the total-least-squares sense always passes through <span data-q="centroid">their centroid (×) = (${f3(cx)}, ${f3(cy)}) m</span>, so only its direction is left to find.`,
+          spread: `Step 2 of 5 · spread. Around the centroid the points spread as the covariance matrix [[${spread.sxx.toExponential(2)}, ${spread.sxy.toExponential(2)}], [${spread.sxy.toExponential(2)}, ${spread.syy.toExponential(2)}]] m². Its eigenvectors are the axes drawn: <span data-q="major">the long green one along the wall (λ = ${lmax.toExponential(2)} m²)</span>, <span data-q="minor">the short pink one across it (λ = ${lmin.toExponential(2)} m²)</span>.`,
+          normal: `Step 3 of 5 · normal. The normal of the fitted line is the eigenvector of the smaller eigenvalue: <span data-q="normal">n = (${f3(a)}, ${f3(b)})</span>, so <span data-q="line">the line is ${f3(a)}·x + ${f3(b)}·y ${c < 0 ? '−' : '+'} ${f3(Math.abs(c))} = 0</span> (package fitLine). Turning the line any other way around the centroid would increase the sum of squared orthogonal distances.`,
+          residuals: `Step 4 of 5 · residuals. TLS measures <span data-q="residuals">each point's orthogonal distance to the line (solid blue)</span>. Ordinary least squares (dashed orange, a teaching comparison computed in this page, not by the package) measures <span data-q="vertical">vertical distances</span>: <span data-q="ols">y = ${f3(ols.slope)}·x ${ols.intercept < 0 ? '−' : '+'} ${f3(Math.abs(ols.intercept))}</span>. For a wall seen this steeply the vertical residuals are much longer (OLS vertical RMS ${mm(olsRms)}), and they depend on how the axes happen to lie, which a wall does not care about.`,
+          rms: `Step 5 of 5 · RMS against σ. The RMS <span data-q="residuals">orthogonal distance</span> is √λmin = ${mm(fit.rms)} (package fitLine), against σ = ${mm(sigma)}: ${fit.rms < sigma ? 'below σ, so FTLS would accept these points as one segment.' : 'above σ, so FTLS would not accept these points as one segment and would split them.'} Drag a point away from the wall and watch both the RMS and the OLS line react.`,
         }[name];
-        host.text.textContent = text;
+        host.text.innerHTML = `<p>${text}</p>`;
       },
       finalState() {
         return {

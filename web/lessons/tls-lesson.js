@@ -18,7 +18,7 @@ export function failureText(f, kind) {
   const finite = Number.isFinite(f.crossingDistance), over = finite && f.crossingDistance > f.delta;
   const raise = finite ? Math.ceil((f.crossingDistance + 0.005) * 100) / 100 : null;
   return `<p class="fail">${kind === 'break' ? 'Split' : 'Failed'} at the corner between points ${f.boundary - 1} and ${f.boundary}: the lines fitted on either side cross ` +
-    `${finite ? `${m(f.crossingDistance, 2)} from that boundary (red circle)` : 'nowhere (they are parallel)'}, but δ = ${m(f.delta, 2)} (green circle).</p>` +
+    `${finite ? `<span data-q="crossing">${m(f.crossingDistance, 2)} from that boundary (red circle)</span>` : 'nowhere (they are parallel)'}, but <span data-q="delta">δ = ${m(f.delta, 2)} (green circle)</span>.</p>` +
     `<p class="fix">Fix: ${over && raise <= 2 ? `<button type="button" class="small" data-fix="delta" data-value="${raise}">raise δ to ${raise.toFixed(2)} m</button> or ` : ''}` +
     (kind === 'break' ? 'keep the split there (split mode is on).' : '<button type="button" class="small" data-fix="split">split the polyline there</button>.') +
     ' A different σ also moves the boundary.</p>';
@@ -76,14 +76,14 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
         s.segments(res.segments, { colour: INK.segment, width: 2.5 });
         // a failed corner: δ around the boundary point (allowed) and the circle on which the crossing lies
         // (the package measures the crossing from the midpoint of points boundary - 1 and boundary)
-        const corner = (f) => {
-          const [ax, ay] = pt(chain, Math.max(0, f.boundary - 1)), [bx, by] = pt(chain, f.boundary), c = [(ax + bx) / 2, (ay + by) / 2];
-          s.circle(...c, f.delta, { colour: INK.ok, dash: true });
-          if (Number.isFinite(f.crossingDistance)) s.circle(...c, f.crossingDistance, { colour: INK.fail, dash: true });
-          s.marker(...c, { colour: INK.fail, shape: 'x', size: 9 });
-        };
-        for (const b of res.breaks ?? []) corner(b);
-        if (res.failure) corner(res.failure);
+        for (const b of res.breaks ?? []) failedCorner(s, b);
+        if (res.failure) failedCorner(s, res.failure);
+      };
+      const failedCorner = (s, f) => {
+        const [ax, ay] = pt(chain, Math.max(0, f.boundary - 1)), [bx, by] = pt(chain, f.boundary), c = [(ax + bx) / 2, (ay + by) / 2];
+        s.circle(...c, f.delta, { colour: INK.ok, dash: true, q: 'delta' });
+        if (Number.isFinite(f.crossingDistance)) s.circle(...c, f.crossingDistance, { colour: INK.fail, dash: true, q: 'crossing' });
+        s.marker(...c, { colour: INK.fail, shape: 'x', size: 9 });
       };
       const resultText = (res) => {
         let html = res.ok ? `<p>${res.count} segments${res.polylineOffsets && res.polylineOffsets.length > 2 ? ` in ${res.polylineOffsets.length - 1} polylines` : ''}, RMS ${Array.from(res.rms).map((r) => mm(r)).join(', ')}.</p>` : '<p class="fail">The vectorizer reports failure: no segments for this cluster.</p>';
@@ -145,23 +145,23 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
               break;
             case 'trial': {
               const rms = Math.sqrt(e.meanSquaredError);
-              s.points(slice(chain, e.first, e.end), { label: -1, colour: e.pass ? INK.ok : INK.fail, radius: 3.5 });
+              s.points(slice(chain, e.first, e.end), { label: -1, colour: e.pass ? INK.ok : INK.fail, radius: 3.5, q: 'trial' });
               const run = trace.slice(0, k + 1).filter((t) => t.kind === 'trial' && t.first === e.first);
-              s.setInset({ title: `RMS of trial ranges from point ${e.first}`, xs: run.map((t) => t.end - t.first), ys: run.map((t) => Math.sqrt(t.meanSquaredError)), ok: run.map((t) => t.pass), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the trial range' });
-              html = `<p>${PHASE[e.phase] ?? 'Trial'}: points <b>${e.first}–${e.end - 1}</b> (${e.end - e.first} points) fitted with one line: RMS ${mm(rms)} ${e.pass ? '&lt;' : '≥'} σ = ${mm(e.sigma)} — ${e.pass ? 'pass' : 'fail'}.</p>` +
+              s.setInset({ title: `RMS of trial ranges from point ${e.first}`, xs: run.map((t) => t.end - t.first), ys: run.map((t) => Math.sqrt(t.meanSquaredError)), ok: run.map((t) => t.pass), hline: e.sigma, hlabel: 'σ', xlabel: 'points in the trial range', yformat: (y) => mm(y) });
+              html = `<p>${PHASE[e.phase] ?? 'Trial'}: <span data-q="trial">points <b>${e.first}–${e.end - 1}</b> (${e.end - e.first} points)</span> fitted with one line: RMS ${mm(rms)} ${e.pass ? '&lt;' : '≥'} σ = ${mm(e.sigma)} — ${e.pass ? 'pass' : 'fail'}.</p>` +
                 `<p class="why">${e.phase === 1 ? 'Doubling the length finds, in a few fits, a range that is too long.' : e.phase === 2 ? 'Halving the interval between the last passing and the first failing end finds the longest passing range.' : e.phase === 0 ? 'If the whole rest of the chain fits one line, the search is over.' : 'A single point left at the end is joined to its neighbour range.'} Each fit costs O(1) from prefix sums.</p>`;
               break;
             }
             case 'range':
-              s.points(slice(chain, e.first, e.end), { label: -1, colour: INK.ok, radius: 3.5 });
-              html = `<p>Range <b>${e.first}–${e.end - 1}</b> is accepted: the longest run from point ${e.first} whose fit stays under σ. The next run starts at point ${e.end}.</p>`;
+              s.points(slice(chain, e.first, e.end), { label: -1, colour: INK.ok, radius: 3.5, q: 'range' });
+              html = `<p><span data-q="range">Range <b>${e.first}–${e.end - 1}</b></span> is accepted: the longest run from point ${e.first} whose fit stays under σ. The next run starts at point ${e.end}.</p>`;
               break;
             case 'corner': {
               const c = mid(e.boundary);
-              s.circle(...c, e.delta, { colour: INK.ok, dash: true });
-              if (Number.isFinite(e.crossingDistance)) s.circle(...c, e.crossingDistance, { colour: e.ok ? INK.candidate : INK.fail, dash: true });
-              s.marker(...c, { colour: e.ok ? INK.ok : INK.fail, shape: 'x' });
-              html = `<p>Continuity check of the corner between ranges ${e.index + 1} and ${e.index + 2}${branch ? ' (AFTLS branch)' : ''}, at points ${e.boundary - 1}|${e.boundary}: the two lines cross ${Number.isFinite(e.crossingDistance) ? m(e.crossingDistance) : 'nowhere (parallel)'} from there, δ = ${m(e.delta, 2)} — ${e.ok ? 'ok, the crossing becomes a vertex' : 'too far: this corner needs a repair'}.</p>`;
+              s.circle(...c, e.delta, { colour: INK.ok, dash: true, q: 'delta' });
+              if (Number.isFinite(e.crossingDistance)) s.circle(...c, e.crossingDistance, { colour: e.ok ? INK.candidate : INK.fail, dash: true, q: 'crossing' });
+              s.marker(...c, { colour: e.ok ? INK.ok : INK.fail, shape: 'x', q: 'boundary' });
+              html = `<p>Continuity check of the corner between ranges ${e.index + 1} and ${e.index + 2}${branch ? ' (AFTLS branch)' : ''}, at <span data-q="boundary">points ${e.boundary - 1}|${e.boundary}</span>: the two lines cross ${Number.isFinite(e.crossingDistance) ? `<span data-q="crossing">${m(e.crossingDistance)} from there</span>` : 'nowhere (parallel)'}, <span data-q="delta">δ = ${m(e.delta, 2)}</span> — ${e.ok ? 'ok, the crossing becomes a vertex' : 'too far: this corner needs a repair'}.</p>`;
               break;
             }
             case 'repair':
@@ -171,18 +171,21 @@ export function tlsLesson({ id, menu, title, summary, method, excerpt, extra = (
             case 'repairRange': html = `<p>New range <b>${e.first}–${e.end - 1}</b> from the repair.</p>`; break;
             case 'move': {
               const moves = trace.slice(0, k + 1).filter((t) => t.kind === 'move');
-              s.setInset({ title: 'total squared residual after each move', xs: moves.map((_, q) => q + 1), ys: moves.map((t) => t.totalError), xlabel: 'optimizer moves' });
-              s.marker(...pt(chain, e.to), { colour: INK.current });
-              html = `<p>Optimizer: breakpoint ${e.breakpoint} moves from point ${e.from} to ${e.to}; total squared residual now ${(e.totalError * 1e6).toFixed(0)} mm².</p>`;
+              s.setInset({ title: 'total squared residual after each move', xs: moves.map((_, q) => q + 1), ys: moves.map((t) => t.totalError), xlabel: 'optimizer moves', yformat: (y) => `${(y * 1e6).toFixed(0)} mm²` });
+              s.marker(...pt(chain, e.to), { colour: INK.current, q: 'moved' });
+              html = `<p>Optimizer: breakpoint ${e.breakpoint} moves from point ${e.from} to <b data-q="moved">${e.to}</b>; total squared residual now ${(e.totalError * 1e6).toFixed(0)} mm².</p>`;
               break;
             }
             case 'choice':
               html = `<p>AFTLS compares both partitions: FTLS ${Number.isFinite(e.ftlsError) ? `${(e.ftlsError * 1e6).toFixed(0)} mm²` : 'no valid result'}, optimized ${Number.isFinite(e.aftlsError) ? `${(e.aftlsError * 1e6).toFixed(0)} mm²` : 'no valid result'} — it keeps ${e.kept ? 'the optimized one' : 'FTLS\'s'}.</p>`;
               break;
             case 'infeasible':
+              failedCorner(s, e);
               html = failureText(e, 'failure');
               break;
-            case 'segment': html = `<p>Segment ${e.index + 1} (points ${e.first}–${e.end - 1}${r.segments.some((g) => g.polyline > 0) ? `, polyline ${e.polyline + 1}` : ''}): between the crossings with its neighbours' lines.</p>`; break;
+            case 'segment':
+              s.segments([e.x0, e.y0, e.x1, e.y1], { colour: INK.current, width: 3, q: 'segment' });
+              html = `<p><span data-q="segment">Segment ${e.index + 1}</span> (points ${e.first}–${e.end - 1}${r.segments.some((g) => g.polyline > 0) ? `, polyline ${e.polyline + 1}` : ''}): between the crossings with its neighbours' lines.</p>`; break;
             default: html = `<p><b>${e.kind}</b>: ${Object.entries(e).filter(([f]) => f !== 'kind').map(([f, v]) => fmtField(f, v)).join(', ')}.</p>`;
           }
           if (k === trace.length - 1) { drawResult(s, untraced); html += resultText(untraced); }
