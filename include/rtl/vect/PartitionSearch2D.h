@@ -10,6 +10,15 @@
 // range may also start a new polyline where no incoming line meets it, so the result has the fewest breaks (none
 // iff a strict result exists).
 //
+// Runs of identical points: no range ends (so none starts) deep inside a run of identical points, i.e. at a boundary
+// more than run_margin = 8 points from both ends of the run. The partitions searched are those whose boundaries lie
+// outside runs or near their ends; "no valid partition" above means none of those. Why: every range within a run of
+// L points fits (residual exactly 0), so the L^2 / 2 ranges, and the corner tests among their lines (lines that only
+// the rounding of their sums gives a direction), made the search quadratic or worse in L wherever it had to visit
+// them all (proving infeasibility, split mode); a boundary deep inside a run is rarely the only way through it (it
+// could be where the copies of the point are needed to bring the mean residual of the ranges on both sides below
+// sigma^2). Chains whose runs have at most 2 run_margin + 1 points are searched in full.
+//
 // How: a dynamic programme over the breakpoints, each range's fit O(1) from prefix sums. A state is a fitting range
 // [x, y) that ends a valid partition of [0, y); a state extends by any fitting range [y, z) whose line meets its own
 // within delta. Incoming states of a boundary are tried cheapest first (ties by range start, a total order), so the
@@ -31,10 +40,11 @@
 // crossing itself (near-parallel lines whose computed crossing lands in the disc).
 //
 // Complexity: O(N) to mark runs and for a chain that one range fits; otherwise O(F) fits and O(F log F) corner work
-// for the F fitting ranges, with F up to N * L for ranges of up to L points that fit sigma (work() counts it). F is
-// quadratic on long straight runs whose corners no line pair meets, and inside a long run of identical points (every
-// range within the run fits); where the bounded rounds then find the optimum (a tight bound: e.g. a run of identical
-// points between two straight pieces), the first round's fit cap keeps the search linear. Memory O(N + F).
+// for the F fitting ranges (those not ending deep inside a run), with F up to N * L for ranges of up to L points
+// that fit sigma (work() counts it). A run of identical points adds O(run_margin^2) ranges within it and O(1) fits
+// to every scan that crosses it, whatever its length. F is quadratic on long straight pieces whose corners no line
+// pair meets; where the bounded rounds then find the optimum (a tight bound), the first round's fit cap keeps the
+// search linear. Memory O(N + F).
 //
 // cover() is split mode's last resort, for chains that no partition fits at all (e.g. 3 points forming a corner).
 // Consecutive ranges may then share their boundary point (range [s, e) followed by [e - 1, e')), so 2-point ranges
@@ -311,7 +321,9 @@ namespace rtl
         std::vector<Approximation> cand_lines;
         static constexpr uint32_t unknown = none - 1;
         std::vector<size_t> far, remaining, first_within;
-        std::vector<size_t> same_end;   // markRuns
+        std::vector<size_t> same_end, next_boundary;   // markRuns
+        // Boundaries inside a run of identical points that ranges may end at: within run_margin points of its ends.
+        static constexpr size_t run_margin = 8;
         CornerReport failure_;
 
         struct Cost
@@ -350,14 +362,28 @@ namespace rtl
             return p.error < q.error;
         }
 
-        //! Marks the runs of identical points: same_end[i] is the end of the run of points equal to pts[i] from i.
+        //! Marks the runs of identical points: same_end[i] is the end of the run of points equal to pts[i] from i;
+        //! next_boundary[y] is y, or for a boundary deep inside a run [s, t) (s + run_margin < y < t - run_margin)
+        //! the first boundary after it that a range may end at, t - run_margin (see the file comment).
         void markRuns(const std::vector<VectorType> &pts, size_t n)
         {
             same_end.resize(n + 1);
             same_end[n] = n;
             for (size_t i = n; i-- > 0;)
                 same_end[i] = i + 1 < n && pts[i + 1] == pts[i] ? same_end[i + 1] : i + 1;
+            next_boundary.resize(n + 1);
+            for (size_t s = 0; s < n;)
+            {
+                const size_t t = same_end[s];
+                for (size_t y = s; y < t; ++y)
+                    next_boundary[y] = y > s + run_margin && y + run_margin < t ? t - run_margin : y;
+                s = t;
+            }
+            next_boundary[n] = n;
         }
+
+        //! A boundary that no range ends or starts at: deep inside a run of identical points.
+        bool deep(size_t y) const { return next_boundary[y] != y; }
 
         //! [b, e) is one run of identical points: its residual is exactly 0, whatever rounding its sums carry (far
         //! from the origin they cancel into noise, which made such ranges fit at random: the quadratic cliff).
@@ -536,6 +562,7 @@ namespace rtl
         {
             for (size_t y = y0; y <= n; ++y)
             {
+                y = next_boundary[y];   // no range ends deep inside a run of identical points
                 ++work_.fits;
                 const auto sums = a.sums(x, y);
                 const bool same = identical(x, y);
@@ -590,6 +617,8 @@ namespace rtl
             for (size_t x = 0; x + 2 <= n; ++x)
             {
                 r_off[x] = r_end.size();
+                if (deep(x))
+                    continue;   // no state ends there
                 scanFits(a, x, n, x + 2, [&](size_t y, const auto &) {
                     r_end.push_back(static_cast<uint32_t>(y));
                     r_start.push_back(static_cast<uint32_t>(x));
@@ -973,6 +1002,7 @@ namespace rtl
                 const Approximation prev(a.sums(states[s].x, b));
                 for (size_t y = b + 2; y <= n; ++y)
                 {
+                    y = next_boundary[y];
                     ComputeType total;
                     const bool ok = fits(a, b, y, total);
                     if (!ok && beyondReach(total, b, n))
