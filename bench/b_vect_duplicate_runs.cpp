@@ -7,8 +7,6 @@
 //   run in a chain  a straight chain, then N/3 copies of one point, then another straight chain (FTLS, double);
 //   two far runs    copies of (1e15, 1e15), then N/30 copies of (1e15, 9.5e14), float points, double sums, sigma
 //                   1/32, delta 1 (FTLS): the fuzz harness's reproducer at N = 1,324, no strict partition;
-//   corner of runs  N/3 copies each of (0, 0), (1, 0), (1, 1), sigma 0.01, delta 0.1, split mode (FTLS, double):
-//                   split mode searches without bounded rounds, so every range within a run was visited;
 //   baseline        a noisy polyline (pieces of 60 points, noise 0.005, turns of 30-90 degrees), sigma 0.03,
 //                   delta 0.3 (FTLS, double).
 // Each row: points per second, the time as a ratio to the baseline at the same N, and the exact search's fits per
@@ -79,14 +77,6 @@ namespace
         return p;
     }
 
-    std::vector<rtl::Vector2d> cornerOfRuns(size_t n)
-    {
-        std::vector<rtl::Vector2d> p;
-        for (size_t k = 0; k < n; ++k)
-            p.emplace_back(k < n / 3 ? 0.0 : 1.0, k < 2 * n / 3 ? 0.0 : 1.0);
-        return p;
-    }
-
     //! Median seconds of calls of v on pts (sigma, delta); the search's fits of one call and its result.
     template<class V, class P>
     double timeIt(V &v, const P &pts, double sigma, double delta, int reps, double &fits_per_call, bool &ok)
@@ -134,10 +124,6 @@ int main(int argc, char **argv)
         Ftls<float, double> two;
         const double t4 = timeIt(two, twoFarRuns(n), 1.0 / 32, 1.0, opt.repetitions, f, ok);
         rtl::bench::printRow("two far runs, FTLS float/double", n, t4, tb, note());
-        Ftls<double, double> corner;
-        corner.setSplitAtInfeasibleCorners(true);
-        const double t5 = timeIt(corner, cornerOfRuns(n), 0.01, 0.1, opt.repetitions, f, ok);
-        rtl::bench::printRow("corner of three runs, FTLS double, split", n, t5, tb, note());
     }
     return 0;
 }
