@@ -5,13 +5,19 @@
 //   subnormal sigma N copies of (123.456, 1e5), float points and sums, sigma 2^-140 (its square is 0), delta 3.4
 //                   (AFTLS);
 //   run in a chain  a straight chain, then N/3 copies of one point, then another straight chain (FTLS, double);
+//   two far runs    copies of (1e15, 1e15), then N/30 copies of (1e15, 9.5e14), float points, double sums, sigma
+//                   1/32, delta 1 (FTLS): the fuzz harness's reproducer at N = 1,324, no strict partition;
 //   baseline        a noisy polyline (pieces of 60 points, noise 0.005, turns of 30-90 degrees), sigma 0.03,
 //                   delta 0.3 (FTLS, double).
 // Each row: points per second, the time as a ratio to the baseline at the same N, and the exact search's fits per
-// point (a work count, as tests/vect/t_duplicate_runs.cpp pins). --smoke: N = 200, one call.
+// point (a work count, as tests/vect/t_duplicate_runs.cpp pins). --smoke: N = 200, one call. --max-n=N: only the
+// sizes up to N (the search before ranges were kept from ending deep inside runs took minutes beyond 4,000).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -63,6 +69,14 @@ namespace
         return p;
     }
 
+    std::vector<rtl::Vector2f> twoFarRuns(size_t n)
+    {
+        std::vector<rtl::Vector2f> p(n, rtl::Vector2f(999999986991104.0f, 999999986991104.0f));
+        for (size_t i = n - n / 30; i < n; ++i)
+            p[i] = rtl::Vector2f(999999986991104.0f, 951685228789760.0f);
+        return p;
+    }
+
     //! Median seconds of calls of v on pts (sigma, delta); the search's fits of one call and its result.
     template<class V, class P>
     double timeIt(V &v, const P &pts, double sigma, double delta, int reps, double &fits_per_call, bool &ok)
@@ -81,7 +95,12 @@ namespace
 int main(int argc, char **argv)
 {
     const auto opt = rtl::bench::parseOptions(argc, argv);
-    const std::vector<size_t> sizes = opt.smoke ? std::vector<size_t>{200} : std::vector<size_t>{500, 1000, 1324, 1486, 2000, 4000};
+    size_t max_n = std::numeric_limits<size_t>::max();
+    for (int i = 1; i < argc; ++i)
+        if (std::strncmp(argv[i], "--max-n=", 8) == 0)
+            max_n = std::strtoul(argv[i] + 8, nullptr, 10);
+    std::vector<size_t> sizes = opt.smoke ? std::vector<size_t>{200} : std::vector<size_t>{500, 1000, 1324, 1486, 2000, 4000, 16000};
+    sizes.erase(std::remove_if(sizes.begin(), sizes.end(), [&](size_t n) { return n > max_n; }), sizes.end());
     rtl::bench::printHeader("FTLS/AFTLS 2D: repeated points against a typical chain (ratio: time / baseline at the same N)");
     for (size_t n : sizes)
     {
@@ -102,6 +121,9 @@ int main(int argc, char **argv)
         Ftls<double, double> run;
         const double t3 = timeIt(run, runInChain(n), 0.033, 1.0, opt.repetitions, f, ok);
         rtl::bench::printRow("N/3 copies inside a chain, FTLS double", n, t3, tb, note());
+        Ftls<float, double> two;
+        const double t4 = timeIt(two, twoFarRuns(n), 1.0 / 32, 1.0, opt.repetitions, f, ok);
+        rtl::bench::printRow("two far runs, FTLS float/double", n, t4, tb, note());
     }
     return 0;
 }

@@ -181,3 +181,72 @@ namespace
         }
     }
 }
+
+namespace
+{
+    //! The fuzz harness's reproducer (tests/fuzz/seeds/vect_fast/in-chain-duplicate-run-timeout) at N = 1,324 and
+    //! its shape at other N: copies of one float point far from the origin, then N/30 copies of another one. The
+    //! ranges across the two runs are decided by the rounding of their sums.
+    std::vector<rtl::Vector2f> twoFarRuns(size_t n)
+    {
+        std::vector<rtl::Vector2f> pts(n, rtl::Vector2f(999999986991104.0f, 999999986991104.0f));
+        for (size_t i = n - n / 30; i < n; ++i)
+            pts[i] = rtl::Vector2f(999999986991104.0f, 951685228789760.0f);
+        return pts;
+    }
+
+    //! Three runs of N/3 copies making a corner: (0, 0), (1, 0), (1, 1).
+    std::vector<rtl::Vector2d> cornerOfRuns(size_t n)
+    {
+        std::vector<rtl::Vector2d> pts;
+        for (size_t k = 0; k < n; ++k)
+            pts.emplace_back(k < n / 3 ? 0.0 : 1.0, k < 2 * n / 3 ? 0.0 : 1.0);
+        return pts;
+    }
+
+    //! One exact search on `pts`; all its work (fits, corner tests, states pushed) and its ranges.
+    template<typename E>
+    size_t searchWork(const std::vector<rtl::VectorND<2, E>> &pts, double sigma, double delta, bool breaks, bool &ok,
+                      std::vector<std::pair<size_t, size_t>> &idx)
+    {
+        rtl::PrecArrayBlocked<2, E, double> a;
+        a.resize(pts.size());
+        a.precompute(pts);
+        rtl::PartitionSearch2D<rtl::PrecArrayBlocked<2, E, double>, rtl::ApproximationTlsLine2D<E, double>> s;
+        s.setSigma(static_cast<E>(sigma));
+        s.setDelta(static_cast<E>(delta));
+        s.setAllowBreaks(breaks);
+        std::vector<rtl::ApproximationTlsLine2D<E, double>> lines;
+        ok = s(pts, a, lines, idx);
+        return s.work().fits + s.work().corners + s.work().states;
+    }
+
+    TEST(DuplicateRuns, RunsInsideAChainCostLinearWorkAtEverySize)
+    {
+        // Every range within a run of L copies fits (residual exactly 0), so the L^2 / 2 of them, and the corner
+        // tests among their lines, made the search quadratic or worse wherever it had to go through them all: to
+        // prove that no strict partition exists (the reproducer: 1.7M fits and 128M corner tests for 1,324 points,
+        // 1.4 s at -O2, over 10 s under the sanitizers) or in split mode, which has no bounded rounds (the corner of
+        // runs: 388 fits and 48,749 corner tests per point at N = 1,000, 1,555 and 787,545 at 4,000, a minute).
+        // Ranges no longer end deep inside a run, and the work per point stays below a constant at every size.
+        for (size_t n : {1000u, 1324u, 16000u})
+        {
+            bool ok = false;
+            std::vector<std::pair<size_t, size_t>> idx;
+            const size_t w = searchWork(twoFarRuns(n), 1.0 / 32, 1.0, false, ok, idx);
+            EXPECT_LE(w, 8 * n + 1024) << n;
+        }
+        for (size_t n : {400u, 1600u, 6400u})
+        {
+            bool ok = false;
+            std::vector<std::pair<size_t, size_t>> idx;
+            const size_t w = searchWork(cornerOfRuns(n), 0.01, 0.1, true, ok, idx);
+            EXPECT_LE(w, 32 * n + 1024) << n;
+            // The same result as before: two ranges, the first ending where the second run begins.
+            ASSERT_TRUE(ok) << n;
+            ASSERT_EQ(idx.size(), 2u) << n;
+            EXPECT_EQ(idx[0], std::make_pair(size_t(0), n / 3 + 1)) << n;
+            EXPECT_EQ(idx[1].second, n) << n;
+        }
+    }
+}

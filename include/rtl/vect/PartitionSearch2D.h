@@ -10,6 +10,15 @@
 // range may also start a new polyline where no incoming line meets it, so the result has the fewest breaks (none
 // iff a strict result exists).
 //
+// Runs of identical points: no range ends (so none starts) deep inside a run of identical points, i.e. at a boundary
+// more than run_margin = 8 points from both ends of the run. The partitions searched are those whose boundaries lie
+// outside runs or near their ends; "no valid partition" above means none of those. Why: every range within a run of
+// L points fits (residual exactly 0), so the L^2 / 2 ranges, and the corner tests among their lines (lines that only
+// the rounding of their sums gives a direction), made the search quadratic or worse in L wherever it had to visit
+// them all (proving infeasibility, split mode); a boundary deep inside a run is rarely the only way through it (it
+// could be where the copies of the point are needed to bring the mean residual of the ranges on both sides below
+// sigma^2). Chains whose runs have at most 2 run_margin + 1 points are searched in full.
+//
 // How: a dynamic programme over the breakpoints, each range's fit O(1) from prefix sums. A state is a fitting range
 // [x, y) that ends a valid partition of [0, y); a state extends by any fitting range [y, z) whose line meets its own
 // within delta. Incoming states of a boundary are tried cheapest first (ties by range start, a total order), so the
@@ -31,16 +40,21 @@
 // crossing itself (near-parallel lines whose computed crossing lands in the disc).
 //
 // Complexity: O(N) to mark runs and for a chain that one range fits; otherwise O(F) fits and O(F log F) corner work
-// for the F fitting ranges, with F up to N * L for ranges of up to L points that fit sigma (work() counts it). F is
-// quadratic on long straight runs whose corners no line pair meets, and inside a long run of identical points (every
-// range within the run fits); where the bounded rounds then find the optimum (a tight bound: e.g. a run of identical
-// points between two straight pieces), the first round's fit cap keeps the search linear. Memory O(N + F).
+// for the F fitting ranges (those not ending deep inside a run), with F up to N * L for ranges of up to L points
+// that fit sigma (work() counts it). A run of identical points adds O(run_margin^2) ranges within it and O(1) fits
+// to every scan that crosses it, whatever its length. F is quadratic on long straight pieces whose corners no line
+// pair meets; where the bounded rounds then find the optimum (a tight bound), the first round's fit cap keeps the
+// search linear. Memory O(N + F).
 //
 // cover() is split mode's last resort, for chains that no partition fits at all (e.g. 3 points forming a corner).
 // Consecutive ranges may then share their boundary point (range [s, e) followed by [e - 1, e')), so 2-point ranges
 // always exist and a cover always exists for N >= 2: the fewest ranges, then the least total squared residual, each
 // range fitting sigma with >= 2 points. Corners are judged afterwards (cornerDistanceSquared; at a shared point the
 // reference is that point): within delta the polyline continues, else it breaks there.
+//
+// Where: this file holds the search (the rounds, the dynamic programme, runs, cover()); partition_search/RangeBounds.h
+// the lower bounds of the bounded rounds (fits-only and the backward pass); partition_search/ChordSweep.h the corner
+// tests and the chord query (with CornerChord.h and MinRankTree.h); CornerDistance.h the corner criterion.
 //
 // Measurements, the schedule of rounds and what was tried and not kept: docs/vect-partition-search.md.
 #pragma once
@@ -311,7 +325,9 @@ namespace rtl
         std::vector<Approximation> cand_lines;
         static constexpr uint32_t unknown = none - 1;
         std::vector<size_t> far, remaining, first_within;
-        std::vector<size_t> same_end;   // markRuns
+        std::vector<size_t> same_end, next_boundary;   // markRuns
+        // Boundaries inside a run of identical points that ranges may end at: within run_margin points of its ends.
+        static constexpr size_t run_margin = 8;
         CornerReport failure_;
 
         struct Cost
@@ -350,14 +366,28 @@ namespace rtl
             return p.error < q.error;
         }
 
-        //! Marks the runs of identical points: same_end[i] is the end of the run of points equal to pts[i] from i.
+        //! Marks the runs of identical points: same_end[i] is the end of the run of points equal to pts[i] from i;
+        //! next_boundary[y] is y, or for a boundary deep inside a run [s, t) (s + run_margin < y < t - run_margin)
+        //! the first boundary after it that a range may end at, t - run_margin (see the file comment).
         void markRuns(const std::vector<VectorType> &pts, size_t n)
         {
             same_end.resize(n + 1);
             same_end[n] = n;
             for (size_t i = n; i-- > 0;)
                 same_end[i] = i + 1 < n && pts[i + 1] == pts[i] ? same_end[i + 1] : i + 1;
+            next_boundary.resize(n + 1);
+            for (size_t s = 0; s < n;)
+            {
+                const size_t t = same_end[s];
+                for (size_t y = s; y < t; ++y)
+                    next_boundary[y] = y > s + run_margin && y + run_margin < t ? t - run_margin : y;
+                s = t;
+            }
+            next_boundary[n] = n;
         }
+
+        //! A boundary that no range ends or starts at: deep inside a run of identical points.
+        bool deep(size_t y) const { return next_boundary[y] != y; }
 
         //! [b, e) is one run of identical points: its residual is exactly 0, whatever rounding its sums carry (far
         //! from the origin they cancel into noise, which made such ranges fit at random: the quadratic cliff).
@@ -536,6 +566,7 @@ namespace rtl
         {
             for (size_t y = y0; y <= n; ++y)
             {
+                y = next_boundary[y];   // no range ends deep inside a run of identical points
                 ++work_.fits;
                 const auto sums = a.sums(x, y);
                 const bool same = identical(x, y);
@@ -582,139 +613,23 @@ namespace rtl
         //! some candidate meets) except where a near-parallel crossing is not resolved by ComputeType (see the file
         //! comment); either way to_end stays a valid bound, so the rounds return the same optimum, and on the
         //! worst-case corpus every result is the same bit for bit (t_fast_corpus_identity).
-        size_t backward(const std::vector<VectorType> &pts, const SumArray &a, size_t n)
-        {
-            r_off.assign(n + 1, 0);
-            r_end.clear();
-            r_start.clear();
-            for (size_t x = 0; x + 2 <= n; ++x)
-            {
-                r_off[x] = r_end.size();
-                scanFits(a, x, n, x + 2, [&](size_t y, const auto &) {
-                    r_end.push_back(static_cast<uint32_t>(y));
-                    r_start.push_back(static_cast<uint32_t>(x));
-                });
-            }
-            r_off[n - 1] = r_off[n] = r_end.size();
-            const size_t nr = r_end.size();
-            work_.states += nr;
-            to_end.assign(nr, unknown);
-            e_off.assign(n + 2, 0);
-            for (size_t r = 0; r < nr; ++r)
-                ++e_off[r_end[r] + 1];
-            for (size_t y = 0; y <= n; ++y)
-                e_off[y + 1] += e_off[y];
-            by_end.resize(nr);
-            std::vector<size_t> &fill = picks;   // scratch
-            fill.assign(e_off.begin(), e_off.end() - 1);
-            for (size_t x = 0; x + 2 <= n; ++x)
-                for (size_t r = r_off[x]; r < r_off[x + 1]; ++r)
-                    by_end[fill[r_end[r]]++] = r;
-            for (size_t k = e_off[n]; k < e_off[n + 1]; ++k)
-                to_end[by_end[k]] = 1;
-            v_min.assign(n + 1, none);
-            v_more.assign(n + 1, 0);
-            cand_off.assign(n + 1, none);
-            cand_cnt.assign(n + 1, 0);
-            cand_lines.clear();
-            // Boundaries from the end: v_min[y], v_more[y] for every boundary that ends a range, and the chain start.
-            for (size_t y = n - 1; ; --y)
-            {
-                if (y == 0 || e_off[y] != e_off[y + 1])
-                    boundaryCounts(pts, a, n, y);
-                if (y == 0)
-                    break;
-            }
-            return v_min[0] == none ? unbounded : v_min[0];
-        }
+        size_t backward(const std::vector<VectorType> &pts, const SumArray &a, size_t n);
 
         //! Lower bound of to_end[r] without its corner test: 1 + v_min at its end (1 at the chain's end); none iff
         //! to_end[r] is none because no valid rest follows its end.
-        uint32_t lowerEnd(size_t r, size_t n) const
-        {
-            const size_t z = r_end[r];
-            if (z == n)
-                return 1;
-            return v_min[z] == none ? none : 1 + v_min[z];
-        }
+        uint32_t lowerEnd(size_t r, size_t n) const;
 
         //! v_min[y] = the least to_end of the ranges from y, v_more[y] = some range from y has another count that
         //! is not none. Evaluates (toEnd) only the ranges whose lower bound does not exceed the least count found
         //! (a range with lowerEnd > v_min[y] cannot have the least count, nor be a candidate at y, whatever its
         //! corner test says), in rising lowerEnd, then for v_more only as far as needed.
-        void boundaryCounts(const std::vector<VectorType> &pts, const SumArray &a, size_t n, size_t y)
-        {
-            const size_t r0 = r_off[y], r1 = r_off[y + 1];
-            uint32_t lo = none, hi = 0;
-            for (size_t r = r0; r < r1; ++r)
-            {
-                const uint32_t lb = lowerEnd(r, n);
-                if (lb == none)
-                    to_end[r] = none;   // its end has no valid rest: what the corner test's branch gives too
-                else
-                {
-                    lo = std::min(lo, lb);
-                    hi = std::max(hi, lb);
-                }
-            }
-            uint32_t cur = none;
-            for (uint32_t level = lo; lo != none && level <= hi && level <= cur; ++level)
-                for (size_t r = r0; r < r1; ++r)
-                    if (lowerEnd(r, n) == level)
-                        cur = std::min(cur, toEnd(pts, a, r));
-            v_min[y] = cur;
-            if (cur == none)
-                return;
-            // Every range with lowerEnd <= cur is evaluated. Another count: an evaluated one, or an unevaluated one
-            // (lowerEnd > cur) whose end has another count (then it is not none whatever its corner) or that meets.
-            bool more = false;
-            for (size_t r = r0; r < r1 && !more; ++r)
-                more = to_end[r] != unknown ? to_end[r] != none && to_end[r] != cur : v_more[r_end[r]] != 0;
-            for (size_t r = r0; r < r1 && !more; ++r)
-                more = toEnd(pts, a, r) != none && to_end[r] != cur;
-            v_more[y] = more;
-        }
+        void boundaryCounts(const std::vector<VectorType> &pts, const SumArray &a, size_t n, size_t y);
 
         //! to_end[r] (memoised): 1 + v_min[z] if one of the candidates at r's end z (the ranges from z with the least
         //! count, in range order) meets r's line there, else 2 + v_min[z] if v_more[z], else none. Boundaries with at
         //! most scan_first candidates test them in order (choosePredecessors' first loop: the answer does not depend
         //! on the other queries); others run choosePredecessors on all ranges ending at z at once, as it always did.
-        uint32_t toEnd(const std::vector<VectorType> &pts, const SumArray &a, size_t r)
-        {
-            if (to_end[r] != unknown)
-                return to_end[r];
-            const size_t z = r_end[r];
-            const uint32_t vmin = v_min[z];
-            if (vmin == none)
-                return to_end[r] = none;
-            if (cand_off[z] == none)
-            {
-                cand_off[z] = cand_lines.size();
-                for (size_t q = r_off[z]; q < r_off[z + 1]; ++q)
-                    if (to_end[q] == vmin)
-                        cand_lines.emplace_back(a.sums(z, r_end[q]));
-                cand_cnt[z] = cand_lines.size() - cand_off[z];
-            }
-            const size_t c0 = cand_off[z], ni = cand_cnt[z];
-            const uint32_t miss = v_more[z] ? 2 + vmin : none;
-            corner_mid = (pts[z - 1].template cast<ComputeType>() + pts[z].template cast<ComputeType>()) * ComputeType(0.5);
-            if (ni <= scan_first + scan_share)
-            {
-                const Approximation line(a.sums(r_start[r], z));
-                return to_end[r] = firstMeeting<true>(cand_lines.data() + c0, 0, ni, line) < ni ? 1 + vmin : miss;
-            }
-            in_lines.assign(cand_lines.begin() + static_cast<std::ptrdiff_t>(c0), cand_lines.begin() + static_cast<std::ptrdiff_t>(c0 + ni));
-            out_lines.clear();
-            for (size_t k = e_off[z]; k < e_off[z + 1]; ++k)
-                out_lines.emplace_back(a.sums(r_start[by_end[k]], z));
-            limits.assign(out_lines.size(), in_lines.size());
-            reversed_ = true;
-            choosePredecessors(pts, z);
-            reversed_ = false;
-            for (size_t j = 0; j < out_lines.size(); ++j)
-                to_end[by_end[e_off[z] + j]] = picks[j] < in_lines.size() ? 1 + vmin : miss;
-            return to_end[r];
-        }
+        uint32_t toEnd(const std::vector<VectorType> &pts, const SumArray &a, size_t r);
 
         //! remaining[y]: a lower bound on the number of fitting ranges that partition [y, N) (corners ignored),
         //! non-increasing in y; first_within[k]: the first y with remaining[y] <= k. From far[b], a bound on the
@@ -724,43 +639,7 @@ namespace rtl
         // [s0, s1] and an end z, T(s1, z) <= T(s, z), and [s, z) fits only if T(s, z) <= 1.01 sigma^2 (z - s) (as in
         // beyondReach). An end bound c therefore drops to z - 1 for the first z with T(s1, z) > 1.01 sigma^2 (c - s0)
         // (every end in [z, c] fails); repeated from c = N (each step a bisection, T being monotone in z).
-        void lowerBounds(const SumArray &a, size_t n)
-        {
-            const size_t nb = (n + block - 1) / block;
-            far.assign(nb, n);
-            for (size_t b = 0; b < nb; ++b)
-            {
-                const size_t s0 = b * block, s1 = std::min(s0 + block, n) - 1;
-                size_t c = n;
-                for (int step = 0; step < 6 && s1 + 3 <= c; ++step)
-                {
-                    const ComputeType limit = ComputeType(1.01) * sigma2 * static_cast<ComputeType>(c - s0) + ComputeType(1e-300);
-                    size_t lo = s1 + 3, hi = c + 1;   // the first z in [lo, c] with T(s1, z) > limit, or c + 1
-                    while (lo < hi)
-                    {
-                        const size_t mid = lo + (hi - lo) / 2;
-                        ComputeType total;
-                        fits(a, s1, mid, total);
-                        if (total > limit) hi = mid;
-                        else lo = mid + 1;
-                    }
-                    if (lo > c)
-                        break;
-                    c = lo - 1;
-                }
-                far[b] = std::max(c, std::min(s1 + 2, n));
-                if (b > 0)
-                    far[b] = std::max(far[b], far[b - 1]);
-            }
-            remaining.assign(n + 1, 0);
-            for (size_t y = n; y-- > 0;)
-                remaining[y] = 1 + remaining[std::min(far[y / block], n)];
-            first_within.assign(remaining[0] + 1, n);
-            for (size_t y = n + 1; y-- > 0;)
-                first_within[remaining[y]] = y;
-            for (size_t k = 1; k < first_within.size(); ++k)
-                first_within[k] = std::min(first_within[k], first_within[k - 1]);
-        }
+        void lowerBounds(const SumArray &a, size_t n);
 
         void push(size_t y, const State &st, const Approximation &line)
         {
@@ -772,120 +651,22 @@ namespace rtl
 
         //! The corner test at the boundary of the current choosePredecessors call: crossingDistanceSquared's
         //! arithmetic, with the boundary midpoint computed once per boundary (corner_mid) rather than per pair.
-        bool meets(size_t k, size_t j)
-        {
-            ++work_.corners;
-            // The backward pass has the ranges after the corner as candidates (k) and those before it as queries (j).
-            return meetsAt(reversed_ ? out_lines[j] : in_lines[k], reversed_ ? in_lines[k] : out_lines[j]);
-        }
+        bool meets(size_t k, size_t j);
 
         //! meets() on two given lines (first before the corner), uncounted.
-        bool meetsAt(const Approximation &first, const Approximation &second) const
-        {
-            if (delta2 < std::numeric_limits<ComputeType>::infinity())
-                return Approximation::crossingDistanceSquaredUnchecked(first, second, corner_mid) <= delta2;
-            VectorND<2, ComputeType> c;
-            if (!Approximation::getCrossingCompute(first, second, c))
-                return std::numeric_limits<ComputeType>::infinity() <= delta2;
-            return (c - corner_mid).lengthSquared() <= delta2;
-        }
+        bool meetsAt(const Approximation &first, const Approximation &second) const;
 
         //! The first k in [k0, k1) whose line cand[k] meets `fixed` at the current corner (fixed_first: `fixed` is the
         //! line before the corner), or k1; every test counts in work(). The loop of meets() without its per-pair
         //! selection and counting, and, for a finite delta, without the crossing's checks (see
         //! crossingDistanceSquaredUnchecked: the same decisions): this loop is most of the search's corner work.
         template<bool fixed_first>
-        size_t firstMeeting(const Approximation *cand, size_t k0, size_t k1, const Approximation &fixed)
-        {
-            size_t k = k0;
-            if (delta2 < std::numeric_limits<ComputeType>::infinity())
-            {
-                const VectorND<2, ComputeType> m = corner_mid;
-                const ComputeType bound = delta2;
-                for (; k < k1; ++k)
-                    if (Approximation::crossingDistanceSquaredUnchecked(fixed_first ? fixed : cand[k], fixed_first ? cand[k] : fixed, m) <= bound)
-                        break;
-            }
-            else
-                while (k < k1 && !meetsAt(fixed_first ? fixed : cand[k], fixed_first ? cand[k] : fixed))
-                    ++k;
-            work_.corners += (k < k1 ? k + 1 : k1) - k0;
-            return k;
-        }
+        size_t firstMeeting(const Approximation *cand, size_t k0, size_t k1, const Approximation &fixed);
 
         //! picks[j] = the first incoming line (in cost order) before limits[j] that meets outgoing line j within
         //! delta at boundary x, or limits[j] if none does. Few pairs: tried in order. Many: by chords (see the file comment),
         //! O((I + O) log I) plus the lines near tangent to the disc, which are tried one by one.
-        void choosePredecessors(const std::vector<VectorType> &pts, size_t x)
-        {
-            const size_t ni = in_lines.size(), no = out_lines.size();
-            corner_mid = (pts[x - 1].template cast<ComputeType>() + pts[x].template cast<ComputeType>()) * ComputeType(0.5);
-            picks = limits;   // no line at or beyond limits[j] is wanted for outgoing line j
-            // The cheapest few first (they usually meet); the rest one by one only while that stays cheap.
-            const size_t first = std::min(ni, scan_first);
-            open_.clear();
-            for (size_t j = 0; j < no; ++j)
-            {
-                const size_t f = std::min(first, limits[j]);
-                const size_t k = reversed_ ? firstMeeting<true>(in_lines.data(), 0, f, out_lines[j]) : firstMeeting<false>(in_lines.data(), 0, f, out_lines[j]);
-                if (k < f)
-                    picks[j] = k;
-                else if (f < limits[j])
-                    open_.push_back(j);
-            }
-            if (open_.empty())
-                return;
-            if (open_.size() * (ni - first) <= scan_share * (ni + open_.size()))   // a bounded share of this boundary's lines
-            {
-                for (size_t j : open_)
-                {
-                    const size_t k = reversed_ ? firstMeeting<true>(in_lines.data(), first, limits[j], out_lines[j])
-                                               : firstMeeting<false>(in_lines.data(), first, limits[j], out_lines[j]);
-                    if (k < limits[j])
-                        picks[j] = k;
-                }
-                return;
-            }
-            typedef VectorND<2, ComputeType> CV;
-            const CV m = (pts[x - 1].template cast<ComputeType>() + pts[x].template cast<ComputeType>()) * ComputeType(0.5);
-            ComputeType eta = 0;
-            in_chords.resize(ni);
-            out_chords.resize(no);
-            for (size_t k = first; k < ni; ++k)
-                in_chords[k] = chordOf(in_lines[k], m, eta);
-            for (size_t j : open_)
-                out_chords[j] = chordOf(out_lines[j], m, eta);
-            eta *= 2;
-            const ComputeType pi = std::acos(ComputeType(-1));
-            auto wrap = [&](Chord &c) { if (c.kind == regular && (c.p < -pi + eta || c.q > pi - eta || !(eta < ComputeType(0.01)))) c.kind = tangent; };
-            for (size_t k = first; k < ni; ++k) wrap(in_chords[k]);
-            for (size_t j : open_) wrap(out_chords[j]);
-            // Two chords cross inside the disc iff their ends alternate: p < u < q < v (case 1) or u < p < v < q
-            // (case 2), here with every comparison widened by eta, so no meeting pair is missed.
-            for (int c2 = 0; c2 < 2; ++c2)
-            {
-                items.clear();
-                for (size_t k = first; k < ni; ++k)
-                    if (in_chords[k].kind == regular)
-                        items.push_back(Item{c2 ? -in_chords[k].q : in_chords[k].p, c2 ? in_chords[k].p : in_chords[k].q, k});
-                queries.clear();
-                for (size_t j : open_)
-                    if (out_chords[j].kind == regular)
-                        queries.push_back(Item{c2 ? -out_chords[j].q : out_chords[j].p, 0, j});
-                sweep(eta);
-            }
-            for (size_t j : open_)
-            {
-                if (out_chords[j].kind == misses)
-                    continue;
-                for (size_t k = first; k < std::min(picks[j], ni); ++k)
-                    if ((out_chords[j].kind == tangent ? in_chords[k].kind != misses : in_chords[k].kind == tangent) && meets(k, j))
-                    {
-                        picks[j] = k;
-                        break;
-                    }
-            }
-        }
+        void choosePredecessors(const std::vector<VectorType> &pts, size_t x);
 
         enum : int { regular = Chord::regular, tangent = Chord::tangent, misses = Chord::misses };
         struct Item
@@ -901,63 +682,11 @@ namespace rtl
         };
 
         //! The chord that `line` cuts from the disc of radius delta about m (see `CornerChord.h`).
-        Chord chordOf(const Approximation &line, const VectorND<2, ComputeType> &m, ComputeType &eta) const
-        {
-            return detail::cornerChord(line, m, delta_, delta2, eta);
-        }
+        Chord chordOf(const Approximation &line, const VectorND<2, ComputeType> &m, ComputeType &eta) const;
 
         //! One case of the chord test: queries in increasing key; every item with key < query key + eta is in a
         //! min-tree of ranks ordered by val; the cheapest one with val in (u - eta, v + eta) that meets exactly wins.
-        void sweep(ComputeType eta)
-        {
-            if (items.empty() || queries.empty())
-                return;
-            std::sort(items.begin(), items.end(), ItemLess{true});
-            vals.clear();
-            const size_t ni = items.size();
-            leaf_of.assign(in_lines.size(), 0);
-            for (size_t i = 0; i < ni; ++i)
-            {
-                vals.push_back(items[i].val);
-                leaf_of[items[i].index] = i;
-            }
-            tree.reset(ni);
-            // the items by key, each with its rank in val order (its leaf); items of equal key enter the tree before
-            // the same query, so their order among themselves does not matter
-            by_key.clear();
-            for (size_t i = 0; i < ni; ++i) by_key.push_back(Item{items[i].key, items[i].val, i});
-            std::sort(by_key.begin(), by_key.end(), ItemLess{false});
-            std::sort(queries.begin(), queries.end(), ItemLess{false});
-            size_t next = 0;
-            for (const Item &qu : queries)
-            {
-                while (next < ni && by_key[next].key < qu.key + eta)
-                {
-                    tree.set(by_key[next].index, items[by_key[next].index].index);
-                    ++next;
-                }
-                const Chord &o = out_chords[qu.index];
-                const size_t lo = static_cast<size_t>(std::upper_bound(vals.begin(), vals.end(), o.p - eta) - vals.begin());
-                const size_t hi = static_cast<size_t>(std::lower_bound(vals.begin(), vals.end(), o.q + eta) - vals.begin());
-                removed.clear();
-                while (lo < hi)
-                {
-                    ++work_.corners;
-                    const size_t k = tree.query(lo, hi);
-                    if (k == none_rank || k >= picks[qu.index])
-                        break;
-                    if (meets(k, qu.index))
-                    {
-                        picks[qu.index] = k;
-                        break;
-                    }
-                    removed.push_back(k);
-                    tree.set(leaf_of[k], none_rank);
-                }
-                for (size_t k : removed)
-                    tree.set(leaf_of[k], k);
-            }
-        }
+        void sweep(ComputeType eta);
 
         //! The furthest corner reached, and the closest any line pair came to meeting there.
         void diagnose(const std::vector<VectorType> &pts, const SumArray &a, size_t n)
@@ -973,6 +702,7 @@ namespace rtl
                 const Approximation prev(a.sums(states[s].x, b));
                 for (size_t y = b + 2; y <= n; ++y)
                 {
+                    y = next_boundary[y];
                     ComputeType total;
                     const bool ok = fits(a, b, y, total);
                     if (!ok && beyondReach(total, b, n))
@@ -986,3 +716,8 @@ namespace rtl
         }
     };
 }
+
+// The definitions of the members declared above that compute the bounds and run the corner tests (each file states
+// its part of the contract); after the class, which they need complete.
+#include "rtl/vect/partition_search/ChordSweep.h"
+#include "rtl/vect/partition_search/RangeBounds.h"
