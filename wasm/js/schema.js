@@ -6,8 +6,8 @@
  * The calls of module instance m by name: call(name) gives {writeOptions, readResults}.
  * writeOptions(values): writes the named values into the module's options block, in the C++ declaration's order,
  * and returns the block's address (the binding's options argument). Each declared name must be present in values
- * (booleans as true/false, arrays with the declared count); a key values has and the declaration lacks is an
- * error too.
+ * (booleans as true/false, arrays with the declared count, an enumeration as one of its names); a key values has
+ * and the declaration lacks is an error too.
  * readResults(r, view): a ResultBlock (one number, its address; when traced, {out: address, trace}) as
  * {scalars: {name: number}, arrays: {name: typed array}, trace}: each array copied out of wasm memory, or with
  * view the typed array on the block itself (no copy; valid until the next call that fills or frees the block).
@@ -22,6 +22,7 @@ export function boundaryOf(m) {
     const c = schema.calls[name];
     if (!c) throw new Error(`rtl-wasm: the module declares no call "${name}"`);
     const optionNames = c.options.map(([n]) => n), counts = c.options.map(([, k]) => k);
+    const choices = c.options.map(([, , names]) => names ?? null);  // an enumeration: written as the name's index
     const total = counts.reduce((a, b) => a + b, 0);
     if (total > capacity) throw new Error(`rtl-wasm: ${name}'s options need ${total} numbers, the block holds ${capacity}`);
     const scalarNames = c.scalars, arrayNames = c.arrays.map(([n]) => n);
@@ -33,7 +34,11 @@ export function boundaryOf(m) {
       let k = optionsAt;
       for (let i = 0; i < optionNames.length; i++) {
         const v = values[optionNames[i]];
-        if (counts[i] === 1) {
+        if (choices[i]) {
+          const at = choices[i].indexOf(v);
+          if (at < 0) throw new Error(`rtl-wasm: ${name}: option ${optionNames[i]} ${v} is none of ${choices[i].join(', ')}`);
+          H[k++] = at;
+        } else if (counts[i] === 1) {
           if (typeof v !== 'number' && typeof v !== 'boolean') throw new Error(`rtl-wasm: ${name}: option ${optionNames[i]} not given`);
           H[k++] = +v;
         } else {
@@ -59,7 +64,7 @@ export function boundaryOf(m) {
       const arrays = {};
       for (let i = 0; i < A; i++, k += 2) {
         const a = new arrayTypes[i](buf, H[k], H[k + 1]);
-        arrays[arrayNames[i]] = view ? a : a.slice();
+        arrays[arrayNames[i]] = view ? a : a.slice();  // one ArrayBuffer per array: one shared large buffer faulted its pages in on every call
       }
       return { scalars, arrays, trace: traced ? r.trace : undefined };
     }
