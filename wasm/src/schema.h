@@ -130,6 +130,13 @@ inline Registry& registry() {
 
 }  // namespace schema_detail
 
+// The Results of a call whose result is a JS object built field by field in C++ (a stateful object's handle, or a
+// small nested result): nothing crosses through the result block.
+struct NamedObjectResult {
+  template <class F>
+  void fields(F&) {}
+};
+
 // The options of a call, decoded from the block at `address` (optionsBlockAddress(), passed by the JS layer).
 template <class Options>
 Options readOptions(std::uintptr_t address) {
