@@ -155,7 +155,8 @@ inline val i32(const std::vector<std::int32_t>& v) { return typedArray("Int32Arr
 inline std::string str(std::size_t v) { return std::to_string(v); }
 
 // A call's results handed to JS as one number: the address of a kept block holding the scalars and arrays, which
-// wasm/js/api.js (takeResults) copies out right after the call (or hands out as views: { view: true }). Building a result object field by field through
+// wasm/js/schema.js (readResults, by the names the call declares: schema.h) copies out right after the call (or
+// hands out as views: { view: true }). Building a result object field by field through
 // embind costs ~4 JS calls per array (the constructor looked up by name, a memory view, the copy, the key string):
 // 15-30 us per vectorize() call, as much as FTLS's own time on a few thousand points. Layout, in doubles:
 //   [scalar count S, scalars..., array count A, (byte address, element count) per array..., array bytes...]
