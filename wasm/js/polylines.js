@@ -2,8 +2,10 @@
 // argument checks and the result's typed arrays only.
 import { num, options, toF64 } from './checks.js';
 
-/** extractPolylines() of one module instance: ctx = {m, withInput, setComputeMs} (api.js). */
-export function polylinesApi({ m, withInput, setComputeMs }) {
+/** extractPolylines() of one module instance: ctx = {m, withInput, boundary, setComputeMs} (api.js). */
+export function polylinesApi({ m, withInput, boundary, setComputeMs }) {
+  // The options of m.extractPolylines by name, as wasm/src/polylines.cpp declares them (schema.js).
+  const call = boundary.call('extractPolylines');
   /**
    * @param {import('./index.js').PointArray} points
    * @param {import('./index.js').ExtractPolylinesOptions} [opts]
@@ -20,7 +22,8 @@ export function polylinesApi({ m, withInput, setComputeMs }) {
     const unexplainedCost = num(o, 'unexplainedCost', fn, 0.5, { min: 0, exclusiveMin: true });
     if (xy.length % 2 !== 0)
       throw new RangeError(`${fn}: points has ${xy.length} numbers, not a multiple of 2 (interleaved x, y expected)`);
-    const r = withInput(fn, xy, (p, n) => m.extractPolylines(p, n, maxVertices, maxGap, unexplainedCost));
+    const r = withInput(fn, xy, (p, n) => m.extractPolylines(p, n,
+      call.writeOptions({ maxVertices, maxGap, unexplainedCost })));
     setComputeMs(r.computeMs);
     const { vertices, offsets } = r;
     const polylines = [];

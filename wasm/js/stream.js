@@ -9,8 +9,10 @@ import { partViews, traceEvents } from './views.js';
 // a slice() per cluster allocated a backing store each.
 const splitClusters = (r, dim) => partViews(r.points, r.offsets, dim);
 
-/** The StreamSegmenter class of one module instance: ctx = {m, withHeap, registry} (api.js; see owned.js). */
-export function streamApi({ m, withHeap, registry }) {
+/** The StreamSegmenter class of one module instance: ctx = {m, withHeap, boundary, registry} (api.js; see owned.js). */
+export function streamApi({ m, withHeap, boundary, registry }) {
+  // The options of m.streamCreate by name, as wasm/src/stream.cpp declares them (schema.js).
+  const createCall = boundary.call('streamCreate');
   class StreamSegmenter extends CppObject {
     #dim;
     #traced;
@@ -23,7 +25,8 @@ export function streamApi({ m, withHeap, registry }) {
       const step = num(o, 'step', fn, d.step, { min: 1, integer: true, max: 1 << 24 });
       const [lower, upper] = boundsOptions(o, fn, d.lowerBound, d.upperBound);
       const scaling = num(o, 'scaling', fn, d.scaling, { min: 0 });
-      super(check(m.streamCreate(dim, step, lower, upper, scaling, traced), fn), (h) => m.streamDestroy(h), registry,
+      const settings = { dim, step, lowerBound: lower, upperBound: upper, scaling, trace: traced };
+      super(check(m.streamCreate(createCall.writeOptions(settings)), fn), (h) => m.streamDestroy(h), registry,
         fn, 'segmenter');
       this.#dim = dim;
       this.#traced = traced;

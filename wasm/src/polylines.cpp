@@ -2,6 +2,7 @@
 // beams, read from the wasm heap; the result as typed arrays by name (vertices flat with per-polyline offsets, as
 // the package gives clusters).
 #include "adapter.h"
+#include "schema.h"
 
 #include <rtl/vect/ScanPolylines2D.h>
 
@@ -10,8 +11,21 @@ namespace {
 
 // Beams: n interleaved (x, y) in the sensor frame, in beam order, NaN for no return (checked: finite or NaN, within
 // kMaxCoordinate). No returned beam is not an error: ScanPolylines2D's documented empty result (score NaN).
-val extractPolylines(std::uintptr_t ptr, std::size_t len, double maxVertices, double maxGap, double unexplainedCost) {
+// extractPolylines()'s options (wasm/js/polylines.js writes them by these names after checking them; schema.h).
+struct PolylinesOptions {
+  double maxVertices = 0, maxGap = 0, unexplainedCost = 0;
+  template <class F>
+  void fields(F& f) {
+    f("maxVertices", maxVertices);
+    f("maxGap", maxGap);
+    f("unexplainedCost", unexplainedCost);
+  }
+};
+
+val extractPolylines(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
   return guarded([&] {
+    const auto o = readOptions<PolylinesOptions>(options);
+    const double maxVertices = o.maxVertices, maxGap = o.maxGap, unexplainedCost = o.unexplainedCost;
     const double* xy = doubles(ptr);
     checkPoints("extractPolylines", xy, len, 2, 0, true, kMaxCoordinate);
     std::vector<rtl::VectorND<2, double>> beams(len / 2);
@@ -68,4 +82,5 @@ val extractPolylines(std::uintptr_t ptr, std::size_t len, double maxVertices, do
 
 EMSCRIPTEN_BINDINGS(rtl_polylines) {
   emscripten::function("extractPolylines", &rtl_wasm::extractPolylines);
+  rtl_wasm::registerCall<rtl_wasm::PolylinesOptions, rtl_wasm::NamedObjectResult>("extractPolylines");
 }

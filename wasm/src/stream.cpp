@@ -1,6 +1,7 @@
 // StreamSegmenter: the streaming IA segmenter behind an integer handle. The JS class owns the handle and frees it
 // with dispose() (or a FinalizationRegistry); plain functions keep embind's class machinery out of the way.
 #include "adapter.h"
+#include "schema.h"
 
 #include <memory>
 
@@ -85,9 +86,29 @@ struct Stream final : StreamBase {
 
 StreamBase* handle(std::uintptr_t h) { return reinterpret_cast<StreamBase*>(h); }
 
-val streamCreate(int dim, double step, double lower, double upper, double scaling, bool trace) {
+// StreamSegmenter's options (wasm/js/stream.js writes them by these names after checking them; schema.h).
+struct StreamOptions {
+  int dim = 0;
+  double step = 0, lowerBound = 0, upperBound = 0, scaling = 0;
+  bool trace = false;
+  template <class F>
+  void fields(F& f) {
+    f("dim", dim);
+    f("step", step);
+    f("lowerBound", lowerBound);
+    f("upperBound", upperBound);
+    f("scaling", scaling);
+    f("trace", trace);
+  }
+};
+
+val streamCreate(std::uintptr_t options) {
   return guarded([&] {
-    const auto s = static_cast<std::size_t>(step);
+    const auto o = readOptions<StreamOptions>(options);
+    const int dim = o.dim;
+    const bool trace = o.trace;
+    const double lower = o.lowerBound, upper = o.upperBound, scaling = o.scaling;
+    const auto s = static_cast<std::size_t>(o.step);
     StreamBase* p = nullptr;
     if (trace) p = dim == 3 ? static_cast<StreamBase*>(new Stream<3, rtl::IaTraceLog>(s, lower, upper, scaling))
                             : static_cast<StreamBase*>(new Stream<2, rtl::IaTraceLog>(s, lower, upper, scaling));
@@ -123,6 +144,7 @@ void streamDestroy(std::uintptr_t h) { delete handle(h); }
 EMSCRIPTEN_BINDINGS(rtl_stream) {
   using namespace rtl_wasm;
   emscripten::function("streamCreate", &streamCreate);
+  rtl_wasm::registerCall<StreamOptions, rtl_wasm::NamedObjectResult>("streamCreate");
   emscripten::function("streamAdd", &streamAdd);
   emscripten::function("streamClosed", &streamClosed);
   emscripten::function("streamAlive", &streamAlive);
