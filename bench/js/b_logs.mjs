@@ -8,13 +8,15 @@
 //      read     openLog(...).scans(): raw + CDR decode + fromLaserScan
 //      segment  read + segment()
 //      pipeline read + segment() + vectorize(ftls) on each cluster of >= 3 points (the CLI's default pipeline)
+//      batched  read + segmentAndVectorize(ftls, minPoints 3): the same work in one call into the module per scan
+//               (what the CLI runs); its read share = read / batched, raw share = raw / batched
 //    Scans/s of each, and the shares of the pipeline's time: reading (read / pipeline; raw / pipeline for the MCAP
 //    reader alone) and segmenting ((segment - read) / pipeline); vectorizing is the rest. The cluster and segment totals are
 //    checked equal across compressions and rounds (the same work). Medians over the rounds.
 // 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of --log-scans (default N) scans each (zstd), -m ftls,
 //    --jobs 1 against --jobs K (K = the number of logs), wall time of the whole command (each worker's start, wasm
 //    instantiation included), and the speed-up (ideal: min(K, idle cores)). --throughput=0 skips section 1.
-// 2. Memory: a log of --big-mb MB (zstd) read and processed by the pipeline; RSS sampled every 1000 scans after the
+// 2. Memory: a log of --big-mb MB (chunks uncompressed) read and processed by the batched pipeline; RSS sampled every 1000 scans after the
 //    first 2000 (warm-up); growth = max - first sample. The file is deleted afterwards.
 import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -105,11 +107,19 @@ function pipelineScan(points, totals) {
   }
 }
 
-async function pipeline(path, onScan) {
+// The same work in one call into the module per scan (segmentAndVectorize: segment + every cluster's FTLS).
+const batchOptions = { minPoints: 3, vectorize: { method: 'ftls' } };
+function batchedScan(points, totals) {
+  const r = rtl.segmentAndVectorize(points, batchOptions);
+  totals.clusters += r.clusters.length;
+  totals.segments += r.segmentOffsets[r.vectorized.length];
+}
+
+async function pipeline(path, onScan, scan = pipelineScan) {
   const log = await openLog(path);
   const totals = { scans: 0, clusters: 0, segments: 0 };
   for await (const s of log.scans('/scan')) {
-    pipelineScan(s.points, totals);
+    scan(s.points, totals);
     totals.scans++;
     onScan?.(totals.scans);
   }
@@ -125,28 +135,30 @@ async function timed(f) {
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 
 console.log(`# b_logs: Node ${process.version}, one thread; LaserScan 360 beams; ${ROUNDS} rounds, medians`);
-console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  clusters  segments');
+console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  batched scans/s  batched read share  batched raw share  clusters  segments');
 let reference;
 for (const count of THROUGHPUT ? [Math.round(N / 10), N] : []) {
   for (const compression of ['none', 'lz4', 'zstd']) {
     const path = join(dir, `scans-${count}-${compression}.mcap`);
     await writeLog(path, count, compression);
-    const rs = [], rd = [], sg = [], pl = [];
+    const rs = [], rd = [], sg = [], pl = [], bt = [];
     let totals;
     for (let r = 0; r < ROUNDS; r++) {
       const a = await timed(() => raw(path)), b = await timed(() => read(path)), d = await timed(() => segmentOnly(path));
       const c = await timed(() => pipeline(path));
-      if (a.scans !== count || b.scans !== count || c.scans !== count || d.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${d.scans}/${c.scans} != ${count}`);
+      const e = await timed(() => pipeline(path, undefined, batchedScan));
+      if (a.scans !== count || b.scans !== count || c.scans !== count || d.scans !== count || e.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${d.scans}/${c.scans}/${e.scans} != ${count}`);
       if (totals && (totals.clusters !== c.clusters || totals.segments !== c.segments)) throw new Error('pipeline totals differ between rounds');
+      if (e.clusters !== c.clusters || e.segments !== c.segments) throw new Error(`batched totals ${e.clusters}/${e.segments} differ from per-cluster ${c.clusters}/${c.segments}`);
       totals = c;
-      rs.push(a.ms); rd.push(b.ms); sg.push(d.ms); pl.push(c.ms);
+      rs.push(a.ms); rd.push(b.ms); sg.push(d.ms); pl.push(c.ms); bt.push(e.ms);
     }
     if (count === N) {
       if (reference && (reference.clusters !== totals.clusters || reference.segments !== totals.segments)) throw new Error('pipeline totals differ between compressions');
       reference = totals;
     }
     const perS = (ms) => Math.round(count / (ms / 1000));
-    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(sg))).padStart(15)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${((median(sg) - median(rd)) / median(pl) * 100).toFixed(0).padStart(11)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
+    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(sg))).padStart(15)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${((median(sg) - median(rd)) / median(pl) * 100).toFixed(0).padStart(11)} %  ${String(perS(median(bt))).padStart(15)}  ${(median(rd) / median(bt) * 100).toFixed(0).padStart(16)} %  ${(median(rs) / median(bt) * 100).toFixed(0).padStart(15)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
     rmSync(path);
   }
 }
@@ -165,7 +177,7 @@ if (BIG_MB > 0) {
     const rss = process.memoryUsage().rss;
     base ??= rss;
     peak = Math.max(peak, rss);
-  }));
+  }, batchedScan));
   rmSync(path);
   console.log(`# memory: pipeline over the whole log at ${Math.round(count / (t.ms / 1000))} scans/s; RSS after warm-up ${(base / 1e6).toFixed(0)} MB, ` +
               `peak ${(peak / 1e6).toFixed(0)} MB, growth ${((peak - base) / 1e6).toFixed(1)} MB (goal < 50 MB)`);

@@ -436,6 +436,7 @@ async function* bagRecords(src, decompress, rec) {
     }
   };
   const HEAD = 4096;
+  let indexAt = 0;   // the bag header's index_pos: the file must reach it (a recording cut off ends before)
   for (let at = BAG_HEADER_AT; at < src.size;) {
     // the record's lengths first, then the whole record
     const head = await src.read(at, Math.min(HEAD, src.size - at));
@@ -465,7 +466,9 @@ async function* bagRecords(src, decompress, rec) {
         yield* inner(bytes.subarray(8 + headerLength), at + 8 + headerLength, true);
       throw stopAt(at, 'truncated: the file ends inside a record');
     }
-    if (r.op === BAG_OP.chunk) {
+    if (r.op === BAG_OP.header) {
+      indexAt = Number(new rec.BagHeader(r.fields).indexPosition);
+    } else if (r.op === BAG_OP.chunk) {
       const chunk = new rec.Chunk(r.fields);
       let data = r.data;
       try {
@@ -488,6 +491,7 @@ async function* bagRecords(src, decompress, rec) {
     }
     at += size;
   }
+  if (indexAt === 0 || indexAt >= src.size) throw stopAt(src.size, 'truncated: the file ends before the bag\'s index');
 }
 
 async function openBagStream(src, decompress, indexError) {
