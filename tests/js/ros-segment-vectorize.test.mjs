@@ -109,3 +109,33 @@ test('segmentAndVectorize: repeated calls leave the wasm heap and memory as they
   assert.equal(rtl.heapInUse(), heap);
   assert.equal(rtl.memoryBytes(), memory);
 });
+
+test('segmentAndVectorize: random points and options give results or typed errors only, the heap stays flat', () => {
+  let seed = 7;
+  const rand = () => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) / 2 ** 31);
+  const pick = (a) => a[Math.floor(rand() * a.length)];
+  const heap = rtl.heapInUse();
+  let results = 0, errors = 0;
+  for (let k = 0; k < 400; k++) {
+    const dim = pick([2, 3, 2, 3, 2, 4]);
+    const n = Math.floor(rand() * 60);
+    const pts = Array.from({ length: n * (dim === 4 ? 2 : dim) + (rand() < 0.05 ? 1 : 0) },
+      () => (rand() < 0.004 ? pick([NaN, Infinity, 1e19, -0]) : (rand() - 0.5) * 10));
+    const opts = {
+      dim, minPoints: pick([2, 3, 5, 3, 3, 1, 2.5]),
+      segment: pick([{}, { step: pick([1, 2, 3, 2, 0]) }, { lowerBound: rand() * 0.3, upperBound: pick([0.5, Infinity, 2, -1]) }]),
+      vectorize: { method: pick(['ftls', 'aftls', 'itls', 'dp', 'rw', 'ftls', 'x']), sigma: pick([0.01, 0.03, 0.5, 0.03, 0]), split: pick([true, false]) },
+    };
+    try {
+      const r = rtl.segmentAndVectorize(pts, opts);
+      assert.equal(r.segmentOffsets.length, r.vectorized.length + 1);
+      for (let j = 0; j < r.vectorized.length; j++) rtl.vectorizedCluster(r, j);
+      results++;
+    } catch (e) {
+      assert.ok((e instanceof TypeError || e instanceof RangeError) && e.message.startsWith('segmentAndVectorize: '), `${e.name}: ${e.message}`);
+      errors++;
+    }
+  }
+  assert.ok(results > 50 && errors > 50, `${results} results, ${errors} errors`);
+  assert.equal(rtl.heapInUse(), heap);
+});
