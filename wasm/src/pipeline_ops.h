@@ -32,6 +32,7 @@ struct PipelineOutput {
   std::vector<std::uint32_t> breakOffsets;     // V + 1, in corners: cluster j's breaks are corners breakOffsets[j] .. [j + 1] - 1
   std::vector<double> breaks;                  // 3 a corner: boundary, crossingDistance, delta
   int stride = 0;
+  VectorizeOutput cluster;                     // the current cluster's, reused (its arrays keep their capacity)
   // A coordinate is +-Infinity, or beyond VectorizeParams::maxMagnitude; the rest of the output is then incomplete.
   bool badInput = false;
 
@@ -83,7 +84,8 @@ void segmentAndVectorize(const double* xyz, std::size_t n, const SegmentParams& 
     work.resize(D * m);
     for (std::size_t j = 0; j < m; ++j)
       for (int d = 0; d < D; ++d) work[D * j + static_cast<std::size_t>(d)] = xyz[D * idx[b + j] + static_cast<std::size_t>(d)];
-    const VectorizeOutput o = vectorize<D>(work.data(), m, v);
+    VectorizeOutput& o = out.cluster;
+    vectorizeInto<D>(work.data(), m, v, nullptr, o);
     if (o.badInput) {
       out.badInput = true;
       return;
