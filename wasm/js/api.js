@@ -5,6 +5,7 @@
 // (ES module) and dist/api.cjs (CommonJS); the entries index.mjs, index.node.mjs and index.cjs call start().
 import { describe } from './checks.js';
 import { heapOf } from './heap.js';
+import { boundaryOf } from './schema.js';
 import { fitLineApi } from './fitline.js';
 import { segmentApi } from './segment.js';
 import { vectorizeApi } from './vectorize.js';
@@ -38,8 +39,9 @@ function wrap(m) {
   // the wrapper, so it does not keep it alive).
   const registry = typeof FinalizationRegistry === 'function' ? new FinalizationRegistry((free) => free()) : null;
   const heap = heapOf(m);
-  // What the functions of this instance share: the module, its memory functions, the registry and the timing.
-  const ctx = { m, ...heap, registry, setComputeMs: (ms) => { lastComputeMs = ms; } };
+  // What the functions of this instance share: the module, its memory functions, the calls' options and results by
+  // name (schema.js), the registry and the timing.
+  const ctx = { m, ...heap, boundary: boundaryOf(m), registry, setComputeMs: (ms) => { lastComputeMs = ms; } };
   const { release } = heap;
   /** @type {Omit<RTL, 'lastComputeMs'>} */
   const api = {

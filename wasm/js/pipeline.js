@@ -5,37 +5,34 @@ import { defaults } from './defaults.js';
 import { partViews } from './views.js';
 import { METHODS, corner, failureOf } from './vectorize.js';
 
-// The array types of m.segmentAndVectorize's ResultBlock, in the order of wasm/src/pipeline.cpp.
-const PIPELINE_ARRAYS = [Int32Array, Uint32Array, Uint32Array, Uint32Array, Uint32Array,   // segment()'s
-  Uint32Array, Uint32Array, Float64Array, Uint32Array, Float64Array, Uint32Array, Float64Array, Float64Array,
-  Uint32Array, Uint32Array, Uint32Array, Float64Array];
-
 /**
  * The result block's arrays (views on wasm memory) as copies: labels and indices (moved into the block, elsewhere in
  * memory) one each, the 15 others laid out back to back in the block in one copy, as views on it. 17 copies cost
  * ~8 us a scan (an ArrayBuffer each), a third of the call's JS time on a 360-beam scan.
  */
 function copyOut(arrays) {
+  const names = Object.keys(arrays), own = ['labels', 'indices'];
   let start = Infinity, end = 0;
-  for (let i = 2; i < arrays.length; i++) {
-    const a = arrays[i];
-    if (a.length === 0) continue;   // an empty array's address may be anywhere (or 0)
+  for (const k of names) {
+    const a = arrays[k];
+    if (own.includes(k) || a.length === 0) continue;   // an empty array's address may be anywhere (or 0)
     start = Math.min(start, a.byteOffset);
     end = Math.max(end, a.byteOffset + a.byteLength);
   }
-  const copy = end > start ? new Uint8Array(arrays[2].buffer, start, end - start).slice().buffer : new ArrayBuffer(0);
-  const out = new Array(arrays.length);
-  out[0] = arrays[0].slice();
-  out[1] = arrays[1].slice();
-  for (let i = 2; i < arrays.length; i++) {
-    const a = arrays[i], Type = /** @type {any} */ (a.constructor);
-    out[i] = a.length === 0 ? new Type(0) : new Type(copy, a.byteOffset - start, a.length);
+  const copy = end > start ? new Uint8Array(arrays.labels.buffer, start, end - start).slice().buffer : new ArrayBuffer(0);
+  /** @type {Record<string, any>} */
+  const out = {};
+  for (const k of names) {
+    const a = arrays[k], Type = /** @type {any} */ (a.constructor);
+    out[k] = own.includes(k) ? a.slice() : a.length === 0 ? new Type(0) : new Type(copy, a.byteOffset - start, a.length);
   }
   return out;
 }
 
-/** segmentAndVectorize() of one module instance: ctx = {m, withInput, takeResults, setComputeMs} (api.js). */
-export function pipelineApi({ m, withInput, takeResults, setComputeMs }) {
+/** segmentAndVectorize() of one module instance: ctx = {m, withInput, boundary, setComputeMs} (api.js). */
+export function pipelineApi({ m, withInput, boundary, setComputeMs }) {
+  // The options and results of m.segmentAndVectorize by name, as wasm/src/pipeline.cpp declares them (schema.js).
+  const call = boundary.call('segmentAndVectorize');
   /**
    * @param {import('./index.js').PointArray} points
    * @param {import('./index.js').SegmentAndVectorizeOptions} opts
@@ -69,13 +66,14 @@ export function pipelineApi({ m, withInput, takeResults, setComputeMs }) {
     const distance = vo.distance ?? 'line';
     if (distance !== 'line' && distance !== 'segment') throw new RangeError(`${fn}: option distance must be 'line' or 'segment', got ${describe(distance)}`);
     const xyz = toF64(points, fn, 'points');
-    const res = takeResults(withInput(fn, xyz, (p, n) => m.segmentAndVectorize(p, n, dim, step, lower, upper, origin[0],
-      origin[1], origin[2], minPoints, METHODS.indexOf(method), sigma, delta, epsilon, maxSize, simplexShift, maxIterations,
-      split, method === 'dp' && distance === 'segment')), PIPELINE_ARRAYS, true);
-    const [computeMs, stride] = res.scalars;
-    setComputeMs(computeMs);
-    const [labels, indices, offsets, runs, runOffsets, vectorized, flags, failureTriples, segmentOffsets, segments,
-      segmentIndices, params, rms, polylineParts, polylineOffsets, breakOffsets, breaks] = copyOut(res.arrays);
+    const settings = { dim, step, lowerBound: lower, upperBound: upper, origin, minPoints, method: METHODS.indexOf(method),
+      sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, segmentDistance: method === 'dp' && distance === 'segment' };
+    // the arrays as views on the result block, then copied out at once (copyOut)
+    const res = call.readResults(withInput(fn, xyz, (p, n) => m.segmentAndVectorize(p, n, call.writeOptions(settings))), true);
+    setComputeMs(res.scalars.computeMs);
+    const stride = res.scalars.stride;
+    const { labels, indices, offsets, runs, runOffsets, vectorized, flags, failures: failureTriples, segmentOffsets, segments,
+      segmentIndices, params, rms, polylineParts, polylineOffsets, breakOffsets, breaks } = copyOut(res.arrays);
     const parts = partViews(indices, offsets), ranges = partViews(runs, runOffsets), clusters = new Array(parts.length);
     for (let k = 0; k < parts.length; k++) clusters[k] = { indices: parts[k], ranges: ranges[k] };
     const ok = new Uint8Array(vectorized.length), failures = [];

@@ -4,11 +4,10 @@ import { boolOption, boundsOptions, dimOption, num, options, originOption, toF64
 import { defaults } from './defaults.js';
 import { partViews, traceEvents } from './views.js';
 
-// The array types of m.segment's ResultBlock, in the order of wasm/src/segment.cpp.
-const SEGMENT_ARRAYS = [Int32Array, Uint32Array, Uint32Array, Uint32Array, Uint32Array];
-
-/** segment() of one module instance: ctx = {m, withInput, takeResults, setComputeMs} (api.js). */
-export function segmentApi({ m, withInput, takeResults, setComputeMs }) {
+/** segment() of one module instance: ctx = {m, withInput, boundary, setComputeMs} (api.js). */
+export function segmentApi({ m, withInput, boundary, setComputeMs }) {
+  // The options and results of m.segment by name, as wasm/src/segment.cpp declares them (schema.js).
+  const call = boundary.call('segment');
   /**
    * @overload
    * @param {import('./index.js').PointArray} points
@@ -31,17 +30,17 @@ export function segmentApi({ m, withInput, takeResults, setComputeMs }) {
     const o = options(opts, fn, ['dim', 'step', 'lowerBound', 'upperBound', 'origin', 'trace', 'view']);
     const dim = dimOption(o, fn);
     const trace = boolOption(o, 'trace', fn, false);
-    const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (takeResults)
+    const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (schema.js)
     // Default 2: CAR compares each point with up to step - 1 previous points, so 2 links consecutive points.
     const d = defaults.segment;
     const step = num(o, 'step', fn, d.step, { min: 1, integer: true, max: 2 ** 31 });
     const [lower, upper] = boundsOptions(o, fn, d.lowerBound, d.upperBound);
     const origin = originOption(o, fn, dim);
     const xyz = toF64(points, fn, 'points');
-    const res = takeResults(withInput(fn, xyz, (p, n) => m.segment(p, n, dim, step, lower, upper, origin[0], origin[1],
-      origin[2], trace)), SEGMENT_ARRAYS, view);
-    setComputeMs(res.scalars[0]);
-    const [labels, indices, offsets, runs, runOffsets] = res.arrays;
+    const settings = { dim, step, lowerBound: lower, upperBound: upper, origin, trace };
+    const res = call.readResults(withInput(fn, xyz, (p, n) => m.segment(p, n, call.writeOptions(settings))), view);
+    setComputeMs(res.scalars.computeMs);
+    const { labels, indices, offsets, runs, runOffsets } = res.arrays;
     // Each cluster's arrays are views on `indices` and `runs` (copies or, with view, the result block).
     const parts = partViews(indices, offsets), ranges = partViews(runs, runOffsets), clusters = new Array(parts.length);
     for (let k = 0; k < parts.length; k++) clusters[k] = { indices: parts[k], ranges: ranges[k] };

@@ -33,6 +33,8 @@
 #include <new>
 #include <vector>
 
+#include <rtl/core/CoordinateCheck.h>
+
 #include "kept.h"
 
 namespace rtl_wasm {
@@ -246,64 +248,43 @@ inline double nowMs() { return emscripten_get_now(); }
 // stays below 1e90, far from overflow (a point near 1e200 used to give a normal (0, 1) and an RMS of Infinity).
 constexpr double kMaxCoordinate = 1e18;
 
-// Checks an interleaved point array: a whole number of points, at least `minPoints`, all finite (unless gaps are
-// allowed, where a point with any NaN coordinate is a gap; +-Infinity is always rejected) and, if given, none larger
-// than maxMagnitude in absolute value.
-// values = false: the first two only (vectorize and segment check the numbers while copying them: badInput in
-// vect_ops.h / seg_ops.h, then this again for the message). Not inlined: one copy for the six bindings.
-[[gnu::noinline]] inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::size_t dim,
-                                          std::size_t minPoints, bool allowGaps, double maxMagnitude = HUGE_VAL,
-                                          bool values = true) {
+// The shape of an interleaved point array: a whole number of points of `dim` numbers, at least `minPoints`.
+[[gnu::noinline]] inline void checkShape(const char* fn, std::size_t len, std::size_t dim, std::size_t minPoints) {
   if (len % dim != 0)
     throw std::invalid_argument(std::string(fn) + ": points has " + str(len) + " numbers, not a multiple of dim " +
                                 str(dim) + " (interleaved coordinates expected)");
   const std::size_t n = len / dim;
   if (n < minPoints)
     throw std::invalid_argument(std::string(fn) + ": needs at least " + str(minPoints) + " points, got " + str(n));
-  if (!values) return;
-  // Fast pass, branch-free per block of 256 numbers, two per vector (simd128), one comparison per number and case:
-  // `bad` collects |v| > limit (+-Infinity included: limit is finite) and, without gaps, NaN (v != v). Only an input
-  // that fails it is scanned again for the message. Was three masks and four comparisons per vector: 100k 2D points
-  // ~0.11 -> ~0.08 ms (Node 20, medians of 301 calls; memory-bound from there).
-  using F2 = double __attribute__((vector_size(16)));
-  using I2 = long long __attribute__((vector_size(16)));
-  const double lim = maxMagnitude < DBL_MAX ? maxMagnitude : DBL_MAX;
-  const F2 limit = {lim, lim};
-  const I2 nanBad = allowGaps ? I2{0, 0} : I2{-1, -1};
-  const I2 absMask = {LLONG_MAX, LLONG_MAX};
-  bool ok = true;
-  std::size_t i = 0;
-  for (; ok && i + 256 <= len; i += 256) {
-    I2 bad = {0, 0};
-    for (std::size_t k = i; k < i + 256; k += 2) {
-      F2 v;
-      std::memcpy(&v, xy + k, sizeof v);
-      const F2 a = reinterpret_cast<F2>(reinterpret_cast<I2>(v) & absMask);
-      bad |= (a > limit) | (nanBad & (v != v));
+}
+
+// Throws the message for xy[i], the first out-of-bounds coordinate that rtl::detail::firstBeyond found (NaN here
+// means gaps were not allowed; a finite one is beyond kMaxCoordinate): no second scan of the input.
+[[noreturn, gnu::noinline]] inline void throwBadCoordinate(const char* fn, const double* xy, std::size_t i,
+                                                           std::size_t dim) {
+  const double v = xy[i];
+  if (std::isfinite(v)) {
+    char buf[32];
+    for (int digits = 1; digits <= 17; ++digits) {  // the shortest text that reads back as v
+      std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+      if (std::strtod(buf, nullptr) == v) break;
     }
-    ok = (bad[0] | bad[1]) == 0;
+    throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has the coordinate " + buf +
+                                " at index " + str(i) + "; coordinates must be within +-1e18 (their squares are summed)");
   }
-  for (; ok && i < len; ++i) {
-    const double a = std::fabs(xy[i]);
-    ok = !(a > lim) && (allowGaps || a == a);
-  }
-  if (ok) return;
-  for (std::size_t i = 0; i < len; ++i) {
-    const double v = xy[i];
-    if (std::isfinite(v)) {
-      if (std::fabs(v) <= maxMagnitude) continue;
-      char buf[32];
-      for (int digits = 1; digits <= 17; ++digits) {  // the shortest text that reads back as v
-        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (std::strtod(buf, nullptr) == v) break;
-      }
-      throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has the coordinate " + buf +
-                                  " at index " + str(i) + "; coordinates must be within +-1e18 (their squares are summed)");
-    }
-    if (std::isnan(v) && allowGaps) continue;
-    throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has a non-finite coordinate (" +
-                                (std::isnan(v) ? "NaN" : (v > 0 ? "Infinity" : "-Infinity")) + ") at index " + str(i));
-  }
+  throw std::invalid_argument(std::string(fn) + ": point " + str(i / dim) + " has a non-finite coordinate (" +
+                              (std::isnan(v) ? "NaN" : (v > 0 ? "Infinity" : "-Infinity")) + ") at index " + str(i));
+}
+
+// Checks an interleaved point array: its shape (checkShape) and all numbers finite (unless gaps are allowed, where a
+// point with any NaN coordinate is a gap; +-Infinity is always rejected) and, if given, none larger than
+// maxMagnitude in absolute value. One pass (rtl::detail::firstBeyond); the message names the first offending number.
+// For the bindings that read the points in place; segment and vectorize check the numbers while copying them.
+[[gnu::noinline]] inline void checkPoints(const char* fn, const double* xy, std::size_t len, std::size_t dim,
+                                          std::size_t minPoints, bool allowGaps, double maxMagnitude = HUGE_VAL) {
+  checkShape(fn, len, dim, minPoints);
+  const std::size_t bad = rtl::detail::firstBeyond(xy, len, maxMagnitude, allowGaps);
+  if (bad < len) throwBadCoordinate(fn, xy, bad, dim);
 }
 
 }  // namespace rtl_wasm

@@ -1,5 +1,7 @@
-// Module-level diagnostics: heap bytes in use (malloc) and linear memory size, used by the leak tests.
+// Module-level functions: the boundary schema, and the diagnostics (heap bytes in use (malloc) and linear memory
+// size) used by the leak tests.
 #include "adapter.h"
+#include "schema.h"
 
 #include <emscripten/heap.h>
 #include <emscripten/stack.h>
@@ -20,4 +22,6 @@ EMSCRIPTEN_BINDINGS(rtl_module) {
   emscripten::function("heapInUse", &rtl_wasm::heapInUse);
   emscripten::function("memoryBytes", &rtl_wasm::memoryBytes);
   emscripten::function("stackPointer", &rtl_wasm::stackPointer);
+  // The calls' options and results by name (schema.h; read once per instance by wasm/js/schema.js).
+  emscripten::function("boundarySchema", &rtl_wasm::boundarySchema);
 }

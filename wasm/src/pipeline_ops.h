@@ -70,7 +70,7 @@ void segmentAndVectorize(const double* xyz, std::size_t n, const SegmentParams& 
                          std::size_t minPoints, PipelineOutput& out) {
   out.clear();
   out.seg = segment<D>(xyz, n, s);
-  if (out.seg.badInput) {
+  if (out.seg.badAt != SIZE_MAX) {
     out.badInput = true;
     return;
   }
@@ -86,7 +86,7 @@ void segmentAndVectorize(const double* xyz, std::size_t n, const SegmentParams& 
       for (int d = 0; d < D; ++d) work[D * j + static_cast<std::size_t>(d)] = xyz[D * idx[b + j] + static_cast<std::size_t>(d)];
     VectorizeOutput& o = out.cluster;
     vectorizeInto<D>(work.data(), m, v, nullptr, o);
-    if (o.badInput) {
+    if (o.badAt != SIZE_MAX) {
       out.badInput = true;
       return;
     }

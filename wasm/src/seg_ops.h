@@ -12,18 +12,19 @@
 #include <string>
 #include <vector>
 
+#include <rtl/core/CoordinateCheck.h>
 #include <rtl/core/VectorND.h>
 #include <rtl/seg/CAR_Segmenter.h>
 #include <rtl/seg/SegTrace.h>
 
-#include "input_check.h"
 #include "kept.h"
 #include "trace_ops.h"
 
 namespace rtl_ops {
 
+// The segmenter's settings; every caller sets them all (the package's defaults: wasm/js/defaults.js).
 struct SegmentParams {
-  std::size_t step = 3;
+  std::size_t step = 2;
   double lowerBound = 0.1, upperBound = 0.5;
   double origin[3] = {0, 0, 0};
 };
@@ -34,9 +35,9 @@ struct SegmentOutput {
   std::vector<std::uint32_t> offsets;      // cluster k = indices[offsets[k] .. offsets[k+1])
   std::vector<std::uint32_t> runs;         // contiguous half-open index runs [b, e) of all clusters, flattened
   std::vector<std::uint32_t> runOffsets;   // cluster k = runs[runOffsets[k] .. runOffsets[k+1]) (2 numbers a run)
-  // A coordinate is +-Infinity (NaN is a gap), found while copying into the segmenter's point vector
-  // (input_check.h copyBeyond); the rest of the output is then empty.
-  bool badInput = false;
+  // The index of the first coordinate that is +-Infinity (NaN is a gap), found while copying the input into the
+  // segmenter's point vector (rtl::detail::firstBeyond); the rest of the output is then empty. SIZE_MAX: none.
+  std::size_t badAt = SIZE_MAX;
 };
 
 // The untraced segmenter and its point vector, kept between calls (one per thread; the wasm module has one): the
@@ -94,8 +95,11 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
   SegmentOutput out;
   pts.resize(n);  // zero-fills only beyond the last call's size; every point is assigned below
   // +-Infinity is refused; NaN is a gap. The points' storage is D * n contiguous doubles (the static_assert above).
-  out.badInput = copyBeyond(xyz, D * n, n ? pts[0].data().data() : nullptr, DBL_MAX);
-  if (out.badInput) return out;
+  const std::size_t bad = rtl::detail::firstBeyond(xyz, D * n, DBL_MAX, true, n ? pts[0].data().data() : nullptr);
+  if (bad < D * n) {
+    out.badAt = bad;
+    return out;
+  }
   Point origin;
   for (int k = 0; k < D; ++k) origin[static_cast<std::size_t>(k)] = p.origin[k];
   // Traced: a fresh segmenter of the traced type (a one-off); untraced: the kept one, given this call's settings.

@@ -13,7 +13,7 @@ val simplify(std::uintptr_t ptr, std::size_t len, int dim, double tolerance, boo
     const double* xyz = doubles(ptr);
     // Finite coordinates only; no magnitude limit: the library reproduces simplify-js's overflowing arithmetic. The
     // core checks them in its first pass over the input; the message naming the point is made only on failure.
-    checkPoints("simplify", xyz, len, static_cast<std::size_t>(dim), 0, false, HUGE_VAL, false);
+    checkShape("simplify", len, static_cast<std::size_t>(dim), 0);
     if (len / static_cast<std::size_t>(dim) > 0xffffffffu) throw std::length_error("simplify: more than 2^32 - 1 points");
     const double t0 = nowMs();
     std::vector<std::size_t> kept;

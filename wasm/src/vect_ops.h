@@ -13,11 +13,11 @@
 #include <vector>
 
 #include <rtl/Vectorization.h>
+#include <rtl/core/CoordinateCheck.h>
 #include <rtl/vect/FtlsTrace.h>
 #include <rtl/vect/SimplifyCompatible.h>
 #include <rtl/vect/SimplifyTrace.h>
 
-#include "input_check.h"
 #include "kept.h"
 #include "point_reader.h"
 #include "trace_ops.h"
@@ -36,7 +36,7 @@ struct VectorizeParams {
   bool segmentDistance = false;
   bool split = false;  // FTLS/AFTLS 2D: break the polyline at corners that cannot be met within delta
   // Coordinates must be within +-maxMagnitude (NaN never passes), checked before the copy into the library's point
-  // vector (input_check.h); otherwise the output has badInput set and nothing else.
+  // vector (rtl::detail::firstBeyond); otherwise the output has badAt set and nothing else.
   double maxMagnitude = HUGE_VAL;
 };
 
@@ -59,7 +59,7 @@ struct VectorizeOutput {
   std::vector<Corner> breaks;                 // split mode: where the polyline broke
   bool failed = false;                        // strict mode: `failure` is the corner that cannot be met
   Corner failure;
-  bool badInput = false;                      // a coordinate beyond VectorizeParams::maxMagnitude or NaN
+  std::size_t badAt = SIZE_MAX;               // the first coordinate beyond VectorizeParams::maxMagnitude or NaN
 
   // As a new output, keeping the arrays' capacity.
   void reset() {
@@ -75,7 +75,7 @@ struct VectorizeOutput {
     breaks.clear();
     failed = false;
     failure = Corner{};
-    badInput = false;
+    badAt = SIZE_MAX;
   }
 };
 
@@ -91,10 +91,13 @@ using Vec = rtl::VectorND<D, double>;
 // 100k points right after a 50-point call 1.15-1.25x -> 0.9-1.0x of steady. assign() on every call made the steady
 // calls slower (its in-place copy loop: FTLS 0.154 -> 0.175 ms); insert() at the end for the growth cost 700 B gz.
 template <int D>
-const std::vector<Vec<D>>& points(const double* xyz, std::size_t n, double limit, bool& bad) {
+const std::vector<Vec<D>>& points(const double* xyz, std::size_t n, double limit, std::size_t& badAt) {
   auto& v = kept<std::vector<Vec<D>>>();
-  bad |= anyBeyond(xyz, D * n, limit);
-  if (bad) n = 0;
+  const std::size_t bad = rtl::detail::firstBeyond(xyz, D * n, limit, false);
+  if (bad < D * n) {
+    badAt = bad;
+    n = 0;
+  }
   if (n > v.size()) {
     v.assign(PointReader<D>{xyz}, PointReader<D>{xyz + D * n});
     return v;
@@ -231,8 +234,8 @@ void vectorizeInto(const double* xyz, std::size_t n, const VectorizeParams& p, F
   if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
   const ReleaseKeptAbove release{n};
   o.reset();
-  const auto& pts = points<D>(xyz, n, p.maxMagnitude, o.badInput);
-  if (o.badInput) return;
+  const auto& pts = points<D>(xyz, n, p.maxMagnitude, o.badAt);
+  if (o.badAt != SIZE_MAX) return;
   o.stride = p.plane ? 4 : (D == 2 ? 3 : 6);
   auto finishLines = [&](bool ok, const auto& vz, const auto& segs) {
     o.ok = ok;

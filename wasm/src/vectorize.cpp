@@ -12,7 +12,7 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     if (dim != 2 && dim != 3) throw std::invalid_argument("vectorize: dim must be 2 or 3, got " + std::to_string(dim));
     if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
     const double* xyz = doubles(ptr);
-    checkPoints("vectorize", xyz, len, static_cast<std::size_t>(dim), 2, false, kMaxCoordinate, false);  // the numbers: while copying (vect_ops.h)
+    checkShape("vectorize", len, static_cast<std::size_t>(dim), 2);  // the numbers: while copying (vect_ops.h)
     rtl_ops::VectorizeParams p;
     p.method = static_cast<rtl_ops::Method>(method);
     p.dim = dim;
@@ -30,7 +30,7 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
     rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
     const double t0 = nowMs();
     const auto o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p, events) : rtl_ops::vectorize<3>(xyz, len / 3, p, events);
-    if (o.badInput) checkPoints("vectorize", xyz, len, static_cast<std::size_t>(dim), 2, false, kMaxCoordinate);  // throws
+    if (o.badAt < len) throwBadCoordinate("vectorize", xyz, o.badAt, static_cast<std::size_t>(dim));
     const double computeMs = nowMs() - t0;
     std::vector<double> polys;
     std::vector<std::uint32_t> polyOffsets{0};
