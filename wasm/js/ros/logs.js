@@ -397,6 +397,7 @@ async function openBag(src) {
 // the record (or, inside a chunk cut off, of the message record) it stopped at.
 const BAG_OP = { message: 2, header: 3, chunk: 5, connection: 7 };
 const BAG_HEADER_AT = 13;   // after the magic line
+const BAG_PARTIAL_MAX = 64 << 20;
 async function* bagRecords(src, decompress, rec) {
   const stopAt = (position, why) => Object.assign(new Error(`${why} at byte ${position} (file size ${src.size})`), { position });
   const view = (b) => new DataView(b.buffer, b.byteOffset, b.byteLength);
@@ -450,6 +451,9 @@ async function* bagRecords(src, decompress, rec) {
     } catch (e) {
       throw e.position !== undefined ? e : stopAt(at, `a corrupt record (${e.message})`);
     }
+    // a record running past the end is read (for an uncompressed chunk's complete messages) only up to 64 MB: a
+    // corrupt length must not pull the rest of a large file into memory
+    if (size > src.size - at && src.size - at > BAG_PARTIAL_MAX) throw stopAt(at, 'truncated: the file ends inside a record');
     const bytes = size <= head.byteLength ? head.subarray(0, size) : await src.read(at, Math.min(size, src.size - at));
     let r;
     try {
