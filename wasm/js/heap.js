@@ -1,5 +1,5 @@
 // Moving arrays in and out of one module instance's wasm memory: copies into malloc'ed blocks, the module's kept
-// input buffer, pointBuffer()'s zero-copy block, and the result blocks the bindings return.
+// input buffer and pointBuffer()'s zero-copy block (the result blocks the bindings return: schema.js).
 import { check, describe, dimOption } from './checks.js';
 
 /**
@@ -78,29 +78,8 @@ export function heapOf(m) {
   }
   const withInput = (fn, a, f) => withInputOf(fn, a.length, (heap, at) => heap.set(a, at), f, a);
 
-  // The results of a binding that returns a ResultBlock (wasm/src/adapter.h: one number, the block's address; when
-  // traced, {out: address, trace}): {scalars, arrays, trace}, each array copied out of wasm memory as types[i], or,
-  // with view (segment/vectorize { view: true }), the types[i] view on the block itself: no copy, valid until the
-  // next call that fills the block (segment, vectorize, simplify) or frees it (releaseBuffers), detached by memory
-  // growth. Read right after the call: the next call reuses the block. One ArrayBuffer per copied array:
-  // segment()'s labels and indices in one buffer (8 MB at 1M points) made its outside time 1 -> 23 ms (Node 20 on
-  // glibc: the one large allocation faulted its pages in on every call, the two of half the size reused freed ones).
-  function takeResults(r, types, view = false) {
-    const traced = typeof r === 'object';
-    const H = m.HEAPF64, buf = H.buffer;
-    let k = (traced ? r.out : r) / 8;
-    const S = H[k++], scalars = new Array(S);  // a plain array: H.slice() would allocate an ArrayBuffer per call
-    for (let i = 0; i < S; i++) scalars[i] = H[k++];
-    const A = H[k++], arrays = new Array(A);
-    for (let i = 0; i < A; i++, k += 2) {
-      const a = new types[i](buf, H[k], H[k + 1]);
-      arrays[i] = view ? a : a.slice();
-    }
-    return { scalars, arrays, trace: traced ? r.trace : undefined };
-  }
-
   // Frees the kept input buffer, vectorizers, segmenters and pointBuffer()'s block.
   const release = () => { m.releaseBuffers(); m.viewBlock(-1); viewAt = 0; };
 
-  return { withHeap, pointBuffer, withInputOf, withInput, takeResults, release };
+  return { withHeap, pointBuffer, withInputOf, withInput, release };
 }

@@ -5,17 +5,19 @@
 import { describe, isNumericView, options, toF64 } from './checks.js';
 
 /**
- * simplify() of one module instance: ctx = {m, withInputOf, setComputeMs, takeResults} (api.js; withInputOf writes
- * into the module's kept input buffer, setComputeMs records the library's own time of the call, takeResults copies
- * a binding's result block out).
+ * simplify() of one module instance: ctx = {m, withInputOf, setComputeMs, boundary} (api.js; withInputOf writes
+ * into the module's kept input buffer, setComputeMs records the library's own time of the call, boundary gives
+ * the call's options and results by name).
  */
-export function simplifyApi({ m, withInputOf, setComputeMs, takeResults }) {
+export function simplifyApi({ m, withInputOf, setComputeMs, boundary }) {
   const fn = 'simplify';
+  // The options and results of m.simplify by name, as wasm/src/simplify.cpp declares them (schema.js).
+  const call = boundary.call('simplify');
 
   function kept(len, dim, fill, tolerance, highQuality, src) {
-    const r = takeResults(withInputOf(fn, len, fill, (p) => m.simplify(p, len, dim, tolerance, highQuality), src), [Uint32Array]);
-    setComputeMs(r.scalars[0]);
-    return r.arrays[0];
+    const r = call.readResults(withInputOf(fn, len, fill, (p) => m.simplify(p, len, call.writeOptions({ dim, tolerance, highQuality })), src));
+    setComputeMs(r.scalars.computeMs);
+    return r.arrays.kept;
   }
 
   const pointError = (q, i, dim) => (q === null || typeof q !== 'object'

@@ -5,8 +5,6 @@ import { defaults } from './defaults.js';
 import { traceEvents } from './views.js';
 
 export const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
-// The array types of m.vectorize's ResultBlock, in the order of wasm/src/vectorize.cpp.
-const VECTORIZE_ARRAYS = [Float64Array, Float64Array, Uint32Array, Uint32Array, Float64Array, Float64Array, Uint32Array, Float64Array];
 
 // A corner of an FTLS polyline from the triple boundary, crossingDistance, delta at b[k]. At module level, not a
 // closure in vectorize(): the build's keepNames gives every named closure its name with Object.defineProperty, per call.
@@ -30,8 +28,10 @@ export function failureOf(t, k, n, sigma, split) {
   return f;
 }
 
-/** vectorize() of one module instance: ctx = {m, withInput, takeResults, setComputeMs} (api.js). */
-export function vectorizeApi({ m, withInput, takeResults, setComputeMs }) {
+/** vectorize() of one module instance: ctx = {m, withInput, boundary, setComputeMs} (api.js). */
+export function vectorizeApi({ m, withInput, boundary, setComputeMs }) {
+  // The options and results of m.vectorize by name, as wasm/src/vectorize.cpp declares them (schema.js).
+  const call = boundary.call('vectorize');
   /**
    * @template {import('./index.js').VectorizeMethod} M
    * @overload
@@ -78,7 +78,7 @@ export function vectorizeApi({ m, withInput, takeResults, setComputeMs }) {
     // strict behaviour (false: no result then, and `failure` says why).
     const split = boolOption(o, 'split', fn, d.split);
     const trace = boolOption(o, 'trace', fn, false);
-    const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (takeResults)
+    const view = boolOption(o, 'view', fn, false);  // the arrays as views on the module's result block (schema.js)
     if (trace && dim === 3 && (method === 'ftls' || method === 'aftls'))
       throw new RangeError(`${fn}: option trace is not available for method '${method}' in 3D (only itls, dp and rw trace in 3D)`);
     // distance (dp): to the chord's line (RTL's, default) or to the chord segment (simplify-js's).
@@ -88,15 +88,15 @@ export function vectorizeApi({ m, withInput, takeResults, setComputeMs }) {
     if (trace && segmentDistance) throw new RangeError(`${fn}: option trace is not available with distance 'segment'`);
     const xyz = toF64(points, fn, 'points');
     const n = xyz.length / dim;  // before the call: growth during it detaches a pointBuffer() view
-    const res = takeResults(withInput(fn, xyz, (p, n) => m.vectorize(p, n, dim, METHODS.indexOf(method),
-      primitive === 'plane', sigma, delta, epsilon, maxSize, simplexShift, maxIterations, split, trace, segmentDistance)),
-    VECTORIZE_ARRAYS, view);
-    const [ok, count, stride, computeMs, failed, ...failureTriple] = res.scalars;
-    const [segments, polygonPoints, polygonOffsets, indices, params, rms, polylineOffsets, breakTriples] = res.arrays;
+    const settings = { dim, method, plane: primitive === 'plane', sigma, delta, epsilon, maxSize, simplexShift,
+      maxIterations, split, trace, segmentDistance };
+    const res = call.readResults(withInput(fn, xyz, (p, n) => m.vectorize(p, n, call.writeOptions(settings))), view);
+    const { ok, count, stride, computeMs, failed, failureBoundary, failureCrossingDistance, failureDelta } = res.scalars;
+    const { segments, polygonPoints, polygonOffsets, indices, params, rms, polylineOffsets, breaks: breakTriples } = res.arrays;
     setComputeMs(computeMs);
     const breaks = [];
     for (let k = 0; k < breakTriples.length; k += 3) breaks.push(corner(breakTriples, k));
-    const failure = failed ? failureOf(failureTriple, 0, n, sigma, split) : null;
+    const failure = failed ? failureOf([failureBoundary, failureCrossingDistance, failureDelta], 0, n, sigma, split) : null;
     const polygons = [];
     const part = view ? (b, e) => polygonPoints.subarray(b, e) : (b, e) => polygonPoints.slice(b, e);
     for (let k = 0; k + 1 < polygonOffsets.length; k++) polygons.push(part(polygonOffsets[k], polygonOffsets[k + 1]));

@@ -2,7 +2,8 @@
 // JavaScript layer reads that declaration (boundarySchema()) instead of keeping its own list in step.
 //
 //  * Options: a struct with `template <class F> void fields(F& f)` that calls f("name", member) for each option in
-//    a fixed order (members: double, bool, an integer type, or double[N]). JS writes the values, looked up by name,
+//    a fixed order (members: double, bool, an integer type, or double[N]; an enumeration chosen by name with
+//    f("name", member, {"first", "second", ...}), written as the name's index). JS writes the values, looked up by name,
 //    into the module's options block (optionsBlock(): one double each, N for an array), and the binding decodes the
 //    block with readOptions<Options>(address). Unknown or missing names fail on the JS side before the call.
 //  * Results: a struct with `template <class F> void fields(F& f)` that calls f.scalar("name", double),
@@ -11,7 +12,7 @@
 //    (adapter.h) and the JS layer reads each by name, as the typed array its element type gives.
 //
 // A call registers both with registerCall<Options, Results>("name") inside its EMSCRIPTEN_BINDINGS block;
-// boundarySchema() returns every registered call as {name: {options: [[name, count]], scalars: [name],
+// boundarySchema() returns every registered call as {name: {options: [[name, count, choices?]], scalars: [name],
 // arrays: [[name, constructor]]}}. docs/wasm-boundary.md walks through adding a call.
 #pragma once
 
@@ -33,6 +34,7 @@ constexpr const char* typedArrayName() {
   else if constexpr (std::is_same_v<T, float>) return "Float32Array";
   else if constexpr (std::is_same_v<T, std::int32_t>) return "Int32Array";
   else if constexpr (std::is_same_v<T, std::uint32_t>) return "Uint32Array";
+  else if constexpr (std::is_same_v<T, std::size_t> && sizeof(std::size_t) == 4) return "Uint32Array";  // wasm32
   else if constexpr (std::is_same_v<T, std::uint8_t>) return "Uint8Array";
   else static_assert(sizeof(T) == 0, "no typed array for this element type");
 }
@@ -62,6 +64,11 @@ struct OptionReader {
       v = static_cast<T>(*at++);
     }
   }
+  // An enumeration chosen by name: JS writes the index of the name in `choices`.
+  template <class T, std::size_t N>
+  void operator()(const char*, T& v, const char* const (&)[N]) {
+    v = static_cast<T>(static_cast<int>(*at++));
+  }
 };
 
 // Lists the options as [name, count] pairs.
@@ -76,6 +83,13 @@ struct OptionLister {
     e.call<void>("push", emscripten::val(name));
     e.call<void>("push", emscripten::val(static_cast<double>(n)));
     list.call<void>("push", e);
+  }
+  template <class T, std::size_t N>
+  void operator()(const char* name, T& v, const char* const (&choices)[N]) {
+    (*this)(name, v);
+    emscripten::val names = emscripten::val::array();
+    for (const char* c : choices) names.call<void>("push", emscripten::val(c));
+    list[list["length"].as<unsigned>() - 1].call<void>("push", names);
   }
 };
 

@@ -1,70 +1,107 @@
 // vectorize(): the rtl/Vectorization.h vectorizers on an interleaved point array in the wasm heap (see vect_ops.h).
+// Its options and results cross by name (schema.h): VectorizeOptions and VectorizeResults are their one declaration.
 #include "adapter.h"
+#include "schema.h"
 #include "vect_ops.h"
 
 namespace rtl_wasm {
 namespace {
 
-val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool plane, double sigma, double delta,
-              double epsilon, double maxSize, double simplexShift, double maxIterations, bool split, bool trace,
-              bool segmentDistance) {
+// vectorize()'s options (wasm/js/vectorize.js writes them by these names after checking them; no defaults here:
+// it writes every field, its defaults in wasm/js/defaults.js).
+struct VectorizeOptions {
+  int dim = 0;
+  rtl_ops::Method method = rtl_ops::Method::FTLS;
+  bool plane = false;
+  double sigma = 0, delta = 0, epsilon = 0, maxSize = 0, simplexShift = 0, maxIterations = 0;
+  bool split = false, trace = false, segmentDistance = false;
+  template <class F>
+  void fields(F& f) {
+    f("dim", dim);
+    f("method", method, {"ftls", "aftls", "itls", "dp", "rw"});  // rtl_ops::Method's order
+    f("plane", plane);
+    f("sigma", sigma);
+    f("delta", delta);
+    f("epsilon", epsilon);
+    f("maxSize", maxSize);
+    f("simplexShift", simplexShift);
+    f("maxIterations", maxIterations);
+    f("split", split);
+    f("trace", trace);
+    f("segmentDistance", segmentDistance);
+  }
+};
+
+// vectorize()'s results (wasm/js/vectorize.js reads them by these names); vect_ops.h's VectorizeOutput says what
+// each is. Corners are flat triples boundary, crossingDistance, delta (breaks; failure* when failed).
+struct VectorizeResults {
+  double computeMs = 0;
+  rtl_ops::VectorizeOutput o;
+  std::vector<double> polygonPoints;
+  std::vector<std::uint32_t> polygonOffsets{0};
+  std::vector<double> breaks;
+  template <class F>
+  void fields(F& f) {
+    f.scalar("ok", o.ok);
+    f.scalar("count", static_cast<double>(o.count));
+    f.scalar("stride", o.stride);
+    f.scalar("computeMs", computeMs);
+    f.scalar("failed", o.failed);
+    f.scalar("failureBoundary", static_cast<double>(o.failure.boundary));
+    f.scalar("failureCrossingDistance", o.failure.crossingDistance);
+    f.scalar("failureDelta", o.failure.delta);
+    f.array("segments", o.segments);
+    f.array("polygonPoints", polygonPoints);
+    f.array("polygonOffsets", polygonOffsets);
+    f.array("indices", o.indices);
+    f.array("params", o.params);
+    f.array("rms", o.rms);
+    f.array("polylineOffsets", o.polylineOffsets);
+    f.array("breaks", breaks);
+  }
+};
+
+val vectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
   return guarded([&] {
+    const auto opt = readOptions<VectorizeOptions>(options);
+    const int dim = opt.dim;
     if (dim != 2 && dim != 3) throw std::invalid_argument("vectorize: dim must be 2 or 3, got " + std::to_string(dim));
+    const int method = static_cast<int>(opt.method);
     if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
     const double* xyz = doubles(ptr);
     checkShape("vectorize", len, static_cast<std::size_t>(dim), 2);  // the numbers: while copying (vect_ops.h)
     rtl_ops::VectorizeParams p;
-    p.method = static_cast<rtl_ops::Method>(method);
+    p.method = opt.method;
     p.dim = dim;
-    p.plane = plane;
-    p.sigma = sigma;
-    p.delta = delta;
-    p.epsilon = epsilon;
-    p.maxSize = static_cast<std::size_t>(maxSize);
-    p.simplexShift = static_cast<std::size_t>(simplexShift);
-    p.maxIterations = static_cast<std::size_t>(maxIterations);
-    p.split = split;
-    p.segmentDistance = segmentDistance;
+    p.plane = opt.plane;
+    p.sigma = opt.sigma;
+    p.delta = opt.delta;
+    p.epsilon = opt.epsilon;
+    p.maxSize = static_cast<std::size_t>(opt.maxSize);
+    p.simplexShift = static_cast<std::size_t>(opt.simplexShift);
+    p.maxIterations = static_cast<std::size_t>(opt.maxIterations);
+    p.split = opt.split;
+    p.segmentDistance = opt.segmentDistance;
     p.maxMagnitude = kMaxCoordinate;
     rtl_ops::FlatTrace flat;
-    rtl_ops::FlatTrace* events = trace ? &flat : nullptr;
+    rtl_ops::FlatTrace* events = opt.trace ? &flat : nullptr;
+    VectorizeResults r;
     const double t0 = nowMs();
-    const auto o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p, events) : rtl_ops::vectorize<3>(xyz, len / 3, p, events);
-    if (o.badAt < len) throwBadCoordinate("vectorize", xyz, o.badAt, static_cast<std::size_t>(dim));
-    const double computeMs = nowMs() - t0;
-    std::vector<double> polys;
-    std::vector<std::uint32_t> polyOffsets{0};
-    for (const auto& poly : o.polygons) {
-      polys.insert(polys.end(), poly.begin(), poly.end());
-      polyOffsets.push_back(static_cast<std::uint32_t>(polys.size()));
+    r.o = dim == 2 ? rtl_ops::vectorize<2>(xyz, len / 2, p, events) : rtl_ops::vectorize<3>(xyz, len / 3, p, events);
+    if (r.o.badAt < len) throwBadCoordinate("vectorize", xyz, r.o.badAt, static_cast<std::size_t>(dim));
+    r.computeMs = nowMs() - t0;
+    for (const auto& poly : r.o.polygons) {
+      r.polygonPoints.insert(r.polygonPoints.end(), poly.begin(), poly.end());
+      r.polygonOffsets.push_back(static_cast<std::uint32_t>(r.polygonPoints.size()));
     }
-    // Corners as flat triples boundary, crossingDistance, delta (breaks; failure when failed).
-    std::vector<double> breaks;
-    for (const auto& b : o.breaks) breaks.insert(breaks.end(), {static_cast<double>(b.boundary), b.crossingDistance, b.delta});
-    // The order of wasm/js/api.js's vectorize (VECTORIZE_ARRAYS).
-    const double out = results()
-                           .scalar(o.ok)
-                           .scalar(static_cast<double>(o.count))
-                           .scalar(o.stride)
-                           .scalar(computeMs)
-                           .scalar(o.failed)
-                           .scalar(static_cast<double>(o.failure.boundary))
-                           .scalar(o.failure.crossingDistance)
-                           .scalar(o.failure.delta)
-                           .array(o.segments)
-                           .array(polys)
-                           .array(polyOffsets)
-                           .array(o.indices)
-                           .array(o.params)
-                           .array(o.rms)
-                           .array(o.polylineOffsets)
-                           .array(breaks)
-                           .finish();
-    if (!trace) return val(out);
-    val r = val::object();  // traced: {out: the block's address, trace}
-    r.set("out", out);
-    r.set("trace", traceValue(flat));
-    return r;
+    for (const auto& b : r.o.breaks)
+      r.breaks.insert(r.breaks.end(), {static_cast<double>(b.boundary), b.crossingDistance, b.delta});
+    const double out = writeResults(results(), r);
+    if (!opt.trace) return val(out);
+    val t = val::object();  // traced: {out: the block's address, trace}
+    t.set("out", out);
+    t.set("trace", traceValue(flat));
+    return t;
   });
 }
 
@@ -73,6 +110,7 @@ val vectorize(std::uintptr_t ptr, std::size_t len, int dim, int method, bool pla
 
 EMSCRIPTEN_BINDINGS(rtl_vectorize) {
   emscripten::function("vectorize", &rtl_wasm::vectorize);
+  rtl_wasm::registerCall<rtl_wasm::VectorizeOptions, rtl_wasm::VectorizeResults>("vectorize");
   // The kept input buffer and objects (kept.h), shared by vectorize, segment and simplify.
   emscripten::function("inputBuffer", &rtl_wasm::inputBuffer);
   emscripten::function("viewBlock", &rtl_wasm::viewBlock);
