@@ -180,6 +180,20 @@ function segmentsOf(v, cluster, dim) {
 
 const crossing = (b) => ({ boundary: b.boundary, crossingDistance: round(b.crossingDistance), delta: round(b.delta) });
 
+// segmentAndVectorize() for a scan the CLI segments with CAR and vectorizes into lines, when the package has it;
+// undefined otherwise (the per-cluster calls then). Its vectorized clusters are `big` below, in the same order.
+function batched(rtl, opts, points, dim) {
+  if (opts.segmenter === 'ia' || !opts.method || opts.primitive !== 'line' || typeof rtl.segmentAndVectorize !== 'function') return undefined;
+  return rtl.segmentAndVectorize(points, {
+    dim, minPoints: opts.minPoints,
+    segment: { step: opts.step, lowerBound: opts.lower, upperBound: opts.upper },
+    vectorize: {
+      method: opts.method, sigma: opts.sigma, delta: opts.delta, epsilon: opts.epsilon, simplexShift: opts.simplexShift,
+      maxIterations: opts.maxIterations, ...(usesSplit(opts, dim) ? { split: !opts.strict } : {}),
+    },
+  });
+}
+
 function run(rtl, opts, input) {
   const { points, dim } = input;
   const returns = validIndices(points, dim);
@@ -199,11 +213,14 @@ function run(rtl, opts, input) {
     };
     return result;
   }
-  let groups;
+  let groups, batch;
   if (opts.segment) {
-    const seg = opts.segmenter === 'ia'
+    // CAR then lines on every cluster: one call for the whole scan (segmentAndVectorize), the same numbers as
+    // segment() and a vectorize() per cluster, which cost a crossing into the module per cluster.
+    batch = batched(rtl, opts, points, dim);
+    const seg = batch ?? (opts.segmenter === 'ia'
       ? streamSegment(rtl, points, dim, opts)
-      : need(rtl, 'segment', 'segmentation')(points, { dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper });
+      : need(rtl, 'segment', 'segmentation')(points, { dim, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper }));
     result.segmentation = {
       segmenter: opts.segmenter, step: opts.step, lowerBound: opts.lower, upperBound: opts.upper,
       ...(opts.segmenter === 'ia' ? { scaling: opts.scaling } : {}),
@@ -238,10 +255,10 @@ function run(rtl, opts, input) {
       ...(split ? { split: !opts.strict } : {}),
     };
     const out = [], failed = [], breaks = [];
-    for (const g of big) {
+    for (const [j, g] of big.entries()) {
       let v;
       try {
-        v = vectorize(gather(points, dim, g.idx), params);
+        v = batch ? rtl.vectorizedCluster(batch, j) : vectorize(gather(points, dim, g.idx), params);
       } catch (e) {
         if (/unknown option "split"/.test(e.message)) throw new MissingFeature(`--vectorize ${opts.method} needs vectorize()'s split option, which this build of rtl-wasm (${rtl.version}) does not have`);
         throw e;

@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 // Robot logs through the package in Node on one core (figures, not pass/fail):
-//   node bench/js/b_logs.mjs [--scans=10000] [--big-mb=1024] [--rounds=3]
+//   node bench/js/b_logs.mjs [--scans=10000] [--big-mb=1024] [--rounds=3] [--clock=cpu|wall]
 // 1. Throughput: MCAPs of N sensor_msgs/msg/LaserScan (360 beams: the first 360 of each CSAIL excerpt scan, cycled;
 //    ROS 2 CDR written by @mcap/core's McapWriter, 1 MB chunks) at chunk compression none, lz4, zstd, at N/10 and N
 //    scans, generated in a temp dir. Per round, in the same run and on the same file:
@@ -8,15 +8,17 @@
 //      read     openLog(...).scans(): raw + CDR decode + fromLaserScan
 //      segment  read + segment()
 //      pipeline read + segment() + vectorize(ftls) on each cluster of >= 3 points (the CLI's default pipeline)
+//      batched  read + segmentAndVectorize(ftls, minPoints 3): the same work in one call into the module per scan
+//               (what the CLI runs); its read share = read / batched, raw share = raw / batched
 //    Scans/s of each, and the shares of the pipeline's time: reading (read / pipeline; raw / pipeline for the MCAP
 //    reader alone) and segmenting ((segment - read) / pipeline); vectorizing is the rest. The cluster and segment totals are
 //    checked equal across compressions and rounds (the same work). Medians over the rounds.
 // 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of --log-scans (default N) scans each (zstd), -m ftls,
 //    --jobs 1 against --jobs K (K = the number of logs), wall time of the whole command (each worker's start, wasm
 //    instantiation included), and the speed-up (ideal: min(K, idle cores)). --throughput=0 skips section 1.
-// 2. Memory: a log of --big-mb MB (zstd) read and processed by the pipeline; RSS sampled every 1000 scans after the
+// 2. Memory: a log of --big-mb MB (chunks uncompressed) read and processed by the batched pipeline; RSS sampled every 1000 scans after the
 //    first 2000 (warm-up); growth = max - first sample. The file is deleted afterwards.
-import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { availableParallelism } from 'node:os';
 import { open } from 'node:fs/promises';
@@ -105,11 +107,19 @@ function pipelineScan(points, totals) {
   }
 }
 
-async function pipeline(path, onScan) {
+// The same work in one call into the module per scan (segmentAndVectorize: segment + every cluster's FTLS).
+const batchOptions = { minPoints: 3, vectorize: { method: 'ftls' } };
+function batchedScan(points, totals) {
+  const r = rtl.segmentAndVectorize(points, batchOptions);
+  totals.clusters += r.clusters.length;
+  totals.segments += r.segmentOffsets[r.vectorized.length];
+}
+
+async function pipeline(path, onScan, scan = pipelineScan) {
   const log = await openLog(path);
   const totals = { scans: 0, clusters: 0, segments: 0 };
   for await (const s of log.scans('/scan')) {
-    pipelineScan(s.points, totals);
+    scan(s.points, totals);
     totals.scans++;
     onScan?.(totals.scans);
   }
@@ -117,37 +127,76 @@ async function pipeline(path, onScan) {
   return totals;
 }
 
+// --clock=cpu (default): the process's CPU time (user + system, process.cpuUsage), i.e. the rate on one core of its
+// own, which a machine shared with other jobs does not distort as much as the wall clock (a load average of 12-17 on
+// 2 cores made the same wall-clock figure vary 3-8x between rounds). --clock=wall: elapsed time.
+const CLOCK = process.argv.find((a) => a.startsWith('--clock='))?.split('=')[1] ?? 'cpu';
+if (CLOCK !== 'cpu' && CLOCK !== 'wall') throw new Error(`--clock must be cpu or wall, got ${CLOCK}`);
+const now = CLOCK === 'wall' ? () => performance.now() : () => { const u = process.cpuUsage(); return (u.user + u.system) / 1000; };
 async function timed(f) {
-  const t = performance.now();
+  const t = now();
   const r = await f();
-  return { ms: performance.now() - t, ...r };
+  return { ms: now() - t, ...r };
 }
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 
-console.log(`# b_logs: Node ${process.version}, one thread; LaserScan 360 beams; ${ROUNDS} rounds, medians`);
-console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  clusters  segments');
+console.log(`# b_logs: Node ${process.version}, one thread; LaserScan 360 beams; ${ROUNDS} rounds, medians; ${CLOCK} time`);
+console.log('scans   compression  file MB  raw scans/s  read scans/s  segment scans/s  pipeline scans/s  read share  raw share  segment share  batched scans/s  batched read share  batched raw share  clusters  segments');
 let reference;
 for (const count of THROUGHPUT ? [Math.round(N / 10), N] : []) {
   for (const compression of ['none', 'lz4', 'zstd']) {
     const path = join(dir, `scans-${count}-${compression}.mcap`);
     await writeLog(path, count, compression);
-    const rs = [], rd = [], sg = [], pl = [];
+    const rs = [], rd = [], sg = [], pl = [], bt = [];
     let totals;
     for (let r = 0; r < ROUNDS; r++) {
       const a = await timed(() => raw(path)), b = await timed(() => read(path)), d = await timed(() => segmentOnly(path));
       const c = await timed(() => pipeline(path));
-      if (a.scans !== count || b.scans !== count || c.scans !== count || d.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${d.scans}/${c.scans} != ${count}`);
+      const e = await timed(() => pipeline(path, undefined, batchedScan));
+      if (a.scans !== count || b.scans !== count || c.scans !== count || d.scans !== count || e.scans !== count) throw new Error(`scan counts ${a.scans}/${b.scans}/${d.scans}/${c.scans}/${e.scans} != ${count}`);
       if (totals && (totals.clusters !== c.clusters || totals.segments !== c.segments)) throw new Error('pipeline totals differ between rounds');
+      if (e.clusters !== c.clusters || e.segments !== c.segments) throw new Error(`batched totals ${e.clusters}/${e.segments} differ from per-cluster ${c.clusters}/${c.segments}`);
       totals = c;
-      rs.push(a.ms); rd.push(b.ms); sg.push(d.ms); pl.push(c.ms);
+      rs.push(a.ms); rd.push(b.ms); sg.push(d.ms); pl.push(c.ms); bt.push(e.ms);
     }
     if (count === N) {
       if (reference && (reference.clusters !== totals.clusters || reference.segments !== totals.segments)) throw new Error('pipeline totals differ between compressions');
       reference = totals;
     }
     const perS = (ms) => Math.round(count / (ms / 1000));
-    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(sg))).padStart(15)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${((median(sg) - median(rd)) / median(pl) * 100).toFixed(0).padStart(11)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
+    console.log(`${String(count).padEnd(8)}${compression.padEnd(13)}${(statSync(path).size / 1e6).toFixed(1).padStart(7)}  ${String(perS(median(rs))).padStart(11)}  ${String(perS(median(rd))).padStart(12)}  ${String(perS(median(sg))).padStart(15)}  ${String(perS(median(pl))).padStart(16)}  ${(median(rd) / median(pl) * 100).toFixed(0).padStart(9)} %  ${(median(rs) / median(pl) * 100).toFixed(0).padStart(7)} %  ${((median(sg) - median(rd)) / median(pl) * 100).toFixed(0).padStart(11)} %  ${String(perS(median(bt))).padStart(15)}  ${(median(rd) / median(bt) * 100).toFixed(0).padStart(16)} %  ${(median(rs) / median(bt) * 100).toFixed(0).padStart(15)} %  ${String(totals.clusters).padStart(8)}  ${String(totals.segments).padStart(8)}`);
     rmSync(path);
+  }
+}
+
+// The C++ floor of the compute: pipeline_native (tests/tools/pipeline_native.cpp: the same pipeline_ops.h code,
+// natively, CPU time) on the same 30 scans cycled N times; totals checked equal to the batched pipeline's. Built by
+// `cmake --build build/native --target pipeline_native`; skipped (with a note) when absent.
+if (THROUGHPUT && reference) {
+  const tool = fileURLToPath(new URL('../../build/native/tools/pipeline_native', import.meta.url));
+  if (!existsSync(tool)) {
+    console.log(`# native: ${tool} not built (cmake --build build/native --target pipeline_native); skipped`);
+  } else {
+    const file = join(dir, 'scans.f64');
+    const pts = new Float64Array(csail.length * 720);
+    // the 30 scans exactly as the pipeline gets them from the MCAP (fromLaserScan of the float32 ranges)
+    const mcap = join(dir, 'native.mcap');
+    await writeLog(mcap, csail.length, 'none');
+    const log = await openLog(mcap);
+    let k = 0;
+    for await (const sc of log.scans('/scan')) pts.set(sc.points, 720 * k++);
+    await log.close();
+    writeFileSync(file, pts);
+    const times = [];
+    let res;
+    for (let r = 0; r < ROUNDS; r++) {
+      res = JSON.parse(execFileSync(tool, [file, '360', '2', String(N)], { encoding: 'utf8' }));
+      times.push(res.seconds);
+    }
+    if (res.clusters !== reference.clusters || res.segments !== reference.segments)
+      throw new Error(`native totals ${res.clusters}/${res.segments} differ from the package's ${reference.clusters}/${reference.segments}`);
+    console.log(`# native (g++ -O3, CPU time): segment + FTLS per cluster on ${N} scans: ${Math.round(N / median(times))} scans/s ` +
+                `(${(median(times) / N * 1e6).toFixed(1)} us a scan), the same ${res.clusters} clusters and ${res.segments} segments`);
   }
 }
 
@@ -165,7 +214,7 @@ if (BIG_MB > 0) {
     const rss = process.memoryUsage().rss;
     base ??= rss;
     peak = Math.max(peak, rss);
-  }));
+  }, batchedScan));
   rmSync(path);
   console.log(`# memory: pipeline over the whole log at ${Math.round(count / (t.ms / 1000))} scans/s; RSS after warm-up ${(base / 1e6).toFixed(0)} MB, ` +
               `peak ${(peak / 1e6).toFixed(0)} MB, growth ${((peak - base) / 1e6).toFixed(1)} MB (goal < 50 MB)`);

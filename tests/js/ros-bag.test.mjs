@@ -81,11 +81,68 @@ test('openLog (ROS 1 bag): a Blob reads the same as the path', async () => {
   assert.equal(scans.length, 30);
 });
 
-test('openLog (ROS 1 bag): a truncated bag (its index lost) is a LogError naming the file', async () => {
+// Where each /base_scan message of a whole bag becomes readable when the file is cut: the end of its message record
+// in an uncompressed chunk, the end of its chunk record in a compressed one (from the bag's own index, read by
+// @foxglove/rosbag's Bag).
+async function messageEnds(bytes) {
+  const bag = new Bag({ read: async (o, n) => bytes.subarray(o, o + n), size: () => bytes.length });
+  await bag.open();
+  const conn = [...bag.connections.values()].find((c) => c.topic === '/base_scan').conn;
+  const { loadDecompressHandlers } = await import('@mcap/support');
+  const h = await loadDecompressHandlers();
+  const decompress = { lz4: (b, n) => h.lz4(b, BigInt(n)), bz2: (b, n) => h.bz2(b, BigInt(n)) };
+  const ends = [];
+  for (const info of [...bag.chunkInfos].sort((a, b) => a.chunkPosition - b.chunkPosition)) {
+    const { chunk, indices } = await bag.reader.readChunk(info, decompress);
+    for (const { offset } of indices.find((x) => x.conn === conn)?.indices ?? []) {
+      const view = new DataView(chunk.data.buffer, chunk.data.byteOffset + offset);
+      const header = view.getUint32(0, true), length = 8 + header + view.getUint32(4 + header, true);
+      ends.push(chunk.compression === 'none' ? chunk.dataOffset + offset + length : chunk.end);
+    }
+  }
+  return ends;
+}
+
+for (const compression of ['none', 'lz4', 'bz2']) {
+  test(`openLog (ROS 1 bag, ${compression}): a bag cut at several offsets delivers every complete scan, then a TRUNCATED LogError naming the file, message and byte`, async () => {
+    const bytes = new Uint8Array(readFileSync(join(DATA, 'ros1', `intel-${compression}.bag`)));
+    const ends = await messageEnds(bytes);
+    assert.equal(ends.length, 30);
+    // through the chunks (mid-chunk, at a chunk's end) and into the index at the end of the file
+    const cuts = [0.3, 0.45, 0.6, 0.75, 0.9, 0.99].map((f) => Math.floor(bytes.length * f));
+    cuts.push(ends[15], ends[15] - 1, bytes.length - 1);
+    let partial = 0;
+    for (const cut of cuts) {
+      const path = join(dir, `cut-${compression}-${cut}.bag`);
+      writeFileSync(path, bytes.subarray(0, cut));
+      const expected = ends.filter((e) => e <= cut).length;
+      if (expected > 0 && expected < 30) partial++;
+      const log = await openLog(path);
+      try {
+        assert.ok(log.unindexed, `cut at ${cut}: read front to back`);
+        assert.equal(log.topics.find((t) => t.name === '/base_scan').count, expected, `cut at ${cut}: count`);
+        const { scans, error } = await collect(log.scans('/base_scan'));
+        assert.equal(scans.length, expected, `cut at ${cut}: scans`);
+        scans.forEach((s, i) => { assert.equal(s.index, i); assertScanEquals(s, intel[i], `cut at ${cut}: scan ${i}`); });
+        assert.ok(error instanceof LogError && error.code === 'TRUNCATED', `cut at ${cut}: ${error}`);
+        assert.equal(error.index, expected);
+        assert.equal(error.file, path);
+        assert.ok(error.position >= 13 && error.position <= cut, `cut at ${cut}: position ${error.position}`);
+        for (const part of [path, '/base_scan', `message ${expected}`, `byte ${error.position}`])
+          assert.ok(error.message.includes(part), `cut at ${cut}: "${part}" in ${error.message}`);
+      } finally {
+        await log.close();
+      }
+    }
+    assert.ok(partial >= 4, `${partial} cuts left part of the scans`);
+  });
+}
+
+test('openLog (ROS 1 bag): a bag cut inside its header record is a TRUNCATED LogError naming the file', async () => {
   const bytes = readFileSync(join(DATA, 'ros1', 'intel-none.bag'));
-  const path = join(dir, 'cut.bag');
-  writeFileSync(path, bytes.subarray(0, Math.floor(bytes.length * 0.7)));
-  await assert.rejects(openLog(path), (e) => e instanceof LogError && ['TRUNCATED', 'FORMAT'].includes(e.code) && e.message.includes(path));
+  const path = join(dir, 'cut-header.bag');
+  writeFileSync(path, bytes.subarray(0, 2000));
+  await assert.rejects(openLog(path), (e) => e instanceof LogError && e.code === 'TRUNCATED' && e.message.includes(path) && e.message.includes('byte 13'));
 });
 
 for (const compression of ['lz4', 'bz2']) {

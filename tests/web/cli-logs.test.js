@@ -119,6 +119,21 @@ describe('rtl CLI on logs (.mcap)', { timeout: 180000 }, () => {
     assert.match(r.err, new RegExp(`the output holds the ${got.length} scans before it`));
   });
 
+  test('a truncated ROS 1 bag (its index lost): the lines of every complete scan, equal to the whole bag\'s, then exit 1 naming file, message and byte', () => {
+    const whole = rtl([join(DATA, 'ros1', 'intel-none.bag'), '--topic', '/base_scan', '-m', 'ftls']);
+    assert.equal(whole.code, 0, whole.err);
+    const bytes = readFileSync(join(DATA, 'ros1', 'intel-none.bag'));
+    const cut = join(tmp, 'cut.bag');
+    writeFileSync(cut, bytes.subarray(0, Math.floor(bytes.length * 0.5)));
+    const r = rtl([cut, '--topic', '/base_scan', '-m', 'ftls']);
+    assert.equal(r.code, 1, r.err);
+    const got = r.out.split('\n').filter(Boolean), all = whole.out.split('\n').filter(Boolean);
+    assert.ok(got.length > 5 && got.length < 30, `${got.length} lines`);
+    got.forEach((l, i) => assert.equal(l.replaceAll(cut, 'F'), all[i].replaceAll(join(DATA, 'ros1', 'intel-none.bag'), 'F'), `scan ${i}`));
+    assert.ok(r.err.includes(cut) && r.err.includes('/base_scan') && r.err.includes(`message ${got.length}`) && /truncated: .* at byte \d+/.test(r.err), r.err);
+    assert.match(r.err, new RegExp(`the output holds the ${got.length} scans before it`));
+  });
+
   test('several logs with --jobs 2: every scan of each, each line naming its log; --progress draws a bar', () => {
     const r = rtl([single, robot, '--topic', '/scan', '--jobs', '2']);
     assert.equal(r.code, 0, r.err);

@@ -9,6 +9,7 @@ import { boundaryOf } from './schema.js';
 import { fitLineApi } from './fitline.js';
 import { segmentApi } from './segment.js';
 import { vectorizeApi } from './vectorize.js';
+import { pipelineApi } from './pipeline.js';
 import { streamApi } from './stream.js';
 import { tfTreeApi } from './tftree.js';
 import { drawingApi } from './draw.js';
@@ -48,6 +49,7 @@ function wrap(m) {
     ...fitLineApi(ctx),
     ...segmentApi(ctx),
     ...vectorizeApi(ctx),
+    ...pipelineApi(ctx),
     ...streamApi(ctx),
     ...tfTreeApi(ctx),
     ...drawingApi(ctx),

@@ -143,6 +143,60 @@ export interface VectorizeOptions {
    *  with trace too. See RTL.pointBuffer for how long such views are valid. */
   view?: boolean;
 }
+// ---------------------------------------------------------------------------------------------- segment + vectorize
+/** segmentAndVectorize(): segment() and vectorize() on each cluster, in one call into the module. */
+export interface SegmentAndVectorizeOptions {
+  dim?: Dim;                   // default 2
+  /** clusters of fewer points are not vectorized; integer >= 2; default 3 */
+  minPoints?: number;
+  /** segment()'s options (trace and view are not available here) */
+  segment?: Pick<SegmentOptions, 'step' | 'lowerBound' | 'upperBound' | 'origin'>;
+  /** vectorize()'s options for every cluster: lines only (no primitive 'plane'), no trace or view */
+  vectorize: Pick<VectorizeOptions, 'method' | 'sigma' | 'delta' | 'epsilon' | 'maxSize' | 'simplexShift' |
+    'maxIterations' | 'split' | 'distance'>;
+}
+/** A vectorized cluster's failure (strict ftls/aftls): vectorize()'s failure on that cluster, message included. */
+export interface SegmentAndVectorizeFailure extends VectorizeFailure {
+  /** which vectorized cluster (j: cluster number vectorized[j]) */
+  vectorized: number;
+}
+/**
+ * segment()'s labels and clusters, then every vectorized cluster's vectorize() result back to back. V = the number of
+ * vectorized clusters (those of at least minPoints points, in cluster order); cluster number vectorized[j]'s result
+ * is sliced from the flat arrays by the offsets (each of V + 1 entries, the first 0); vectorizedCluster(r, j) gives it
+ * in vectorize()'s shape. Every number equals segment() followed by vectorize() on each cluster's points exactly.
+ */
+export interface SegmentAndVectorizeResult extends SegmentResult {
+  method: VectorizeMethod;
+  dim: Dim;
+  /** numbers per segment in params: 3 (2D line a, b, c) or 6 (3D point, direction) */
+  stride: number;
+  /** V: the cluster number of each vectorized cluster, ascending */
+  vectorized: Uint32Array;
+  /** V: vectorize()'s ok of each (1 or 0) */
+  ok: Uint8Array;
+  /** V + 1: vectorized cluster j has segments segmentOffsets[j] .. segmentOffsets[j + 1] - 1 */
+  segmentOffsets: Uint32Array;
+  /** 2 * dim numbers a segment (begin, end points) */
+  segments: Float64Array;
+  /** 2 numbers a segment: its half-open range of chain indices within its cluster (as vectorize()'s indices;
+   *  chain index i is point clusters[vectorized[j]].indices[i]) */
+  indices: Uint32Array;
+  /** stride numbers a segment (as vectorize()'s params) */
+  params: Float64Array;
+  /** 1 number a segment (as vectorize()'s rms) */
+  rms: Float64Array;
+  /** V + 1: cluster j's polylineOffsets (vectorize()'s, cluster-local segment numbers) are
+   *  polylineOffsets[polylineParts[j]] .. polylineOffsets[polylineParts[j + 1] - 1] */
+  polylineParts: Uint32Array;
+  polylineOffsets: Uint32Array;
+  /** V + 1, counted in corners: cluster j's breaks are corners breakOffsets[j] .. breakOffsets[j + 1] - 1 */
+  breakOffsets: Uint32Array;
+  /** 3 numbers a corner: boundary, crossingDistance, delta (as vectorize()'s breaks) */
+  breaks: Float64Array;
+  /** the vectorized clusters whose vectorize() failed (strict ftls/aftls), in order; usually empty */
+  failures: SegmentAndVectorizeFailure[];
+}
 /** A point of simplify-js's kind: {x, y}, or {x, y, z} for 3D. Other properties are kept (the objects are returned). */
 export interface SimplifyPoint {
   x: number;
@@ -675,6 +729,15 @@ export interface RTL {
   vectorize<M extends VectorizeMethod>(points: PointArray, options: VectorizeOptions & { method: M; trace: true }):
     VectorizeResult & { trace: VectorizeEventByMethod[M][] };
   vectorize(points: PointArray, options: VectorizeOptions): VectorizeResult;
+  /** segment() and then vectorize() on every cluster of at least minPoints points, in ONE call into the module (a
+   *  scan of 360 beams has ~20 clusters: one call instead of ~21). Same numbers as those calls, laid out flat with
+   *  offsets (SegmentAndVectorizeResult). Coordinates: NaN is a gap, every other within +-1e18 (RangeError). Errors:
+   *  TypeError/RangeError starting "segmentAndVectorize:". The module's memory does not grow across repeated calls
+   *  of one size. */
+  segmentAndVectorize(points: PointArray, options: SegmentAndVectorizeOptions): SegmentAndVectorizeResult;
+  /** vectorized cluster j (0 <= j < r.vectorized.length) of a segmentAndVectorize() result in vectorize()'s shape,
+   *  its arrays views on r's (TypeError/RangeError starting "vectorizedCluster:") */
+  vectorizedCluster(r: SegmentAndVectorizeResult, j: number): VectorizeResult;
   toTikz(drawing: Drawing | Drawing3D, options?: TikzOptions): string;
   /** a LaTeX table (rtl::LaTeXTable: table/center/tabular, cells joined by " & "); rows are arrays of cells
    *  (numbers written with String()), a null row is a \hline */

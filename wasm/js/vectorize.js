@@ -4,13 +4,28 @@ import { MAX_MEMORY, boolOption, describe, dimOption, num, options, toF64 } from
 import { defaults } from './defaults.js';
 import { traceEvents } from './views.js';
 
-const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
+export const METHODS = ['ftls', 'aftls', 'itls', 'dp', 'rw'];
 
 // A corner of an FTLS polyline from the triple boundary, crossingDistance, delta at b[k]. At module level, not a
 // closure in vectorize(): the build's keepNames gives every named closure its name with Object.defineProperty, per call.
 /** @returns {import('./index.js').CornerReport} */
-function corner(b, k) {
+export function corner(b, k) {
   return { boundary: b[k], crossingDistance: b[k + 1], delta: b[k + 2] };
+}
+
+/** The failure of a strict FTLS/AFTLS run on n points from the triple at t[k], with vectorize()'s message (also
+ *  segmentAndVectorize()'s per cluster: the same text for the same cluster).
+ *  @returns {import('./index.js').VectorizeFailure} */
+export function failureOf(t, k, n, sigma, split) {
+  const fn = 'vectorize';
+  const f = /** @type {import('./index.js').VectorizeFailure} */ (corner(t, k));  // message added below
+  f.message = f.boundary === 0
+    ? `${fn}: no partition of the ${n} points into ranges within sigma ${sigma} exists`
+    : `${fn}: no polyline within sigma ${sigma} meets delta ${f.delta} at chain index ${f.boundary}: the lines of the ` +
+      `ranges before and after it ${Number.isFinite(f.crossingDistance)
+        ? `cross ${Number(f.crossingDistance.toPrecision(4))} from the middle of points ${f.boundary - 1} and ${f.boundary}`
+        : 'do not cross'}${split ? '' : ' (raise delta, or use split: true to break the polyline there)'}`;
+  return f;
 }
 
 /** vectorize() of one module instance: ctx = {m, withInput, boundary, setComputeMs} (api.js). */
@@ -81,17 +96,7 @@ export function vectorizeApi({ m, withInput, boundary, setComputeMs }) {
     setComputeMs(computeMs);
     const breaks = [];
     for (let k = 0; k < breakTriples.length; k += 3) breaks.push(corner(breakTriples, k));
-    let failure = null;
-    if (failed) {
-      const f = /** @type {import('./index.js').VectorizeFailure} */ (corner([failureBoundary, failureCrossingDistance, failureDelta], 0));  // message added below
-      f.message = f.boundary === 0
-        ? `${fn}: no partition of the ${n} points into ranges within sigma ${sigma} exists`
-        : `${fn}: no polyline within sigma ${sigma} meets delta ${f.delta} at chain index ${f.boundary}: the lines of the ` +
-          `ranges before and after it ${Number.isFinite(f.crossingDistance)
-            ? `cross ${Number(f.crossingDistance.toPrecision(4))} from the middle of points ${f.boundary - 1} and ${f.boundary}`
-            : 'do not cross'}${split ? '' : ' (raise delta, or use split: true to break the polyline there)'}`;
-      failure = f;
-    }
+    const failure = failed ? failureOf([failureBoundary, failureCrossingDistance, failureDelta], 0, n, sigma, split) : null;
     const polygons = [];
     const part = view ? (b, e) => polygonPoints.subarray(b, e) : (b, e) => polygonPoints.slice(b, e);
     for (let k = 0; k + 1 < polygonOffsets.length; k++) polygons.push(part(polygonOffsets[k], polygonOffsets[k + 1]));

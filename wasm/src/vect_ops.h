@@ -60,6 +60,23 @@ struct VectorizeOutput {
   bool failed = false;                        // strict mode: `failure` is the corner that cannot be met
   Corner failure;
   std::size_t badAt = SIZE_MAX;               // the first coordinate beyond VectorizeParams::maxMagnitude or NaN
+
+  // As a new output, keeping the arrays' capacity.
+  void reset() {
+    ok = false;
+    count = 0;
+    segments.clear();
+    polygons.clear();
+    indices.clear();
+    params.clear();
+    stride = 0;
+    rms.clear();
+    polylineOffsets.clear();
+    breaks.clear();
+    failed = false;
+    failure = Corner{};
+    badAt = SIZE_MAX;
+  }
 };
 
 namespace detail {
@@ -208,15 +225,17 @@ void observed(FlatTrace* trace, Run&& run) {
 }
 
 // trace: nullptr for the untraced vectorizers; otherwise their steps are appended to it (2D FTLS/AFTLS, ITLS, DP
-// and RW; the 3D fast vectorizers report no steps: the caller rejects a trace for them).
+// and RW; the 3D fast vectorizers report no steps: the caller rejects a trace for them). `o` is reset first and
+// keeps its arrays' capacity: a caller vectorizing many small chains (segmentAndVectorize, pipeline_ops.h) reuses
+// one output instead of allocating ~15 growing vectors per chain.
 template <int D>
-VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace = nullptr) {
+void vectorizeInto(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace, VectorizeOutput& o) {
   using namespace detail;
   if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
   const ReleaseKeptAbove release{n};
-  VectorizeOutput o;
+  o.reset();
   const auto& pts = points<D>(xyz, n, p.maxMagnitude, o.badAt);
-  if (o.badAt != SIZE_MAX) return o;
+  if (o.badAt != SIZE_MAX) return;
   o.stride = p.plane ? 4 : (D == 2 ? 3 : 6);
   auto finishLines = [&](bool ok, const auto& vz, const auto& segs) {
     o.ok = ok;
@@ -260,7 +279,7 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
     if (n >= 2) keptRanges<D>(o, pts, keys);
     o.count = segs.size();
     onePolyline();
-    return o;
+    return;
   }
 
   if constexpr (D == 2) {
@@ -353,6 +372,12 @@ VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParam
     }
     onePolyline();
   }
+}
+
+template <int D>
+VectorizeOutput vectorize(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace = nullptr) {
+  VectorizeOutput o;
+  vectorizeInto<D>(xyz, n, p, trace, o);
   return o;
 }
 

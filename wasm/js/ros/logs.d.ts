@@ -12,6 +12,8 @@ export class LogError extends Error {
   readonly file: string;
   readonly topic?: string;
   readonly index?: number;
+  /** TRUNCATED / CORRUPT in a log read front to back (unindexed): the byte offset of the record it stopped at */
+  readonly position?: number;
 }
 export interface LogTopic {
   name: string;
@@ -39,7 +41,8 @@ export interface Log extends AsyncDisposable {
   format: 'mcap' | 'bag';
   file: string;
   topics: LogTopic[];
-  /** set when an MCAP has no usable index (e.g. a cut-off recording) and is read front to back */
+  /** set when a log has no usable index (e.g. a cut-off recording) and is read front to back: topics count the
+   *  complete messages; scans() delivers them (a bag's in file order), then the LogError of where the file stops */
   unindexed?: { reason: string; stoppedBy?: string };
   /** Scans of a LaserScan or PointCloud2 topic in log-time order. Throws at once: TypeError/RangeError ("scans: ")
    *  for bad arguments, LogError UNKNOWN_TOPIC / WRONG_TYPE. */

@@ -165,8 +165,10 @@ async function* adapt(file, topic, kind, messages, decode) {
     } catch (e) {
       if (e instanceof LogError) throw e;
       const truncated = /truncat|end of (file|data)|past end|not enough|too short/i.test(e.message);
-      throw new LogError(truncated ? 'TRUNCATED' : 'CORRUPT', `scans: ${file}: topic ${topic}: message ${index}: ${e.message}`,
-                         { file, topic, index, cause: e });
+      const err = new LogError(truncated ? 'TRUNCATED' : 'CORRUPT', `scans: ${file}: topic ${topic}: message ${index}: ${e.message}`,
+                               { file, topic, index, cause: e });
+      if (typeof e.position === 'number') err.position = e.position;   // the byte offset a stream reader stopped at
+      throw err;
     }
     if (next.done) return;
     const { logTime } = next.value;
@@ -356,7 +358,8 @@ async function openBag(src) {
   try {
     await bag.open();
   } catch (e) {
-    throw new LogError(/past end/.test(e.message) ? 'TRUNCATED' : 'FORMAT', `openLog: ${file}: unreadable ROS bag (${e.message})`, { file, cause: e });
+    // No usable index (typically a recording cut off before its index was written): read it record by record.
+    return openBagStream(src, decompress, e);
   }
   const counts = new Map();
   for (const info of bag.chunkInfos) for (const { conn, count } of info.connections) counts.set(conn, (counts.get(conn) ?? 0) + count);
@@ -380,6 +383,169 @@ async function openBag(src) {
         }
       }
       return adapt(file, topic, kind, messages(), (ev) => ev.message);
+    },
+    close: () => src.close(),
+  };
+  log[Symbol.asyncDispose] = log.close;
+  return log;
+}
+
+// The records of a bag front to back with @foxglove/rosbag's record classes, one record in memory at a time (a
+// chunk decompressed whole): { conn, time, data } of every message and { connection } of every connection record, in
+// file order. Throws at a truncation or a record that does not parse, after yielding every complete one before it
+// (an uncompressed chunk cut off yields its complete messages too); the error's `position` is the byte offset of
+// the record (or, inside a chunk cut off, of the message record) it stopped at.
+const BAG_OP = { message: 2, header: 3, chunk: 5, connection: 7 };
+const BAG_HEADER_AT = 13;   // after the magic line
+const BAG_PARTIAL_MAX = 64 << 20;
+async function* bagRecords(src, decompress, rec) {
+  const stopAt = (position, why) => Object.assign(new Error(`${why} at byte ${position} (file size ${src.size})`), { position });
+  const view = (b) => new DataView(b.buffer, b.byteOffset, b.byteLength);
+  // One record at byte `at` of `bytes` (whole, or `complete` false: it runs past the end): its op, fields and data.
+  const parse = (bytes, at) => {
+    if (at + 4 > bytes.byteLength) return { complete: false };
+    const headerLength = view(bytes).getUint32(at, true);
+    if (at + 8 + headerLength > bytes.byteLength) return { complete: false };
+    const fields = rec.extractFields(bytes.subarray(at + 4, at + 4 + headerLength));
+    const dataLength = view(bytes).getUint32(at + 4 + headerLength, true);
+    const end = at + 8 + headerLength + dataLength;
+    if (end > bytes.byteLength) return { complete: false };
+    if (fields.op === undefined || fields.op.byteLength !== 1) throw new Error('a record without its op field');
+    return { complete: true, op: fields.op[0], fields, data: bytes.subarray(at + 8 + headerLength, end), end };
+  };
+  const inner = function* (bytes, base, partial) {
+    for (let at = 0; at < bytes.byteLength;) {
+      let r;
+      try {
+        r = parse(bytes, at);
+      } catch (e) {
+        throw stopAt(base + at, `a corrupt record inside a chunk (${e.message})`);
+      }
+      if (!r.complete) {
+        if (partial) throw stopAt(base + at, 'truncated: the file ends inside a message record');
+        throw stopAt(base + at, 'a chunk\'s records overrun its data');
+      }
+      if (r.op === BAG_OP.connection) {
+        const c = new rec.Connection(r.fields);
+        c.parseData(r.data);
+        yield { connection: c };
+      } else if (r.op === BAG_OP.message) {
+        const m = new rec.MessageData(r.fields);
+        yield { conn: m.conn, time: m.time, data: r.data };
+      }
+      at = r.end;
+    }
+  };
+  const HEAD = 4096;
+  let indexAt = 0;   // the bag header's index_pos: the file must reach it (a recording cut off ends before)
+  for (let at = BAG_HEADER_AT; at < src.size;) {
+    // the record's lengths first, then the whole record
+    const head = await src.read(at, Math.min(HEAD, src.size - at));
+    let size;
+    try {
+      if (head.byteLength < 4) throw stopAt(at, 'truncated: the file ends inside a record');
+      const headerLength = view(head).getUint32(0, true);
+      if (8 + headerLength > src.size - at) throw stopAt(at, 'truncated: the file ends inside a record');
+      const h = 8 + headerLength <= head.byteLength ? head : await src.read(at, 8 + headerLength);
+      size = 8 + headerLength + view(h).getUint32(4 + headerLength, true);
+    } catch (e) {
+      throw e.position !== undefined ? e : stopAt(at, `a corrupt record (${e.message})`);
+    }
+    // a record running past the end is read (for an uncompressed chunk's complete messages) only up to 64 MB: a
+    // corrupt length must not pull the rest of a large file into memory
+    if (size > src.size - at && src.size - at > BAG_PARTIAL_MAX) throw stopAt(at, 'truncated: the file ends inside a record');
+    const bytes = size <= head.byteLength ? head.subarray(0, size) : await src.read(at, Math.min(size, src.size - at));
+    let r;
+    try {
+      r = parse(bytes, 0);
+    } catch (e) {
+      throw stopAt(at, `a corrupt record (${e.message})`);
+    }
+    if (!r.complete) {
+      // a chunk cut off: its complete messages are still readable when it is not compressed (its header is whole:
+      // checked above)
+      const headerLength = view(bytes).getUint32(0, true);
+      const fields = rec.extractFields(bytes.subarray(4, 4 + headerLength));
+      if (fields.op?.[0] === BAG_OP.chunk && new rec.Chunk(fields).compression === 'none')
+        yield* inner(bytes.subarray(8 + headerLength), at + 8 + headerLength, true);
+      throw stopAt(at, 'truncated: the file ends inside a record');
+    }
+    if (r.op === BAG_OP.header) {
+      indexAt = Number(new rec.BagHeader(r.fields).indexPosition);
+    } else if (r.op === BAG_OP.chunk) {
+      const chunk = new rec.Chunk(r.fields);
+      let data = r.data;
+      try {
+        if (chunk.compression !== 'none') {
+          const d = decompress[chunk.compression];
+          if (d === undefined) throw new Error(`unsupported chunk compression ${chunk.compression}`);
+          data = d(data, chunk.size);
+        }
+      } catch (e) {
+        throw stopAt(at, `a chunk that does not decompress (${e.message})`);
+      }
+      yield* inner(data, at, false);
+    } else if (r.op === BAG_OP.connection) {
+      const c = new rec.Connection(r.fields);
+      c.parseData(r.data);
+      yield { connection: c };
+    } else if (r.op === BAG_OP.message) {
+      const m = new rec.MessageData(r.fields);
+      yield { conn: m.conn, time: m.time, data: r.data };
+    }
+    at += size;
+  }
+  if (indexAt === 0 || indexAt >= src.size) throw stopAt(src.size, 'truncated: the file ends before the bag\'s index');
+}
+
+async function openBagStream(src, decompress, indexError) {
+  const file = src.name;
+  const rec = { ...(await need('@foxglove/rosbag/dist/cjs/record.js', file)), ...(await need('@foxglove/rosbag/dist/cjs/fields.js', file)) };
+  const { parse } = await need('@foxglove/rosmsg', file);
+  const { MessageReader } = await need('@foxglove/rosmsg-serialization', file);
+  const connections = new Map(), counts = new Map();
+  let stop;
+  try {
+    for await (const r of bagRecords(src, decompress, rec)) {
+      if (r.connection) connections.set(r.connection.conn, r.connection);
+      else counts.set(r.conn, (counts.get(r.conn) ?? 0) + 1);
+    }
+  } catch (e) {
+    stop = e;
+  }
+  if (connections.size === 0)
+    throw new LogError(stop ? 'TRUNCATED' : 'FORMAT', `openLog: ${file}: unreadable ROS bag (index: ${indexError.message}` +
+                       `${stop ? `; records: ${stop.message}` : ''})`, { file, cause: stop ?? indexError });
+  const byTopic = new Map();
+  for (const c of connections.values()) {
+    const entry = byTopic.get(c.topic) ?? { name: c.topic, type: c.type ?? '', count: 0 };
+    entry.count += counts.get(c.conn) ?? 0;
+    byTopic.set(c.topic, entry);
+  }
+  const log = {
+    format: 'bag', file, topics: [...byTopic.values()],
+    /** the bag has no usable index and is read front to back (messages in file order): why, and what stopped the
+     *  first pass (if anything) */
+    unindexed: { reason: indexError.message, stoppedBy: stop?.message },
+    scans(topic, opts = {}) {
+      const { start, end, kind } = checkTopic(log, topic, opts);
+      const readers = new Map();
+      async function* messages() {
+        const conns = new Map();
+        for await (const r of bagRecords(src, decompress, rec)) {
+          if (r.connection) { conns.set(r.connection.conn, r.connection); continue; }
+          const c = conns.get(r.conn) ?? connections.get(r.conn);
+          if (c?.topic !== topic) continue;
+          const logTime = BigInt(r.time.sec) * 1000000000n + BigInt(r.time.nsec);
+          if ((start !== undefined && logTime < start) || (end !== undefined && logTime > end)) continue;
+          yield { logTime, conn: c, data: r.data };
+        }
+      }
+      const decode = (m) => {
+        if (!readers.has(m.conn.conn)) readers.set(m.conn.conn, new MessageReader(parse(m.conn.messageDefinition)));
+        return readers.get(m.conn.conn).readMessage(m.data);
+      };
+      return adapt(file, topic, kind, messages(), decode);
     },
     close: () => src.close(),
   };

@@ -1,0 +1,114 @@
+// segmentAndVectorize(): a scan segmented and each cluster vectorized in one call (pipeline_ops.h), so that a log's
+// scan crosses the JS/wasm boundary once instead of once per cluster. Its options and results cross by name
+// (schema.h): PipelineOptions and PipelineResults below are the one declaration of both.
+#include "adapter.h"
+#include "pipeline_ops.h"
+#include "schema.h"
+
+namespace rtl_wasm {
+namespace {
+
+// segmentAndVectorize()'s options (wasm/js/pipeline.js writes them by these names after checking them; no defaults
+// here: the JS layer writes every field). method: 0 ftls, 1 aftls, 2 itls, 3 dp, 4 rw (rtl_ops::Method).
+struct PipelineOptions {
+  int dim = 0;
+  double step = 0, lowerBound = 0, upperBound = 0;
+  double origin[3] = {};
+  double minPoints = 0;
+  int method = 0;
+  double sigma = 0, delta = 0, epsilon = 0, maxSize = 0, simplexShift = 0, maxIterations = 0;
+  bool split = false, segmentDistance = false;
+  template <class F>
+  void fields(F& f) {
+    f("dim", dim);
+    f("step", step);
+    f("lowerBound", lowerBound);
+    f("upperBound", upperBound);
+    f("origin", origin);
+    f("minPoints", minPoints);
+    f("method", method);
+    f("sigma", sigma);
+    f("delta", delta);
+    f("epsilon", epsilon);
+    f("maxSize", maxSize);
+    f("simplexShift", simplexShift);
+    f("maxIterations", maxIterations);
+    f("split", split);
+    f("segmentDistance", segmentDistance);
+  }
+};
+
+// segmentAndVectorize()'s results (wasm/js/pipeline.js reads them by these names); pipeline_ops.h's PipelineOutput
+// says what each is.
+struct PipelineResults {
+  double computeMs = 0;
+  rtl_ops::PipelineOutput out;
+  template <class F>
+  void fields(F& f) {
+    f.scalar("computeMs", computeMs);
+    f.scalar("stride", static_cast<double>(out.stride));
+    f.take("labels", out.seg.labels);
+    f.take("indices", out.seg.indices);
+    f.array("offsets", out.seg.offsets);
+    f.array("runs", out.seg.runs);
+    f.array("runOffsets", out.seg.runOffsets);
+    f.array("vectorized", out.vectorized);
+    f.array("flags", out.flags);
+    f.array("failures", out.failures);
+    f.array("segmentOffsets", out.segmentOffsets);
+    f.array("segments", out.segments);
+    f.array("segmentIndices", out.indices);
+    f.array("params", out.params);
+    f.array("rms", out.rms);
+    f.array("polylineParts", out.polylineParts);
+    f.array("polylineOffsets", out.polylineOffsets);
+    f.array("breakOffsets", out.breakOffsets);
+    f.array("breaks", out.breaks);
+  }
+};
+
+val segmentAndVectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
+  return guarded([&] {
+    const char* fn = "segmentAndVectorize";
+    const auto o = readOptions<PipelineOptions>(options);
+    if (o.dim != 2 && o.dim != 3) throw std::invalid_argument(std::string(fn) + ": dim must be 2 or 3, got " + std::to_string(o.dim));
+    if (o.method < 0 || o.method > 4) throw std::invalid_argument(std::string(fn) + ": unknown method " + std::to_string(o.method));
+    const auto dim = static_cast<std::size_t>(o.dim);
+    const double* xyz = doubles(ptr);
+    // one rule for the whole scan (gaps allowed): every coordinate within +-1e18, also in clusters too small to vectorize
+    checkPoints(fn, xyz, len, dim, 0, true, kMaxCoordinate);
+    rtl_ops::SegmentParams s;
+    s.step = static_cast<std::size_t>(o.step);
+    s.lowerBound = o.lowerBound;
+    s.upperBound = o.upperBound;
+    for (int k = 0; k < 3; ++k) s.origin[k] = o.origin[k];
+    rtl_ops::VectorizeParams v;
+    v.method = static_cast<rtl_ops::Method>(o.method);
+    v.dim = o.dim;
+    v.sigma = o.sigma;
+    v.delta = o.delta;
+    v.epsilon = o.epsilon;
+    v.maxSize = static_cast<std::size_t>(o.maxSize);
+    v.simplexShift = static_cast<std::size_t>(o.simplexShift);
+    v.maxIterations = static_cast<std::size_t>(o.maxIterations);
+    v.split = o.split;
+    v.segmentDistance = o.segmentDistance;
+    v.maxMagnitude = kMaxCoordinate;
+    PipelineResults r;
+    const double t0 = nowMs();
+    const auto min = static_cast<std::size_t>(o.minPoints);
+    if (o.dim == 2) rtl_ops::segmentAndVectorize<2>(xyz, len / 2, s, v, min, r.out);
+    else rtl_ops::segmentAndVectorize<3>(xyz, len / 3, s, v, min, r.out);
+    if (r.out.badInput) throw std::logic_error(std::string(fn) + ": a point the input check passed was refused");
+    r.computeMs = nowMs() - t0;
+    return val(writeResults(results(), r));
+  });
+}
+
+}  // namespace
+}  // namespace rtl_wasm
+
+EMSCRIPTEN_BINDINGS(rtl_pipeline) {
+  emscripten::function("segmentAndVectorize", &rtl_wasm::segmentAndVectorize);
+  rtl_wasm::registerCall<rtl_wasm::PipelineOptions, rtl_wasm::PipelineResults>("segmentAndVectorize");
+}
