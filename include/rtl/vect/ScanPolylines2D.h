@@ -128,6 +128,12 @@ namespace rtl
         void setRadialRepartition(std::size_t window) { radial_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
+        //! With refinement on: refine the knapsack's optimal plan of every budget J' <= J (each distinct candidate
+        //! once) and return the plan whose refined chain costs sum least (true, default), so that a larger budget never
+        //! returns a worse map than a smaller one (up to the slight interactions between chains at their borders); or
+        //! refine only the plan of J itself (false: cheaper, but refinement gains differ between plans, so the score can
+        //! rise with J).
+        void setRefineEveryBudget(bool on) { every_budget_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
         void setPointSigma(T s) { point_sigma_ = checkedPositive(s, "ScanPolylines2D::setPointSigma"); }
 
@@ -174,6 +180,11 @@ namespace rtl
                     }
                 }
                 chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            }
+            if (refine_ && every_budget_ && !chosen.empty())
+            {
+                refineEveryBudget(options, chosen);
+                return true;
             }
             if (radial_window_ > 0)
                 for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
@@ -487,6 +498,74 @@ namespace rtl
             return cost;
         }
 
+        //! See setRefineEveryBudget. `chosen` is the plan of J (option indices into `options`, per chain). The plan of
+        //! J before refinement (radially re-partitioned when that is on) is kept as the fallback, so the result never
+        //! scores worse than the unrefined plan of J; otherwise the hit-tested map of the plan with the least refined
+        //! chain-cost sum is returned (chains interact only where one's segments hit another's beams, which the chain
+        //! costs leave out; the fallback's comparison is hit-tested in full).
+        void refineEveryBudget(const std::vector<std::vector<scan_polylines::BudgetOption>> &options,
+                               const std::vector<std::size_t> &chosen)
+        {
+            const std::size_t C = chains_.size();
+            refined_cost_.resize(C);
+            repartitioned_.resize(C);
+            for (std::size_t c = 0; c < C; ++c)
+            {
+                refined_cost_[c].assign(options[c].size(), scan_polylines::kNaN);
+                repartitioned_[c].assign(options[c].size(), 0);
+            }
+            // Candidate o of chain c as it enters refinement: re-partitioned once (when that is on).
+            auto prepare = [&](std::size_t c, std::size_t o) -> Candidate & {
+                Candidate &cand = candidates_[c][o - 1];
+                if (radial_window_ > 0 && !repartitioned_[c][o]) radialRepartition(c, cand, options[c][o].cost);
+                repartitioned_[c][o] = 1;
+                return cand;
+            };
+            std::vector<Polyline> fallback;
+            for (std::size_t c = 0; c < C; ++c)
+                if (chosen[c] > 0)
+                {
+                    const Candidate &cand = prepare(c, chosen[c]);
+                    fallback.insert(fallback.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                }
+            // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
+            const scan_polylines::BudgetTable table(options, max_vertices_);
+            std::vector<std::size_t> best_plan, prev;
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t b = 0; b <= max_vertices_; ++b)
+            {
+                std::vector<std::size_t> plan = table.plan(b);
+                if (plan.empty() || plan == prev) continue;
+                double sum = 0;
+                for (std::size_t c = 0; c < C; ++c)
+                {
+                    const std::size_t o = plan[c];
+                    if (o > 0 && std::isnan(refined_cost_[c][o]))
+                    {
+                        // hit-tested before refinement: a break candidate's option cost is an estimate
+                        const double before = chainCost(prepare(c, o), chains_[c].first, chains_[c].second);
+                        refined_cost_[c][o] = refineCandidate(c, o - 1, 20, before);
+                    }
+                    sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
+                }
+                if (sum < best) { best = sum; best_plan = plan; }
+                prev.swap(plan);
+            }
+            std::vector<double> rhat = expected(fallback);
+            scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
+            std::vector<Polyline> map;
+            for (std::size_t c = 0; c < C; ++c)
+                if (best_plan[c] > 0)
+                {
+                    const Candidate &cand = candidates_[c][best_plan[c] - 1];
+                    map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                }
+            std::vector<double> rhat2 = expected(map);
+            const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
+            if (score2.score(cost_) < score.score(cost_)) publish(map, rhat2, score2);
+            else publish(fallback, rhat, score);
+        }
+
         //! Radially refines candidate `index` of chain c (at most `iterations` LM iterations per polyline) and keeps the
         //! result when its hit-tested cost is below `cost`; returns the candidate's cost.
         double refineCandidate(std::size_t c, std::size_t index, int iterations, double cost)
@@ -680,7 +759,9 @@ namespace rtl
 
         std::size_t max_vertices_ = 50;
         double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
-        bool refine_ = true, radial_weights_ = false;
+        bool refine_ = true, radial_weights_ = false, every_budget_ = true;
+        std::vector<std::vector<double>> refined_cost_;
+        std::vector<std::vector<char>> repartitioned_;
         int refine_candidates_ = 0;
         int break_rounds_ = 2;
         bool trim_ends_ = false;
