@@ -29,7 +29,8 @@
 //     setRadialRepartition);
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
-//     so refinement never raises the score.
+//     so refinement never raises the score. Optionally (setRefineEveryBudget) the plans of every budget J' <= J are
+//     refined and the best returned, so that the score never rises with J.
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
 // n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test.
 //
@@ -128,11 +129,13 @@ namespace rtl
         void setRadialRepartition(std::size_t window) { radial_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
-        //! With refinement on: refine the knapsack's optimal plan of every budget J' <= J (each distinct candidate
-        //! once) and return the plan whose refined chain costs sum least (true, default), so that a larger budget never
-        //! returns a worse map than a smaller one (up to the slight interactions between chains at their borders); or
-        //! refine only the plan of J itself (false: cheaper, but refinement gains differ between plans, so the score can
-        //! rise with J).
+        //! With refinement on: refine only the knapsack's plan of J itself (false, default), or its optimal plan of every
+        //! budget J' <= J (each distinct candidate once; about chains + 2J refinements instead of chains) and return the
+        //! plan whose refined chain costs sum least (true). Refinement gains differ between plans, so by default a
+        //! larger J can return a worse map than a smaller one (a plan within J' is within J); with true it never does,
+        //! up to the slight interactions between chains at their borders, which the chain costs leave out, as long as
+        //! the candidates do not depend on J's first allocation (point candidates with `window` >= 0 and neighbour
+        //! refinement do; radial re-partition does not).
         void setRefineEveryBudget(bool on) { every_budget_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
         void setPointSigma(T s) { point_sigma_ = checkedPositive(s, "ScanPolylines2D::setPointSigma"); }
@@ -242,6 +245,7 @@ namespace rtl
             std::vector<Polyline> polylines;
             std::size_t used = 0;
             bool partition = false;             // a plain TLS partition (no forced breaks) of `ranges`
+            bool stale_cost = false;            // its offered cost is an estimate, or from before a re-partition
             std::vector<BeamRange> ranges;      // its ranges, chain-local
 
             Polyline &next()
@@ -442,6 +446,7 @@ namespace rtl
                 std::swap(cand.polylines, repart_.polylines);
                 std::swap(cand.used, repart_.used);
                 cand.ranges = ranges_;
+                cand.stale_cost = true;
             }
         }
 
@@ -482,6 +487,7 @@ namespace rtl
             Candidate &cand = candidates_[c][candidate_count_[c]];
             cand.used = 0;
             cand.partition = false;
+            cand.stale_cost = false;
             return cand;
         }
 
@@ -492,6 +498,7 @@ namespace rtl
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][candidate_count_[c]];
             double cost = std::isnan(known) ? chainCost(cand, cf, cl) : known;
+            cand.stale_cost = !std::isnan(known);
             if (refine_candidates_ > 0) cost = refineCandidate(c, candidate_count_[c], refine_candidates_, cost);
             opts.push_back({vertices, cost});
             ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
@@ -542,8 +549,9 @@ namespace rtl
                     const std::size_t o = plan[c];
                     if (o > 0 && std::isnan(refined_cost_[c][o]))
                     {
-                        // hit-tested before refinement: a break candidate's option cost is an estimate
-                        const double before = chainCost(prepare(c, o), chains_[c].first, chains_[c].second);
+                        // hit-tested before refinement where the option's cost is not (a break candidate's estimate)
+                        Candidate &cand = prepare(c, o);
+                        const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
                         refined_cost_[c][o] = refineCandidate(c, o - 1, 20, before);
                     }
                     sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
@@ -572,12 +580,16 @@ namespace rtl
         {
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][index];
-            Candidate refined = cand;
-            scan_polylines::RadialRefinement lm;
-            lm.setMaxIterations(iterations);
+            Candidate &refined = refine_scratch_;   // a member: its buffers are reused from call to call
+            refined.used = 0;
+            for (std::size_t p = 0; p < cand.used; ++p) refined.next() = cand.polylines[p];
+            refined.partition = cand.partition;
+            refined.ranges = cand.ranges;
+            refined.stale_cost = false;
+            lm_.setMaxIterations(iterations);
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
             for (std::size_t p = 0; p < refined.used; ++p)
-                lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+                lm_(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
             const double c2 = chainCost(refined, cf, cl);
             if (c2 < cost) { cost = c2; std::swap(cand, refined); }
             return cost;
@@ -759,9 +771,11 @@ namespace rtl
 
         std::size_t max_vertices_ = 50;
         double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
-        bool refine_ = true, radial_weights_ = false, every_budget_ = true;
+        bool refine_ = true, radial_weights_ = false, every_budget_ = false;
         std::vector<std::vector<double>> refined_cost_;
         std::vector<std::vector<char>> repartitioned_;
+        Candidate refine_scratch_;
+        scan_polylines::RadialRefinement lm_;
         int refine_candidates_ = 0;
         int break_rounds_ = 2;
         bool trim_ends_ = false;
