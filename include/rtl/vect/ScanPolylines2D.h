@@ -32,7 +32,8 @@
 //     so refinement never raises the score. Optionally (setRefineEveryBudget) the plans of every budget J' <= J are
 //     refined and the best returned, so that the score never rises with J.
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
-// n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test.
+// n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
+// O(chains x J) more for the plans' backtracks and one refinement per distinct (chain, candidate) of the plans.
 //
 // Input: the scan's beams in beam order as points in the sensor frame; a beam with a non-finite coordinate, or at the
 // origin, has no return. The beams' directions must turn one way (increasing or decreasing angle), as a rotating
@@ -130,7 +131,8 @@ namespace rtl
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
         //! With refinement on: refine only the knapsack's plan of J itself (false, default), or its optimal plan of every
-        //! budget J' <= J (each distinct candidate once; about chains + 2J refinements instead of chains) and return the
+        //! budget J' <= J (each distinct (chain, candidate) once: consecutive plans differ in one or two chains, so
+        //! typically O(chains + J) candidate refinements instead of one per chosen chain) and return the
         //! plan whose refined chain costs sum least (true). Refinement gains differ between plans, so by default a
         //! larger J can return a worse map than a smaller one (a plan within J' is within J); with true it never does,
         //! up to the slight interactions between chains at their borders, which the chain costs leave out, as long as
