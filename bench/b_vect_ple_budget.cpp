@@ -1,7 +1,9 @@
 // ScanPolylines2D on the protocol of probabilistic line extraction (PLE, Schaefer et al., IROS 2018): 20 scans of each
 // of intel and csail, a budget of J = 10..50 vertices per scan, scored by PLE's ray metric (see bench/ple/README.md),
 // beside PLE's and PLE+'s published per-log means. Prints, per log and J: mean RMSE, mean f, mean score, median and
-// max time per scan, for the extractor with and without radial refinement, and for the library's existing pipeline
+// max time per scan, for the extractor without radial refinement (DP), with it (DP+LM, defaults: J's own plan
+// refined) and with the plans of every budget J' <= J refined (DP+LM all, setRefineEveryBudget(true), priced against
+// DP+LM in the same run), and for the library's existing pipeline
 // (CAR + FTLS split, one sigma per scan) as the baseline; n = scans in the mean (a scan without a hit is left out, as
 // PLE does; for the baseline also a scan where no sigma fits J).
 //
@@ -48,11 +50,12 @@ namespace
     int g_radial = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
-    Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
+    Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
     {
         rtl::ScanPolylines2D<double> ex;
         ex.setMaxVertices(J);
         ex.setRefinement(refine);
+        ex.setRefineEveryBudget(every_budget);
         if (g_break_candidates >= 0) ex.setBreakCandidates(g_break_candidates);
         if (g_exact_breaks >= 0) ex.setExactBreakCosts(g_exact_breaks > 0);
         if (g_window >= 0) ex.setNeighbourRefinement(static_cast<std::size_t>(g_window));
@@ -251,12 +254,12 @@ int main(int argc, char **argv)
             continue;
         }
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
-            for (int method = 0; method < 3; ++method)
+            for (int method = 0; method < 4; ++method)
             {
-                const Row r = method == 0 ? evaluateBaseline(scans, J) : evaluate(scans, J, method == 2, reps);
+                const Row r = method == 0 ? evaluateBaseline(scans, J) : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
                 std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,
-                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
+                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
                             c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]));
             }
     }

@@ -304,3 +304,38 @@ TEST(ScanPolylinesBudget, NoFeasibleChoiceGivesEmpty)
     EXPECT_TRUE(allocateBudget(groups, 2).empty());
     EXPECT_EQ(allocateBudget(groups, 3).size(), 1u);
 }
+
+TEST(ScanPolylinesBudget, TablePlansEverySmallerBudgetOptimally)
+{
+    // One table for budget 15 gives, for every b <= 15, a plan within b whose cost is the table's cost(b) and equals
+    // that of a separate allocation at b; costs never rise with b.
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> verts(2, 7), count(1, 5);
+    std::uniform_real_distribution<double> cost(0.0, 10.0);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        std::vector<std::vector<BudgetOption>> groups(1 + static_cast<std::size_t>(trial % 5));
+        for (auto &g : groups)
+        {
+            g.push_back({0, 10 + cost(rng)});
+            for (int o = count(rng); o > 0; --o) g.push_back({static_cast<std::size_t>(verts(rng)), cost(rng)});
+        }
+        const rtl::scan_polylines::BudgetTable table(groups, 15);
+        ASSERT_EQ(table.budget(), 15u);
+        for (std::size_t b = 0; b <= 15; ++b)
+        {
+            const auto plan = table.plan(b), alone = allocateBudget(groups, b);
+            ASSERT_EQ(plan.size(), groups.size());
+            std::size_t used = 0;
+            double total = 0, total_alone = 0;
+            for (std::size_t g = 0; g < groups.size(); ++g)
+            {
+                used += groups[g][plan[g]].vertices; total += groups[g][plan[g]].cost; total_alone += groups[g][alone[g]].cost;
+            }
+            EXPECT_LE(used, b);
+            EXPECT_NEAR(total, table.cost(b), 1e-12) << "trial " << trial << " b " << b;
+            EXPECT_NEAR(total, total_alone, 1e-12) << "trial " << trial << " b " << b;
+            if (b > 0) { EXPECT_LE(table.cost(b), table.cost(b - 1)); }
+        }
+    }
+}

@@ -29,9 +29,11 @@
 //     setRadialRepartition);
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
-//     so refinement never raises the score.
+//     so refinement never raises the score. Optionally (setRefineEveryBudget) the plans of every budget J' <= J are
+//     refined and the best returned, so that the score never rises with J.
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
-// n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test.
+// n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
+// O(chains x J) more for the plans' backtracks and one refinement per distinct (chain, candidate) of the plans.
 //
 // Input: the scan's beams in beam order as points in the sensor frame; a beam with a non-finite coordinate, or at the
 // origin, has no return. The beams' directions must turn one way (increasing or decreasing angle), as a rotating
@@ -128,6 +130,15 @@ namespace rtl
         void setRadialRepartition(std::size_t window) { radial_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
+        //! With refinement on: refine only the knapsack's plan of J itself (false, default), or its optimal plan of every
+        //! budget J' <= J (each distinct (chain, candidate) once: consecutive plans differ in one or two chains, so
+        //! typically O(chains + J) candidate refinements instead of one per chosen chain) and return the
+        //! plan whose refined chain costs sum least (true). Refinement gains differ between plans, so by default a
+        //! larger J can return a worse map than a smaller one (a plan within J' is within J); with true it never does,
+        //! up to the slight interactions between chains at their borders, which the chain costs leave out, as long as
+        //! the candidates do not depend on J's first allocation (point candidates with `window` >= 0 and neighbour
+        //! refinement do; radial re-partition does not).
+        void setRefineEveryBudget(bool on) { every_budget_ = on; }
         //! Lower bound (metres) of the per-point noise used for the segment covariances (default 0.01). Finite and > 0.
         void setPointSigma(T s) { point_sigma_ = checkedPositive(s, "ScanPolylines2D::setPointSigma"); }
 
@@ -174,6 +185,11 @@ namespace rtl
                     }
                 }
                 chosen = scan_polylines::allocateBudget(options, max_vertices_);
+            }
+            if (refine_ && every_budget_ && !chosen.empty())
+            {
+                refineEveryBudget(options, chosen);
+                return true;
             }
             if (radial_window_ > 0)
                 for (std::size_t c = 0; c < chains_.size() && !chosen.empty(); ++c)
@@ -231,6 +247,7 @@ namespace rtl
             std::vector<Polyline> polylines;
             std::size_t used = 0;
             bool partition = false;             // a plain TLS partition (no forced breaks) of `ranges`
+            bool stale_cost = false;            // its offered cost is an estimate, or from before a re-partition
             std::vector<BeamRange> ranges;      // its ranges, chain-local
 
             Polyline &next()
@@ -431,6 +448,7 @@ namespace rtl
                 std::swap(cand.polylines, repart_.polylines);
                 std::swap(cand.used, repart_.used);
                 cand.ranges = ranges_;
+                cand.stale_cost = true;
             }
         }
 
@@ -471,6 +489,7 @@ namespace rtl
             Candidate &cand = candidates_[c][candidate_count_[c]];
             cand.used = 0;
             cand.partition = false;
+            cand.stale_cost = false;
             return cand;
         }
 
@@ -481,10 +500,80 @@ namespace rtl
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][candidate_count_[c]];
             double cost = std::isnan(known) ? chainCost(cand, cf, cl) : known;
+            cand.stale_cost = !std::isnan(known);
             if (refine_candidates_ > 0) cost = refineCandidate(c, candidate_count_[c], refine_candidates_, cost);
             opts.push_back({vertices, cost});
             ++candidate_count_[c];   // option index o > 0 is candidates_[c][o - 1]
             return cost;
+        }
+
+        //! See setRefineEveryBudget. `chosen` is the plan of J (option indices into `options`, per chain). The plan of
+        //! J before refinement (radially re-partitioned when that is on) is kept as the fallback, so the result never
+        //! scores worse than the unrefined plan of J; otherwise the hit-tested map of the plan with the least refined
+        //! chain-cost sum is returned (chains interact only where one's segments hit another's beams, which the chain
+        //! costs leave out; the fallback's comparison is hit-tested in full).
+        void refineEveryBudget(const std::vector<std::vector<scan_polylines::BudgetOption>> &options,
+                               const std::vector<std::size_t> &chosen)
+        {
+            const std::size_t C = chains_.size();
+            refined_cost_.resize(C);
+            repartitioned_.resize(C);
+            for (std::size_t c = 0; c < C; ++c)
+            {
+                refined_cost_[c].assign(options[c].size(), scan_polylines::kNaN);
+                repartitioned_[c].assign(options[c].size(), 0);
+            }
+            // Candidate o of chain c as it enters refinement: re-partitioned once (when that is on).
+            auto prepare = [&](std::size_t c, std::size_t o) -> Candidate & {
+                Candidate &cand = candidates_[c][o - 1];
+                if (radial_window_ > 0 && !repartitioned_[c][o]) radialRepartition(c, cand, options[c][o].cost);
+                repartitioned_[c][o] = 1;
+                return cand;
+            };
+            std::vector<Polyline> fallback;
+            for (std::size_t c = 0; c < C; ++c)
+                if (chosen[c] > 0)
+                {
+                    const Candidate &cand = prepare(c, chosen[c]);
+                    fallback.insert(fallback.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                }
+            // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
+            const scan_polylines::BudgetTable table(options, max_vertices_);
+            std::vector<std::size_t> best_plan, prev;
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t b = 0; b <= max_vertices_; ++b)
+            {
+                std::vector<std::size_t> plan = table.plan(b);
+                if (plan.empty() || plan == prev) continue;
+                double sum = 0;
+                for (std::size_t c = 0; c < C; ++c)
+                {
+                    const std::size_t o = plan[c];
+                    if (o > 0 && std::isnan(refined_cost_[c][o]))
+                    {
+                        // hit-tested before refinement where the option's cost is not (a break candidate's estimate)
+                        Candidate &cand = prepare(c, o);
+                        const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
+                        refined_cost_[c][o] = refineCandidate(c, o - 1, 20, before);
+                    }
+                    sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
+                }
+                if (sum < best) { best = sum; best_plan = plan; }
+                prev.swap(plan);
+            }
+            std::vector<double> rhat = expected(fallback);
+            scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
+            std::vector<Polyline> map;
+            for (std::size_t c = 0; c < C; ++c)
+                if (best_plan[c] > 0)
+                {
+                    const Candidate &cand = candidates_[c][best_plan[c] - 1];
+                    map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                }
+            std::vector<double> rhat2 = expected(map);
+            const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
+            if (score2.score(cost_) < score.score(cost_)) publish(map, rhat2, score2);
+            else publish(fallback, rhat, score);
         }
 
         //! Radially refines candidate `index` of chain c (at most `iterations` LM iterations per polyline) and keeps the
@@ -493,12 +582,16 @@ namespace rtl
         {
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][index];
-            Candidate refined = cand;
-            scan_polylines::RadialRefinement lm;
-            lm.setMaxIterations(iterations);
+            Candidate &refined = refine_scratch_;   // a member: its buffers are reused from call to call
+            refined.used = 0;
+            for (std::size_t p = 0; p < cand.used; ++p) refined.next() = cand.polylines[p];
+            refined.partition = cand.partition;
+            refined.ranges = cand.ranges;
+            refined.stale_cost = false;
+            lm_.setMaxIterations(iterations);
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
             for (std::size_t p = 0; p < refined.used; ++p)
-                lm(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+                lm_(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
             const double c2 = chainCost(refined, cf, cl);
             if (c2 < cost) { cost = c2; std::swap(cand, refined); }
             return cost;
@@ -680,7 +773,11 @@ namespace rtl
 
         std::size_t max_vertices_ = 50;
         double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
-        bool refine_ = true, radial_weights_ = false;
+        bool refine_ = true, radial_weights_ = false, every_budget_ = false;
+        std::vector<std::vector<double>> refined_cost_;
+        std::vector<std::vector<char>> repartitioned_;
+        Candidate refine_scratch_;
+        scan_polylines::RadialRefinement lm_;
         int refine_candidates_ = 0;
         int break_rounds_ = 2;
         bool trim_ends_ = false;
