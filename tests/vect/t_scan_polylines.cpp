@@ -160,13 +160,13 @@ TEST(ScanPolylines2D, MoreVerticesNeverScoreWorseOnAverage)
 
 TEST(ScanPolylines2D, ALargerBudgetNeverGivesAWorseMap)
 {
-    // With setRefineEveryBudget: the plan of every J' <= J lies within J, so score(J) may not exceed score(J') for
-    // any J' < J. Refining only J's own plan (the default) breaks this (refinement gains differ between plans: 149
+    // With setRefineEveryBudget (the default): the plan of every J' <= J lies within J, so score(J) may not exceed
+    // score(J') for any J' < J. Refining only J's own plan (setRefineEveryBudget(false)) breaks this (refinement gains differ between plans: 149
     // rises over the smaller budgets' best on these 60 scans at J = 2..60, up to +26 %). Chains interact only through
     // beams at their borders, which the per-chain costs leave out; no rise was measured here, so the tolerance only
     // absorbs rounding (sums of a few hundred terms).
     rtl::ScanPolylines2D<double> ex, own;
-    ex.setRefineEveryBudget(true);
+    own.setRefineEveryBudget(false);
     std::size_t lower = 0, runs = 0;
     for (const char *file : {"intel.log", "csail.log"})
     {
@@ -219,7 +219,7 @@ TEST(ScanPolylines2D, EveryBudgetRefinementWithRepartitionAndPointCandidates)
     rtl::ScanPolylines2D<double> every, own;
     every.setPointCandidates(true);
     own.setPointCandidates(true);
-    every.setRefineEveryBudget(true);
+    own.setRefineEveryBudget(false);
     double mean_every = 0, mean_own = 0;
     for (std::size_t J : {10u, 30u})
     {
@@ -239,8 +239,7 @@ TEST(ScanPolylines2D, CsailScan16KeepsItsNineVertexMapAtTen)
     // csail excerpt scan 16: refined, J = 9's plan scores 0.0815 (f 0.776) and J = 10's own plan 0.1001 (f 0.630);
     // unrefined they are monotone (0.1053 -> 0.1009). At J = 10 the extractor must return a map at least as good as J = 9's.
     const auto scans = excerptScans("csail.log");
-    rtl::ScanPolylines2D<double> ex;
-    ex.setRefineEveryBudget(true);
+    rtl::ScanPolylines2D<double> ex;   // the default refines every budget's plan
     ex.setMaxVertices(9);
     ASSERT_TRUE(ex(scans[16]));
     const double nine = ex.score();
@@ -250,8 +249,9 @@ TEST(ScanPolylines2D, CsailScan16KeepsItsNineVertexMapAtTen)
     EXPECT_LE(ex.score(), nine);
     EXPECT_NEAR(ex.explainedFraction(), 0.776, 0.001);
     EXPECT_LE(ex.vertexCount(), 10u);
-    // refining only J's own plan (the default) reproduces the rise
+    // refining only J's own plan reproduces the rise
     rtl::ScanPolylines2D<double> own;
+    own.setRefineEveryBudget(false);
     own.setMaxVertices(10);
     ASSERT_TRUE(own(scans[16]));
     EXPECT_NEAR(own.score(), 0.1001, 0.0005);

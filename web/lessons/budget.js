@@ -172,8 +172,8 @@ export default {
           const d = snap.score - prev.score;
           const gained = run.gained.length ? ` <span data-q="gained">${run.gained.length} beam${run.gained.length === 1 ? '' : 's'} newly explained</span> (${runsText(run.gained)}, green rings).` : '';
           html += d < 0 ? `<p class="why">One vertex more than J = ${prev.J} lowered the score from ${num(prev.score, 4)} to ${num(snap.score, 4)} m².${gained}</p>`
-            : d === 0 ? `<p class="why">One vertex more than J = ${prev.J} changes nothing: no polyline gains from a single vertex here (a new polyline needs two).</p>`
-              : `<p class="why">The score is <b>higher</b> than at J = ${prev.J} (${num(prev.score, 4)} m²): for each J the package picks the best combination of its candidate polylines as they are before the radial refinement; the refinement then improves some maps more than others (and polylines of neighbouring stretches can overlap), so the final score can end up above the one at J − 1.${gained}</p>`;
+            : d === 0 ? `<p class="why">One vertex more than J = ${prev.J} changes nothing: the best map within J is still the one of J − 1 (a single vertex does not pay here; a new polyline needs two).</p>`
+              : `<p class="why">The score is <b>higher</b> than at J = ${prev.J} (${num(prev.score, 4)} m²): for each J the package refines the best plan of every budget up to J and keeps the one whose polylines explain their own stretches best; polylines of neighbouring stretches can overlap, which those costs leave out, so the final score can end slightly above the one at J − 1.${gained}</p>`;
         }
         if (g) {
           const ratio = g.orthogonal > 0 ? g.radial / g.orthogonal : Infinity;

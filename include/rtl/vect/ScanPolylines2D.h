@@ -29,8 +29,8 @@
 //     setRadialRepartition);
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
-//     so refinement never raises the score. Optionally (setRefineEveryBudget) the plans of every budget J' <= J are
-//     refined and the best returned, so that the score never rises with J.
+//     so refinement never raises the score. The plans of every budget J' <= J are refined and the best returned, so
+//     that the score never rises with J (setRefineEveryBudget, default on; off refines J's own plan only).
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
 // n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
 // O(chains x J) more for the plans' backtracks and one refinement per distinct (chain, candidate) of the plans.
@@ -130,11 +130,11 @@ namespace rtl
         void setRadialRepartition(std::size_t window) { radial_window_ = window; }
         //! Radial refinement on (default) or off.
         void setRefinement(bool on) { refine_ = on; }
-        //! With refinement on: refine only the knapsack's plan of J itself (false, default), or its optimal plan of every
-        //! budget J' <= J (each distinct (chain, candidate) once: consecutive plans differ in one or two chains, so
-        //! typically O(chains + J) candidate refinements instead of one per chosen chain) and return the
-        //! plan whose refined chain costs sum least (true). Refinement gains differ between plans, so by default a
-        //! larger J can return a worse map than a smaller one (a plan within J' is within J); with true it never does,
+        //! With refinement on: refine the knapsack's optimal plan of every budget J' <= J (true, default; each distinct
+        //! (chain, candidate) once: consecutive plans differ in one or two chains, so typically O(chains + J) candidate
+        //! refinements instead of one per chosen chain) and return the plan whose refined chain costs sum least, or
+        //! only the plan of J itself (false: faster, but refinement gains differ between plans, so a larger J can then
+        //! return a worse map than a smaller one although a plan within J' is within J). With true it never does,
         //! up to the slight interactions between chains at their borders, which the chain costs leave out, as long as
         //! the candidates do not depend on J's first allocation (point candidates with `window` >= 0 and neighbour
         //! refinement do; radial re-partition does not).
@@ -773,7 +773,7 @@ namespace rtl
 
         std::size_t max_vertices_ = 50;
         double max_gap_ = 1.0, cost_ = 0.5, point_sigma_ = 0.01;
-        bool refine_ = true, radial_weights_ = false, every_budget_ = false;
+        bool refine_ = true, radial_weights_ = false, every_budget_ = true;
         std::vector<std::vector<double>> refined_cost_;
         std::vector<std::vector<char>> repartitioned_;
         Candidate refine_scratch_;
