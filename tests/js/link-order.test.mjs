@@ -29,7 +29,7 @@ const NM = ['llvm-nm', 'llvm-nm-14', '/usr/lib/llvm-14/bin/llvm-nm'].find((nm) =
 const skip = !existsSync(LINK) || !existsSync(FLAGS) ? `no wasm build in ${WASM}` : false;
 
 // Weak (COMDAT) function symbols an object defines, mangled.
-const weakFunctions = (obj) => new Set(execFileSync(NM, ['--defined-only', join(WASM, obj)], { encoding: 'utf8' })
+const weakFunctions = (obj) => new Set(execFileSync(NM, ['--defined-only', join(WASM, obj)], { encoding: 'utf8', maxBuffer: 64 << 20 })
   .split('\n').map((l) => l.trim().split(/\s+/)).filter((f) => f[1] === 'W').map((f) => f[2]));
 // Code the numeric bindings run: the library's and Eigen's functions and std::vector's members (not its throw helpers).
 const hot = (sym) => /3rtl|5Eigen|NSt3__26vectorI/.test(sym) && !/__throw/.test(sym);

@@ -121,9 +121,10 @@ SegmentOutput segmentWith(const double* xyz, std::size_t n, const SegmentParams&
 }
 
 // trace: nullptr for the untraced segmenter (CAR_Segmenter<P>, exactly RTL's type); otherwise the steps of a
-// CAR_Segmenter<P, CarTraceLog> are appended to it.
+// CAR_Segmenter<P, CarTraceLog> are appended to it. Never inlined: segment.cpp and pipeline.cpp then share one copy
+// of each instantiation at link time instead of each inlining its own (the package's size budget).
 template <int D>
-SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p, FlatTrace* trace = nullptr) {
+__attribute__((noinline)) SegmentOutput segment(const double* xyz, std::size_t n, const SegmentParams& p, FlatTrace* trace = nullptr) {
   // each a function of its own (opaque.h), not inlined into one large binding
   if (trace == nullptr) return opaque(&segmentWith<D, rtl::NoTrace>)(xyz, n, p, nullptr);
   rtl::CarTraceLog log;

@@ -227,9 +227,10 @@ void observed(FlatTrace* trace, Run&& run) {
 // trace: nullptr for the untraced vectorizers; otherwise their steps are appended to it (2D FTLS/AFTLS, ITLS, DP
 // and RW; the 3D fast vectorizers report no steps: the caller rejects a trace for them). `o` is reset first and
 // keeps its arrays' capacity: a caller vectorizing many small chains (segmentAndVectorize, pipeline_ops.h) reuses
-// one output instead of allocating ~15 growing vectors per chain.
+// one output instead of allocating ~15 growing vectors per chain. Never inlined: vectorize.cpp and pipeline.cpp then
+// share one copy of each instantiation at link time instead of each inlining its own (the package's size budget).
 template <int D>
-void vectorizeInto(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace, VectorizeOutput& o) {
+__attribute__((noinline)) void vectorizeInto(const double* xyz, std::size_t n, const VectorizeParams& p, FlatTrace* trace, VectorizeOutput& o) {
   using namespace detail;
   if (n > 0xffffffffu) throw std::length_error("vectorize: more than 2^32 - 1 points");
   const ReleaseKeptAbove release{n};
