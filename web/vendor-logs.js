@@ -25,6 +25,11 @@ export async function peerNames(root) {
   return Object.keys((await packageJson(root)).peerDependencies ?? {});
 }
 
+// Modules of those peers the entry names by a literal (e.g. need('@foxglove/rosbag/dist/cjs/record.js', file)): its
+// reader of bags without an index uses the record classes of @foxglove/rosbag directly.
+const NEEDED_MODULE = /\bneed\((['"])([^'"]+)\1/g;
+export const neededModules = (text) => [...new Set([...text.matchAll(NEEDED_MODULE)].map((m) => m[2]))];
+
 // The file the package's exports map gives its public subpath 'rtl-wasm/logs'.
 export async function logsEntry(root) {
   const target = (await packageJson(root)).exports?.['./logs'];
@@ -66,7 +71,8 @@ export async function bundleLogs(root) {
     entryPoints: [entry], bundle: true, format: 'esm', platform: 'browser', target: 'es2022', write: false,
     nodePaths: [join(root, 'node_modules')], absWorkingDir: root, logLevel: 'silent', legalComments: 'eof',
     loader: { '.wasm': 'dataurl' }, external: ['fs', 'path', 'crypto', 'node:*'],
-    inject: [BUFFER_SHIM], plugins: [peerTable(await peerNames(root), entry)],
+    inject: [BUFFER_SHIM],
+    plugins: [peerTable([...new Set([...await peerNames(root), ...neededModules(await fs.readFile(entry, 'utf8'))])], entry)],
   });
   const code = result.outputFiles[0].text;
   cache.set(root, { stamp, code });

@@ -251,16 +251,21 @@ describe('open your own robot files: MCAP, ROS 1 bags, PCD', { timeout: 400000 }
     await carRunsOn(page, node.scans[0].points);
     await page.selectOption('#scan-chooser', (await lastGroup(page)).at(-1)[0]);
     await carRunsOn(page, node.scans.at(-1).points);
-    const before = await page.evaluate(() => window.__rtl.source());
 
-    // a bag cut at 70 %: its index is gone
+    // a bag cut at 70 %: its index is gone; the package reads it record by record, so the complete scans before the
+    // cut are offered and the message says where it stopped
     const bag = readFileSync(join(DATA, 'ros1', 'intel-none.bag'));
     const cut = new Uint8Array(bag.subarray(0, Math.floor(bag.length * 0.7)));
-    const cutError = await openLog(cut, { name: 'cut.bag' }).then(() => null, (e) => e.message.replace(/^openLog: /, ''));
-    assert.match(cutError, /^cut\.bag: /);
+    const cutNode = await nodeScans(cut, 'cut.bag', '/base_scan');
+    assert.ok(cutNode.error && cutNode.scans.length > 0 && cutNode.scans.length <= 30, `${cutNode.scans.length} scans, ${cutNode.error}`);
+    const cutExpected = cutNode.error.message.replace(/^scans: /, '');
+    assert.match(cutExpected, /^cut\.bag: /);
     await drop(page, 'cut.bag', cut);
     await waitMessage(page, /^cut\.bag: /);
-    assert.equal(await message(page), cutError);
+    assert.equal(await message(page), `${cutExpected}. The ${cutNode.scans.length} scans before it can be chosen in the list.`);
+    assert.equal((await lastGroup(page)).length, cutNode.scans.length);
+    await carRunsOn(page, cutNode.scans[0].points);
+    const before = await page.evaluate(() => window.__rtl.source());
 
     // a PCD whose POINTS promise more than its data holds
     const lines = readFileSync(join(DATA, 'pcd', 'organized.ascii.pcd'), 'utf8').split('\n');
