@@ -77,23 +77,8 @@ val segmentAndVectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t opti
     const double* xyz = doubles(ptr);
     // one rule for the whole scan (gaps allowed): every coordinate within +-1e18, also in clusters too small to vectorize
     checkPoints(fn, xyz, len, dim, 0, true, kMaxCoordinate);
-    rtl_ops::SegmentParams s;
-    s.step = static_cast<std::size_t>(o.step);
-    s.lowerBound = o.lowerBound;
-    s.upperBound = o.upperBound;
-    for (int k = 0; k < 3; ++k) s.origin[k] = o.origin[k];
-    rtl_ops::VectorizeParams v;
-    v.method = static_cast<rtl_ops::Method>(o.method);
-    v.dim = o.dim;
-    v.sigma = o.sigma;
-    v.delta = o.delta;
-    v.epsilon = o.epsilon;
-    v.maxSize = static_cast<std::size_t>(o.maxSize);
-    v.simplexShift = static_cast<std::size_t>(o.simplexShift);
-    v.maxIterations = static_cast<std::size_t>(o.maxIterations);
-    v.split = o.split;
-    v.segmentDistance = o.segmentDistance;
-    v.maxMagnitude = kMaxCoordinate;
+    const rtl_ops::SegmentParams s = rtl_ops::segmentParams(o);
+    const rtl_ops::VectorizeParams v = rtl_ops::vectorizeParams(o, kMaxCoordinate);
     PipelineResults r;
     const double t0 = nowMs();
     const auto min = static_cast<std::size_t>(o.minPoints);

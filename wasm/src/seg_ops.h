@@ -29,6 +29,17 @@ struct SegmentParams {
   double origin[3] = {0, 0, 0};
 };
 
+// The parameters from a binding's options struct with fields step, lowerBound, upperBound, origin (schema.h).
+template <class Options>
+SegmentParams segmentParams(const Options& o) {
+  SegmentParams p;
+  p.step = static_cast<std::size_t>(o.step);
+  p.lowerBound = o.lowerBound;
+  p.upperBound = o.upperBound;
+  for (int k = 0; k < 3; ++k) p.origin[k] = o.origin[k];
+  return p;
+}
+
 struct SegmentOutput {
   std::vector<std::int32_t> labels;        // per point, -1 for gaps
   std::vector<std::uint32_t> indices;      // all clusters' point indices, cluster after cluster

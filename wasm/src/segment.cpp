@@ -47,11 +47,7 @@ val segment(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
     const auto dim = static_cast<std::size_t>(o.dim);
     checkShape("segment", len, dim, 0);
     const double* xyz = doubles(ptr);
-    rtl_ops::SegmentParams p;
-    p.step = static_cast<std::size_t>(o.step);
-    p.lowerBound = o.lowerBound;
-    p.upperBound = o.upperBound;
-    for (int k = 0; k < 3; ++k) p.origin[k] = o.origin[k];
+    const rtl_ops::SegmentParams p = rtl_ops::segmentParams(o);
     rtl_ops::FlatTrace flat;
     rtl_ops::FlatTrace* events = o.trace ? &flat : nullptr;
     SegmentResults r;

@@ -40,6 +40,25 @@ struct VectorizeParams {
   double maxMagnitude = HUGE_VAL;
 };
 
+// The line parameters (plane false) from a binding's options struct with fields dim, method, sigma, delta, epsilon,
+// maxSize, simplexShift, maxIterations, split, segmentDistance (schema.h); coordinates within +-maxMagnitude.
+template <class Options>
+VectorizeParams vectorizeParams(const Options& o, double maxMagnitude) {
+  VectorizeParams p;
+  p.method = static_cast<Method>(o.method);
+  p.dim = o.dim;
+  p.sigma = o.sigma;
+  p.delta = o.delta;
+  p.epsilon = o.epsilon;
+  p.maxSize = static_cast<std::size_t>(o.maxSize);
+  p.simplexShift = static_cast<std::size_t>(o.simplexShift);
+  p.maxIterations = static_cast<std::size_t>(o.maxIterations);
+  p.split = o.split;
+  p.segmentDistance = o.segmentDistance;
+  p.maxMagnitude = maxMagnitude;
+  return p;
+}
+
 // FTLS/AFTLS 2D: a corner that cannot be met within delta (rtl::CornerReport).
 struct Corner {
   std::size_t boundary = 0;

@@ -70,19 +70,8 @@ val vectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
     if (method < 0 || method > 4) throw std::invalid_argument("vectorize: unknown method " + std::to_string(method));
     const double* xyz = doubles(ptr);
     checkShape("vectorize", len, static_cast<std::size_t>(dim), 2);  // the numbers: while copying (vect_ops.h)
-    rtl_ops::VectorizeParams p;
-    p.method = opt.method;
-    p.dim = dim;
+    rtl_ops::VectorizeParams p = rtl_ops::vectorizeParams(opt, kMaxCoordinate);
     p.plane = opt.plane;
-    p.sigma = opt.sigma;
-    p.delta = opt.delta;
-    p.epsilon = opt.epsilon;
-    p.maxSize = static_cast<std::size_t>(opt.maxSize);
-    p.simplexShift = static_cast<std::size_t>(opt.simplexShift);
-    p.maxIterations = static_cast<std::size_t>(opt.maxIterations);
-    p.split = opt.split;
-    p.segmentDistance = opt.segmentDistance;
-    p.maxMagnitude = kMaxCoordinate;
     rtl_ops::FlatTrace flat;
     rtl_ops::FlatTrace* events = opt.trace ? &flat : nullptr;
     VectorizeResults r;

@@ -30,6 +30,21 @@ function describe(v) {
   return `${typeof v} ${String(v)}`;
 }
 
+// The log's topics, one entry per topic name: the type of its first connection and the message count summed over
+// all its connections (a topic recorded by several publishers has several).
+function topicList(connections) {
+  const byTopic = new Map();
+  for (const { topic, type, count } of connections) {
+    const entry = byTopic.get(topic) ?? { name: topic, type, count: 0 };
+    entry.count += count;
+    byTopic.set(topic, entry);
+  }
+  return [...byTopic.values()];
+}
+// A bag's topics from its connections (conn -> { topic, type }) and message counts per connection.
+const bagTopics = (connections, counts) =>
+  topicList([...connections.values()].map((c) => ({ topic: c.topic, type: c.type ?? '', count: counts.get(c.conn) ?? 0 })));
+
 async function need(pkg, file) {
   try {
     return await import(pkg);
@@ -298,14 +313,9 @@ async function openMcapStream(src, decompressHandlers, indexError) {
   if (channels.size === 0)
     throw new LogError(stop ? 'TRUNCATED' : 'FORMAT', `openLog: ${file}: unreadable MCAP (index: ${indexError.message}` +
                        `${stop ? `; stream: ${stop.message}` : ''})`, { file, cause: stop ?? indexError });
-  const byTopic = new Map();
-  for (const ch of channels.values()) {
-    const entry = byTopic.get(ch.topic) ?? { name: ch.topic, type: schemas.get(ch.schemaId)?.name ?? '', count: 0 };
-    entry.count += counts.get(ch.id) ?? 0;
-    byTopic.set(ch.topic, entry);
-  }
   const log = {
-    format: 'mcap', file, topics: [...byTopic.values()],
+    format: 'mcap', file,
+    topics: topicList([...channels.values()].map((ch) => ({ topic: ch.topic, type: schemas.get(ch.schemaId)?.name ?? '', count: counts.get(ch.id) ?? 0 }))),
     /** the log has no usable index and is read front to back: why, and what stopped the first pass (if anything) */
     unindexed: { reason: indexError.message, stoppedBy: stop?.message },
     scans(topic, opts = {}) {
@@ -363,14 +373,8 @@ async function openBag(src) {
   }
   const counts = new Map();
   for (const info of bag.chunkInfos) for (const { conn, count } of info.connections) counts.set(conn, (counts.get(conn) ?? 0) + count);
-  const byTopic = new Map();
-  for (const c of bag.connections.values()) {
-    const entry = byTopic.get(c.topic) ?? { name: c.topic, type: c.type ?? '', count: 0 };
-    entry.count += counts.get(c.conn) ?? 0;
-    byTopic.set(c.topic, entry);
-  }
   const log = {
-    format: 'bag', file, topics: [...byTopic.values()],
+    format: 'bag', file, topics: bagTopics(bag.connections, counts),
     scans(topic, opts = {}) {
       const { start, end, kind } = checkTopic(log, topic, opts);
       const toTime = (ns) => ({ sec: Number(ns / 1000000000n), nsec: Number(ns % 1000000000n) });
@@ -516,14 +520,8 @@ async function openBagStream(src, decompress, indexError) {
   if (connections.size === 0)
     throw new LogError(stop ? 'TRUNCATED' : 'FORMAT', `openLog: ${file}: unreadable ROS bag (index: ${indexError.message}` +
                        `${stop ? `; records: ${stop.message}` : ''})`, { file, cause: stop ?? indexError });
-  const byTopic = new Map();
-  for (const c of connections.values()) {
-    const entry = byTopic.get(c.topic) ?? { name: c.topic, type: c.type ?? '', count: 0 };
-    entry.count += counts.get(c.conn) ?? 0;
-    byTopic.set(c.topic, entry);
-  }
   const log = {
-    format: 'bag', file, topics: [...byTopic.values()],
+    format: 'bag', file, topics: bagTopics(connections, counts),
     /** the bag has no usable index and is read front to back (messages in file order): why, and what stopped the
      *  first pass (if anything) */
     unindexed: { reason: indexError.message, stoppedBy: stop?.message },
