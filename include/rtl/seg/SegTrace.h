@@ -32,6 +32,59 @@
 
 namespace rtl
 {
+    //! The events CAR_Segmenter and IA_Segmenter share, the same steps of the same test (car_trace and ia_trace
+    //! name them too). Indices are scan (CAR) or stream (IA) indices.
+    namespace seg_trace
+    {
+        //! Point i's threshold: range = |p_i - origin|, raw = scaling * range, threshold = raw clamped to the
+        //! segmenter's bounds (the radius of the circle around p_i within which an earlier point is close).
+        struct Threshold
+        {
+            static constexpr const char *kind = "threshold";
+            size_t i;
+            double range, raw, threshold;
+            template<class F> void fields(F &&f) const
+            {
+                f("i", i); f("range", range); f("raw", raw); f("threshold", threshold);
+            }
+        };
+
+        //! Point i compared with an earlier point j of its window (CAR: the step - 1 previous scan points; IA: the
+        //! step previous stream points; gaps are never compared). linked: distance <= i's threshold. A linked j
+        //! already in i's cluster changes nothing.
+        struct Compare
+        {
+            static constexpr const char *kind = "compare";
+            size_t i, j;
+            double distance, threshold;
+            bool linked;
+            template<class F> void fields(F &&f) const
+            {
+                f("i", i); f("j", j); f("distance", distance); f("threshold", threshold); f("linked", linked);
+            }
+        };
+
+        //! Point i joins the cluster of j (`cluster`: CAR's label, the cluster's smallest scan index; IA's cluster
+        //! id): its first linked comparison.
+        struct Link
+        {
+            static constexpr const char *kind = "link";
+            size_t i, j, cluster;
+            template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("cluster", cluster); }
+        };
+
+        //! Point i, already in a cluster, is linked to j of another cluster: cluster `from` merges into `into`
+        //! retroactively. CAR: every point of `from` is relabelled, the smaller label survives (into < from); also
+        //! emitted by CAR's seam pass. IA: the older id survives, window and alive points included, alive points
+        //! kept in stream order.
+        struct Merge
+        {
+            static constexpr const char *kind = "merge";
+            size_t i, j, from, into;
+            template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("from", from); f("into", into); }
+        };
+    }
+
     namespace car_trace
     {
         //! loadData starts: the scan's size, the step, the window (step - 1 previous points), the threshold scaling
@@ -56,50 +109,10 @@ namespace rtl
             template<class F> void fields(F &&f) const { f("i", i); }
         };
 
-        //! Point i's threshold: range = |p_i - origin|, raw = scaling * range, threshold = raw clamped to the bounds
-        //! (the radius of the circle around p_i within which an earlier point is close).
-        struct Threshold
-        {
-            static constexpr const char *kind = "threshold";
-            size_t i;
-            double range, raw, threshold;
-            template<class F> void fields(F &&f) const
-            {
-                f("i", i); f("range", range); f("raw", raw); f("threshold", threshold);
-            }
-        };
-
-        //! Point i compared with the earlier point j of its window (1 <= i - j <= step - 1; gaps are not compared).
-        //! linked: j is close enough (distance <= i's threshold). A linked j already in i's cluster changes nothing.
-        struct Compare
-        {
-            static constexpr const char *kind = "compare";
-            size_t i, j;
-            double distance, threshold;
-            bool linked;
-            template<class F> void fields(F &&f) const
-            {
-                f("i", i); f("j", j); f("distance", distance); f("threshold", threshold); f("linked", linked);
-            }
-        };
-
-        //! Point i joins the cluster of j (labelled `cluster`): its first linked comparison.
-        struct Link
-        {
-            static constexpr const char *kind = "link";
-            size_t i, j, cluster;
-            template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("cluster", cluster); }
-        };
-
-        //! Point i, already in a cluster, is linked to j of another cluster: the two clusters merge retroactively,
-        //! every point of cluster `from` moves to cluster `into` (into < from: the smaller label survives). Also
-        //! emitted by the seam pass (i near the beginning, j near the end of the scan).
-        struct Merge
-        {
-            static constexpr const char *kind = "merge";
-            size_t i, j, from, into;
-            template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("from", from); f("into", into); }
-        };
+        using seg_trace::Threshold;
+        using seg_trace::Compare;
+        using seg_trace::Link;
+        using seg_trace::Merge;
 
         //! Point i is close to no earlier point of its window: it starts a new cluster, labelled i.
         struct Start
@@ -150,48 +163,10 @@ namespace rtl
             template<class F> void fields(F &&f) const { f("i", i); f("gap", gap); }
         };
 
-        //! The new point's threshold: range = |p_i - origin|, raw = scaling * range, threshold = raw clamped.
-        struct Threshold
-        {
-            static constexpr const char *kind = "threshold";
-            size_t i;
-            double range, raw, threshold;
-            template<class F> void fields(F &&f) const
-            {
-                f("i", i); f("range", range); f("raw", raw); f("threshold", threshold);
-            }
-        };
-
-        //! The new point i compared with window point j (the window holds the `step` previous points; gaps are not
-        //! compared). linked: distance <= i's threshold.
-        struct Compare
-        {
-            static constexpr const char *kind = "compare";
-            size_t i, j;
-            double distance, threshold;
-            bool linked;
-            template<class F> void fields(F &&f) const
-            {
-                f("i", i); f("j", j); f("distance", distance); f("threshold", threshold); f("linked", linked);
-            }
-        };
-
-        //! Point i joins cluster `cluster` (the id of j's cluster): its first linked comparison.
-        struct Link
-        {
-            static constexpr const char *kind = "link";
-            size_t i, j, cluster;
-            template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("cluster", cluster); }
-        };
-
-        //! Point i, already in a cluster, is linked to j of another cluster: cluster `from` merges into `into` (the
-        //! older id survives), window and alive points included, alive points kept in stream order.
-        struct Merge
-        {
-            static constexpr const char *kind = "merge";
-            size_t i, j, from, into;
-            template<class F> void fields(F &&f) const { f("i", i); f("j", j); f("from", from); f("into", into); }
-        };
+        using seg_trace::Threshold;
+        using seg_trace::Compare;
+        using seg_trace::Link;
+        using seg_trace::Merge;
 
         //! Point i is close to no window point: it opens a new cluster with id `cluster` (ids grow from 0).
         struct Open
