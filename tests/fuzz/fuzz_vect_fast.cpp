@@ -224,31 +224,8 @@ namespace
         const bool raw = scale_code & 0x80, split = mode & 8;
         const int max_exp = sizeof(T) == 4 ? 100 : 900;
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
-        std::vector<rtl::VectorND<2, T>> pts;
-        while (in.n > 0 && pts.size() < (mode & 16 ? max_repeated_points : max_points))
-        {
-            rtl::VectorND<2, T> v;
-            for (int k = 0; k < 2; ++k)
-            {
-                if (raw)
-                {
-                    unsigned char b[sizeof(T)];
-                    for (auto &c : b) c = in.next();
-                    T x;
-                    std::memcpy(&x, b, sizeof(T));
-                    v[k] = x;
-                }
-                else
-                {
-                    const auto hi = in.next(), lo = in.next();
-                    v[k] = static_cast<T>(static_cast<std::int16_t>(hi << 8 | lo) * scale);
-                }
-            }
-            pts.push_back(v);
-            if (mode & 16)
-                for (int copies = in.next(); copies > 0 && pts.size() < max_repeated_points; --copies)
-                    pts.push_back(v);
-        }
+        const bool runs = mode & 16;
+        const auto pts = fuzz::readPoints<rtl::VectorND<2, T>, 2>(in, raw, scale, runs ? max_repeated_points : max_points, runs);
         // sigma and delta: (1 + mantissa) * 2^exponent times the coordinate unit (raw: times 1); extreme: anywhere.
         const double unit = raw ? 1.0 : scale * 64;
         const T sigma = mode & 32 ? extreme<T>(sigma_code) : static_cast<T>((1 + (sigma_code & 7)) * std::ldexp(1.0, (sigma_code >> 3) - 24) * unit);
@@ -308,31 +285,8 @@ namespace
         const bool raw = scale_code & 0x80;
         const int max_exp = sizeof(T) == 4 ? 60 : 300;   // squared moments stay finite in double
         const double scale = std::ldexp(1.0, ((scale_code & 0x7f) - 64) * max_exp / 64);
-        std::vector<rtl::VectorND<3, T>> pts;
-        while (in.n > 0 && pts.size() < (mode & 16 ? max_repeated_points : max_points))
-        {
-            rtl::VectorND<3, T> v;
-            for (int k = 0; k < 3; ++k)
-            {
-                if (raw)
-                {
-                    unsigned char b[sizeof(T)];
-                    for (auto &c : b) c = in.next();
-                    T x;
-                    std::memcpy(&x, b, sizeof(T));
-                    v[k] = x;
-                }
-                else
-                {
-                    const auto hi = in.next(), lo = in.next();
-                    v[k] = static_cast<T>(static_cast<std::int16_t>(hi << 8 | lo) * scale);
-                }
-            }
-            pts.push_back(v);
-            if (mode & 16)
-                for (int copies = in.next(); copies > 0 && pts.size() < max_repeated_points; --copies)
-                    pts.push_back(v);
-        }
+        const bool runs = mode & 16;
+        const auto pts = fuzz::readPoints<rtl::VectorND<3, T>, 3>(in, raw, scale, runs ? max_repeated_points : max_points, runs);
         const T sigma = mode & 32 ? extreme<T>(sigma_code)
                                   : static_cast<T>((1 + (sigma_code & 7)) * std::ldexp(1.0, (sigma_code >> 3) - 24) * (raw ? 1.0 : scale * 64));
         LD extent = 0;

@@ -242,28 +242,7 @@ namespace
         const int max_exp = sizeof(T) == 4 ? 100 : 900;
         const int exp = (scale_code & 0x7f) - 64;
         const double scale = std::ldexp(1.0, exp * max_exp / 64);
-        std::vector<rtl::VectorND<d, T>> pts;
-        while (in.n > 0 && pts.size() < 400)
-        {
-            rtl::VectorND<d, T> v;
-            for (int k = 0; k < d; ++k)
-            {
-                if (raw)
-                {
-                    unsigned char b[sizeof(T)];
-                    for (auto &c : b) c = in.next();
-                    T x;
-                    std::memcpy(&x, b, sizeof(T));
-                    v[k] = x;
-                }
-                else
-                {
-                    const auto hi = in.next(), lo = in.next();
-                    v[k] = static_cast<T>(static_cast<std::int16_t>(hi << 8 | lo) * scale);
-                }
-            }
-            pts.push_back(v);
-        }
+        const auto pts = fuzz::readPoints<rtl::VectorND<d, T>, d>(in, raw, scale, 400);
         const size_t n = pts.size();
         const T eps = static_cast<T>((1 + (eps_code & 7)) * std::ldexp(1.0, ((eps_code >> 3) - 16) * max_exp / 16) * (raw ? 1 : scale * 64));
         bool all_finite = true, keep_going = true;
