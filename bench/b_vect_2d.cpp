@@ -11,6 +11,7 @@
 
 #include "bench_semicircle.h"
 #include "bench_util.h"
+#include "scan_chains.h"
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 
@@ -26,16 +27,6 @@ namespace
             x += px; y += py; x2 += px * px; y2 += py * py; xy += px * py;
         }
         return x + y + x2 + y2 + xy;
-    }
-
-    std::string note(size_t segments, double published = 0, double goal_factor = 2)
-    {
-        char buf[128];
-        if (published > 0)
-            std::snprintf(buf, sizeof buf, "segs=%zu  published=%.2e goal=%.2e", segments, published, published * goal_factor);
-        else
-            std::snprintf(buf, sizeof buf, "segs=%zu", segments);
-        return buf;
     }
 
     //! The five vectorizers on one set of chains; times are summed over the chains.
@@ -70,11 +61,11 @@ namespace
 
         rtl::bench::printHeader(title);
         rtl::bench::printRow("floor (x, y, x2, y2, xy pass)", points, t_floor, t_floor);
-        rtl::bench::printRow("Reumann-Witkam eps 0.09", points, t_rw, t_floor, note(s_rw, published ? 6.5e8 : 0));
-        rtl::bench::printRow("Douglas-Peucker eps 0.09", points, t_dp, t_floor, note(s_dp, published ? 1.2e8 : 0));
-        rtl::bench::printRow("incremental TLS sigma 0.03", points, t_itls, t_floor, note(s_itls, published ? 3.8e7 : 0, 5));
-        rtl::bench::printRow("FTLS sigma 0.03 delta 3", points, t_ftls, t_floor, note(s_ftls, published ? 2.35e8 : 0));
-        rtl::bench::printRow("AFTLS sigma 0.03 delta 3", points, t_aftls, t_floor, note(s_aftls, published ? 2.1e8 : 0));
+        rtl::bench::printRow("Reumann-Witkam eps 0.09", points, t_rw, t_floor, rtl::bench::segmentsNote(s_rw, published ? 6.5e8 : 0));
+        rtl::bench::printRow("Douglas-Peucker eps 0.09", points, t_dp, t_floor, rtl::bench::segmentsNote(s_dp, published ? 1.2e8 : 0));
+        rtl::bench::printRow("incremental TLS sigma 0.03", points, t_itls, t_floor, rtl::bench::segmentsNote(s_itls, published ? 3.8e7 : 0, 5));
+        rtl::bench::printRow("FTLS sigma 0.03 delta 3", points, t_ftls, t_floor, rtl::bench::segmentsNote(s_ftls, published ? 2.35e8 : 0));
+        rtl::bench::printRow("AFTLS sigma 0.03 delta 3", points, t_aftls, t_floor, rtl::bench::segmentsNote(s_aftls, published ? 2.1e8 : 0));
         if (!ok)
             std::printf("!! a vectorizer returned false\n");
     }
@@ -95,24 +86,9 @@ int main(int argc, char **argv)
     }
 
     // Real scans: chains of >= 10 finite points split at gaps > 0.5 m.
-    std::vector<std::vector<rtl::Vector2f>> chains;
+    const auto chains = test_data::laserChains(10);
     size_t longest = 0;
-    for (const char *name : {"intel.log", "csail.log"})
-        for (const auto &scan : rtl::readCarmenLogFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name))
-        {
-            std::vector<rtl::Vector2f> cur;
-            const auto flush = [&] {
-                if (cur.size() >= 10) { longest = std::max(longest, cur.size()); chains.push_back(cur); }
-                cur.clear();
-            };
-            for (const auto &p : scan.points)
-            {
-                if (p.hasNaN()) { flush(); continue; }
-                if (!cur.empty() && (p - cur.back()).length() > 0.5f) flush();
-                cur.push_back(p);
-            }
-            flush();
-        }
+    for (const auto &c : chains) longest = std::max(longest, c.size());
     const std::string title = "real laser scans (Intel + CSAIL, 60 scans, " + std::to_string(chains.size()) + " chains)";
     run(title.c_str(), chains, longest, opt.repetitions, false);
     return 0;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench_util.h"
+#include "scan_chains.h"
 #include "rtl/Vectorization.h"
 #include "rtl/io/OrganizedLidar.h"
 
@@ -38,16 +39,6 @@ namespace
             s[0] += x; s[1] += y; s[2] += z; s[3] += x * x; s[4] += y * y; s[5] += z * z; s[6] += x * y; s[7] += y * z; s[8] += z * x;
         }
         return s[0] + s[1] + s[2] + s[3] + s[4] + s[5] + s[6] + s[7] + s[8];
-    }
-
-    std::string note(size_t segments, double published = 0, double goal_factor = 2)
-    {
-        char buf[128];
-        if (published > 0)
-            std::snprintf(buf, sizeof buf, "segs=%zu  published=%.2e goal=%.2e", segments, published, published * goal_factor);
-        else
-            std::snprintf(buf, sizeof buf, "segs=%zu", segments);
-        return buf;
     }
 
     void run(const char *title, const std::vector<std::vector<rtl::Vector3f>> &chains, size_t max_size, int reps, bool published)
@@ -83,12 +74,12 @@ namespace
 
         rtl::bench::printHeader(title);
         rtl::bench::printRow("floor (nine 3D sums pass)", points, t_floor, t_floor);
-        rtl::bench::printRow("Reumann-Witkam 3D eps 0.09", points, t_rw, t_floor, note(s_rw));
-        rtl::bench::printRow("Douglas-Peucker 3D eps 0.09", points, t_dp, t_floor, note(s_dp));
-        rtl::bench::printRow("incremental TLS 3D lines", points, t_i, t_floor, note(s_i, published ? 1.1e7 : 0, 5));
-        rtl::bench::printRow("FTLS 3D lines", points, t_f, t_floor, note(s_f, published ? 1.35e8 : 0));
-        rtl::bench::printRow("AFTLS 3D lines", points, t_a, t_floor, note(s_a, published ? 4.2e7 : 0));
-        rtl::bench::printRow("AFTLS 3D planes", points, t_p, t_floor, note(s_p));
+        rtl::bench::printRow("Reumann-Witkam 3D eps 0.09", points, t_rw, t_floor, rtl::bench::segmentsNote(s_rw));
+        rtl::bench::printRow("Douglas-Peucker 3D eps 0.09", points, t_dp, t_floor, rtl::bench::segmentsNote(s_dp));
+        rtl::bench::printRow("incremental TLS 3D lines", points, t_i, t_floor, rtl::bench::segmentsNote(s_i, published ? 1.1e7 : 0, 5));
+        rtl::bench::printRow("FTLS 3D lines", points, t_f, t_floor, rtl::bench::segmentsNote(s_f, published ? 1.35e8 : 0));
+        rtl::bench::printRow("AFTLS 3D lines", points, t_a, t_floor, rtl::bench::segmentsNote(s_a, published ? 4.2e7 : 0));
+        rtl::bench::printRow("AFTLS 3D planes", points, t_p, t_floor, rtl::bench::segmentsNote(s_p));
         if (!ok)
             std::printf("!! a vectorizer returned false\n");
     }
@@ -107,24 +98,9 @@ int main(int argc, char **argv)
         run(title.c_str(), chains, n, opt.repetitions, n == 100000);
     }
 
-    const auto cloud = rtl::readOrganizedLidarFile<float>(std::string(RTL_TEST_DATA_DIR) + "/rellis3d-os1-4x2048.bin", 4);
-    std::vector<std::vector<rtl::Vector3f>> chains;
+    const auto chains = test_data::ousterChains({{"rellis3d-os1-4x2048.bin", 4}}, 10);
     size_t longest = 0;
-    for (size_t b = 0; b < cloud.beams; ++b)
-    {
-        std::vector<rtl::Vector3f> cur;
-        const auto flush = [&] {
-            if (cur.size() >= 10) { longest = std::max(longest, cur.size()); chains.push_back(cur); }
-            cur.clear();
-        };
-        for (const auto &p : cloud.ring(b))
-        {
-            if (p.hasNaN()) { flush(); continue; }
-            if (!cur.empty() && (p - cur.back()).length() > 0.5f) flush();
-            cur.push_back(p);
-        }
-        flush();
-    }
+    for (const auto &c : chains) longest = std::max(longest, c.size());
     const std::string title = "real Ouster rings (4 x 2048, " + std::to_string(chains.size()) + " chains)";
     run(title.c_str(), chains, longest, opt.repetitions, false);
     return 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench_util.h"
+#include "scan_chains.h"
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 
@@ -32,25 +33,6 @@ namespace
             pts.emplace_back(static_cast<float>(8 * std::cos(a) + nd(gen)), static_cast<float>(8 * std::sin(a) + nd(gen)));
         }
         return pts;
-    }
-
-    std::vector<std::vector<rtl::Vector2f>> laserChains()
-    {
-        std::vector<std::vector<rtl::Vector2f>> all;
-        for (const char *name : {"intel.log", "csail.log"})
-            for (const auto &scan : rtl::readCarmenLogFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name))
-            {
-                std::vector<rtl::Vector2f> cur;
-                const auto flush = [&] { if (cur.size() >= 10) all.push_back(cur); cur.clear(); };
-                for (const auto &p : scan.points)
-                {
-                    if (p.hasNaN()) { flush(); continue; }
-                    if (!cur.empty() && (p - cur.back()).length() > 0.5f) flush();
-                    cur.push_back(p);
-                }
-                flush();
-            }
-        return all;
     }
 
     template<class V>
@@ -77,7 +59,7 @@ int main(int argc, char **argv)
 {
     const auto opt = rtl::bench::parseOptions(argc, argv);
     const std::vector<std::vector<rtl::Vector2f>> circle{semicircle(opt.smoke ? 1000 : 100000, 42)};
-    const auto real = laserChains();
+    const auto real = test_data::laserChains(10);
     rtl::VectorizerFTLSPolyline2D<float, double> ftls;
     rtl::VectorizerAFTLSPolyline2D<float, double> aftls;
     ftls.setSigma(0.03f); ftls.setDelta(3.f); ftls.setMaxSize(100000);

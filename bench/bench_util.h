@@ -64,4 +64,16 @@ namespace rtl::bench
                     note.c_str());
         std::fflush(stdout);
     }
+
+    //! A vectorizer row's note: its segment count and, when the paper published a throughput for the case, that
+    //! figure and the goal (goal_factor times it).
+    inline std::string segmentsNote(size_t segments, double published = 0, double goal_factor = 2)
+    {
+        char buf[128];
+        if (published > 0)
+            std::snprintf(buf, sizeof buf, "segs=%zu  published=%.2e goal=%.2e", segments, published, published * goal_factor);
+        else
+            std::snprintf(buf, sizeof buf, "segs=%zu", segments);
+        return buf;
+    }
 }

@@ -10,6 +10,7 @@
 
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
+#include "scan_chains.h"
 #include "vect_reference.h"
 
 using namespace vect_test;
@@ -112,25 +113,6 @@ namespace
         return pts;
     }
 
-    //! Chains of tests/data: runs of finite points with gaps <= 0.5 m, of >= 3 points.
-    std::vector<std::vector<rtl::Vector2f>> laserChains()
-    {
-        std::vector<std::vector<rtl::Vector2f>> all;
-        for (const char *name : {"intel.log", "csail.log"})
-            for (const auto &scan : rtl::readCarmenLogFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name))
-            {
-                std::vector<rtl::Vector2f> cur;
-                const auto flush = [&] { if (cur.size() >= 3) all.push_back(cur); cur.clear(); };
-                for (const auto &p : scan.points)
-                {
-                    if (p.hasNaN()) { flush(); continue; }
-                    if (!cur.empty() && (p - cur.back()).length() > 0.5f) flush();
-                    cur.push_back(p);
-                }
-                flush();
-            }
-        return all;
-    }
 }
 
 // The search decides exactly what brute force over every partition decides, finds the fewest ranges, and in
@@ -290,7 +272,7 @@ TEST(VectorizerFTLS, FailureReportAndSplitModeOnANoiseFreeL)
 // and split mode covers every chain (sharing points only where no partition fits at all: t_split_cover.cpp).
 TEST(RealScans, AftlsNeverWorseAndFalseOnlyWhenProvenInfeasible)
 {
-    const auto all = laserChains();
+    const auto all = test_data::laserChains(3);
     ASSERT_GT(all.size(), 500u);
     size_t falses = 0, split_breaks = 0, covers = 0;
     for (const auto &[sigma, delta] : {std::pair{0.03, 0.3}, std::pair{0.03, 1.0}, std::pair{0.01, 0.3}})

@@ -12,6 +12,7 @@
 
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
+#include "scan_chains.h"
 #include "vect_reference.h"
 
 using namespace vect_test;
@@ -147,29 +148,10 @@ namespace
         return r.chosen && !r.infeasible ? r.ranges[r.kept] : r.ranges[0];
     }
 
-    std::vector<std::vector<rtl::Vector2f>> laserChains()
-    {
-        std::vector<std::vector<rtl::Vector2f>> all;
-        for (const char *name : {"intel.log", "csail.log"})
-            for (const auto &scan : rtl::readCarmenLogFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name))
-            {
-                std::vector<rtl::Vector2f> cur;
-                const auto flush = [&] { if (cur.size() >= 3) all.push_back(cur); cur.clear(); };
-                for (const auto &p : scan.points)
-                {
-                    if (p.hasNaN()) { flush(); continue; }
-                    if (!cur.empty() && (p - cur.back()).length() > 0.5f) flush();
-                    cur.push_back(p);
-                }
-                flush();
-            }
-        return all;
-    }
-
     template<class Traced, class Plain>
     void checkAll(const char *name)
     {
-        const auto all = laserChains();
+        const auto all = test_data::laserChains(3);
         size_t repairs = 0, moves = 0, infeasible = 0, trials = 0, covers = 0;
         for (const auto &[sigma, delta] : {std::pair{0.03, 0.3}, std::pair{0.03, 3.0}, std::pair{0.01, 0.3}})
             for (bool split : {false, true})

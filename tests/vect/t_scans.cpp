@@ -10,44 +10,14 @@
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 #include "rtl/io/OrganizedLidar.h"
+#include "scan_chains.h"
 #include "vect_reference.h"
 
 using namespace vect_test;
+using test_data::chains;
 
 namespace
 {
-    //! Splits a scan into chains: runs of finite points whose consecutive distance stays below `gap`.
-    template<int d>
-    std::vector<std::vector<rtl::VectorND<d, float>>> chains(const std::vector<rtl::VectorND<d, float>> &pts, float gap, size_t min_size)
-    {
-        std::vector<std::vector<rtl::VectorND<d, float>>> out;
-        std::vector<rtl::VectorND<d, float>> cur;
-        const auto flush = [&] {
-            if (cur.size() >= min_size)
-                out.push_back(cur);
-            cur.clear();
-        };
-        for (const auto &p : pts)
-        {
-            if (p.hasNaN()) { flush(); continue; }
-            if (!cur.empty() && (p - cur.back()).length() > gap)
-                flush();
-            cur.push_back(p);
-        }
-        flush();
-        return out;
-    }
-
-    std::vector<std::vector<rtl::Vector2f>> laserChains()
-    {
-        std::vector<std::vector<rtl::Vector2f>> all;
-        for (const char *name : {"intel.log", "csail.log"})
-            for (const auto &scan : rtl::readCarmenLogFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name))
-                for (auto &c : chains<2>(scan.points, 0.5f, 10))
-                    all.push_back(std::move(c));
-        return all;
-    }
-
     template<class V>
     void checkPolyline(const V &vec, const std::vector<rtl::Vector2f> &pts, double delta)
     {
@@ -65,7 +35,7 @@ namespace
 
 TEST(RealScans, LaserChains2D)
 {
-    const auto all = laserChains();
+    const auto all = test_data::laserChains(10);
     ASSERT_GT(all.size(), 100u);
     size_t points = 0, segments = 0;
     // The papers' setting and a tighter delta with a looser sigma: every chain has a valid result.
@@ -192,7 +162,7 @@ namespace
 // Where FTLS returns false (tight delta or sigma below the sensor noise), no valid result exists at all.
 TEST(RealScans, FalseOnlyWithoutAnyValidPartition)
 {
-    const auto all = laserChains();
+    const auto all = test_data::laserChains(10);
     size_t falses = 0;
     for (const auto &[sigma, delta] : {std::pair{0.03, 0.3}, std::pair{0.03, 1.0}, std::pair{0.01, 1.0}})
     {

@@ -13,6 +13,7 @@
 #include "rtl/Vectorization.h"
 #include "rtl/io/CarmenLog.h"
 #include "rtl/io/OrganizedLidar.h"
+#include "scan_chains.h"
 #include "vect_reference.h"
 
 using namespace vect_test;
@@ -352,48 +353,6 @@ namespace
         }
     }
 
-    //! Chains of a scan: runs of finite points whose consecutive distance stays below `gap` (as t_scans.cpp).
-    template<int d>
-    std::vector<std::vector<rtl::VectorND<d, float>>> chains(const std::vector<rtl::VectorND<d, float>> &pts, float gap, size_t min_size)
-    {
-        std::vector<std::vector<rtl::VectorND<d, float>>> out;
-        std::vector<rtl::VectorND<d, float>> cur;
-        const auto flush = [&] {
-            if (cur.size() >= min_size) out.push_back(cur);
-            cur.clear();
-        };
-        for (const auto &p : pts)
-        {
-            if (p.hasNaN()) { flush(); continue; }
-            if (!cur.empty() && (p - cur.back()).length() > gap) flush();
-            cur.push_back(p);
-        }
-        flush();
-        return out;
-    }
-
-    std::vector<std::vector<rtl::Vector2f>> laserChains()
-    {
-        std::vector<std::vector<rtl::Vector2f>> all;
-        for (const char *name : {"intel.log", "csail.log"})
-            for (const auto &scan : rtl::readCarmenLogFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name))
-                for (auto &c : chains<2>(scan.points, 0.5f, 10))
-                    all.push_back(std::move(c));
-        return all;
-    }
-
-    std::vector<std::vector<rtl::Vector3f>> ousterChains()
-    {
-        std::vector<std::vector<rtl::Vector3f>> all;
-        for (const auto &[name, beams] : {std::pair{"rellis3d-os1-4x2048.bin", 4}, std::pair{"rellis3d-os1-16x2048.bin", 16}})
-        {
-            const auto cloud = rtl::readOrganizedLidarFile<float>(std::string(RTL_TEST_DATA_DIR) + "/" + name, beams);
-            for (size_t b = 0; b < cloud.beams; ++b)
-                for (auto &c : chains<3>(cloud.ring(b), 0.5f, 10))
-                    all.push_back(std::move(c));
-        }
-        return all;
-    }
 
     template<int d>
     std::vector<rtl::VectorND<d, double>> asDouble(const std::vector<rtl::VectorND<d, float>> &pts)
@@ -627,7 +586,7 @@ TEST(TraceSimplify, NullObserverAndFailedCallsRecordNothing)
 
 TEST(TraceSimplify, RealLaserChainsItls)
 {
-    const auto all = laserChains();
+    const auto all = test_data::laserChains(10);
     ASSERT_GT(all.size(), 100u);
     rtl::ItlsTraceLog log;
     size_t tails = 0, closes = 0;
@@ -653,7 +612,7 @@ TEST(TraceSimplify, RealLaserChainsItls)
 
 TEST(TraceSimplify, RealOusterChainsItls)
 {
-    const auto all = ousterChains();
+    const auto all = test_data::ousterChains({{"rellis3d-os1-4x2048.bin", 4}, {"rellis3d-os1-16x2048.bin", 16}}, 10);
     ASSERT_GT(all.size(), 40u);
     rtl::ItlsTraceLog log;
     rtl::VectorizerITLSProjections3D<float, double> plain;
@@ -671,7 +630,7 @@ TEST(TraceSimplify, RealOusterChainsItls)
 
 TEST(TraceSimplify, RealLaserChainsDouglasPeuckerAndReumannWitkam)
 {
-    const auto all = laserChains();
+    const auto all = test_data::laserChains(10);
     rtl::DpTraceLog dlog;
     rtl::RwTraceLog rlog;
     size_t splits = 0, exits = 0;
@@ -706,7 +665,7 @@ TEST(TraceSimplify, RealLaserChainsDouglasPeuckerAndReumannWitkam)
 
 TEST(TraceSimplify, RealOusterChainsDouglasPeuckerAndReumannWitkam)
 {
-    const auto all = ousterChains();
+    const auto all = test_data::ousterChains({{"rellis3d-os1-4x2048.bin", 4}, {"rellis3d-os1-16x2048.bin", 16}}, 10);
     rtl::DpTraceLog dlog;
     rtl::RwTraceLog rlog;
     rtl::VectorizerDouglasPeucker3f dp(0.09f);
