@@ -98,6 +98,10 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
     assert.match(texts[2], /normal/);
     assert.ok(texts[2].includes(s.fit.normal[0].toFixed(3)));
     assert.match(texts[3], /Ordinary least squares/);
+    // the bundled wall: steep in the frame, vertical residuals many times the orthogonal ones
+    const deg = Math.atan2(Math.abs(s.fit.normal[0]), Math.abs(s.fit.normal[1])) * 180 / Math.PI;
+    assert.ok(texts[3].includes(`runs at ${deg.toFixed(1)}° to the x axis`), texts[3]);
+    assert.match(texts[3], /wrong model/);
     assert.ok(texts[4].includes(`${(s.fit.rms * 1000).toFixed(1)} mm`));
     assert.match(texts[4], /below σ/);
     assert.equal((await lessonState(page)).step, 4);
@@ -184,6 +188,9 @@ describe('TLS line-fit lesson in Chromium', { timeout: 180000 }, () => {
       assert.ok(first.includes(`The ${s.indices.length} points are ${where}`), first);
       assert.doesNotMatch(first, /Intel/);
       assert.equal(await page.textContent('select[name="point"] option:last-child'), `beam ${s.indices[s.indices.length - 1]}`);
+      await goStep(page, 3);
+      const deg = Math.atan2(Math.abs(s.fit.normal[0]), Math.abs(s.fit.normal[1])) * 180 / Math.PI;
+      assert.ok((await page.textContent('#lesson-text')).includes(`This wall runs at ${deg.toFixed(1)}° to the x axis`));
     }
   });
 

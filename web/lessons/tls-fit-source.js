@@ -29,7 +29,7 @@ async function bundled(host) {
   }
   return { ...EXCERPT, points, indices, word: 'beam', origin: 'excerpt',
     where: `Intel Research Lab, scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}`,
-    why: 'a wall seen nearly edge-on, so vertical and orthogonal residuals differ by a factor of about nine.' };
+    why: 'A wall seen nearly edge-on, so vertical and orthogonal residuals differ by a factor of about nine.' };
 }
 
 // The longest FTLS range of the scan: { cluster, first, end } in the cluster's chain indices, or null when no range
@@ -62,16 +62,16 @@ export async function tlsFitPoints(host) {
     const own = await bundled(host);
     return { ...own, origin: 'fallback',
       why: `${name} has no straight run of ${MIN_RUN} or more points (FTLS, σ = ${SOURCE_SIGMA * 100} cm, finds none), so the lesson shows its own ` +
-        `excerpt, ${own.where}: ${own.why}` };
+        `excerpt, ${own.where}. ${own.why}` };
   }
   const cut = Math.max(0, Math.floor((run.n - MAX_RUN) / 2));
   const first = run.first + cut, end = Math.min(run.end, first + MAX_RUN);
   const indices = Array.from(result.clusters[run.cluster].indices.subarray(first, end));
   const points = Array.from(host.data.gather(scan.points, indices));
   const word = wordFor(host.data, src.dataset);
-  const whole = run.n > end - first ? ` (the middle ${end - first} of its ${run.n} points)` : '';
+  const whole = run.n > end - first ? `; the middle ${end - first} of its ${run.n} points` : '';
   return { dataset: src.dataset, scan: src.scan, firstBeam: indices[0], lastBeam: indices[indices.length - 1], points, indices,
     word, origin: 'source', where: `${name}, ${word}s ${indices[0]}–${indices[indices.length - 1]}`,
     why: `Your chosen scan: its straightest long run, the longest range that the package's FTLS fits within σ = ${SOURCE_SIGMA * 100} cm ` +
-      `(cluster ${run.cluster + 1}, segmented with step ${SOURCE_SEGMENT.step}, bounds ${SOURCE_SEGMENT.lowerBound}–${SOURCE_SEGMENT.upperBound} m)${whole}.` };
+      `(cluster ${run.cluster + 1} of the scan segmented with step ${SOURCE_SEGMENT.step}, bounds ${SOURCE_SEGMENT.lowerBound}–${SOURCE_SEGMENT.upperBound} m${whole}).` };
 }

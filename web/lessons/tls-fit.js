@@ -15,12 +15,12 @@ const f3 = (v) => (Number.isFinite(v) ? v.toFixed(3) : '–');
 // where and why name the user's file: text, never markup, in the note and the explanation.
 const escapeHtml = (t) => t.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 const mm = (v) => (Number.isFinite(v) ? `${(v * 1000).toFixed(1)} mm` : '–');
-// What the two RMS say about this wall's slope in the frame (the bundled wall: vertical about nine times orthogonal).
-const steepness = (olsRms, tlsRms) => {
-  const r = olsRms / tlsRms;
-  return r >= 2
-    ? `This wall is steep in the frame, so its vertical residuals are much longer: OLS vertical RMS ${mm(olsRms)}, ${r.toFixed(1)} times the orthogonal ${mm(tlsRms)}.`
-    : `This wall lies close to the x axis, so its vertical residuals are nearly its orthogonal ones: OLS vertical RMS ${mm(olsRms)} against ${mm(tlsRms)}; a steeper wall parts them.`;
+// The wall's angle to the x axis (from the package's direction) and what it does to vertical residuals: the bundled
+// wall runs at 84°, where they are about nine times the orthogonal ones.
+const steepness = (direction, olsRms, tlsRms) => {
+  const deg = Math.atan2(Math.abs(direction[1]), Math.abs(direction[0])) * 180 / Math.PI, r = olsRms / tlsRms;
+  return `This wall runs at ${deg.toFixed(1)}° to the x axis: OLS vertical RMS ${mm(olsRms)} against the orthogonal ${mm(tlsRms)}, ${r.toFixed(1)} times` +
+    (r >= 2 ? ', so measuring errors vertically is the wrong model here.' : '; the steeper a wall, the further the two part.');
 };
 
 // Teaching comparison, not the package: OLS regresses y on x (vertical residuals), y = slope * x + intercept.
@@ -223,7 +223,7 @@ export default {
           centroid: `Step 1 of 5 · centroid. The ${n} points are ${escapeHtml(run.where)}, ${run.origin === 'source' ? 'a straight run of your chosen scan' : 'a wall'} in the robot frame. The best line in the total-least-squares sense always passes through <span data-q="centroid">their centroid (×) = (${f3(cx)}, ${f3(cy)}) m</span>, so only its direction is left to find.`,
           spread: `Step 2 of 5 · spread. Around the centroid the points spread as the covariance matrix [[${spread.sxx.toExponential(2)}, ${spread.sxy.toExponential(2)}], [${spread.sxy.toExponential(2)}, ${spread.syy.toExponential(2)}]] m². Its eigenvectors are the axes drawn: <span data-q="major">the long green one along the wall (λ = ${lmax.toExponential(2)} m²)</span>, <span data-q="minor">the short pink one across it (λ = ${lmin.toExponential(2)} m²)</span>.`,
           normal: `Step 3 of 5 · normal. The normal of the fitted line is the eigenvector of the smaller eigenvalue: <span data-q="normal">n = (${f3(a)}, ${f3(b)})</span>, so <span data-q="line">the line is ${f3(a)}·x + ${f3(b)}·y ${c < 0 ? '−' : '+'} ${f3(Math.abs(c))} = 0</span> (package fitLine). Turning the line any other way around the centroid would increase the sum of squared orthogonal distances.`,
-          residuals: `Step 4 of 5 · residuals. TLS measures <span data-q="residuals">each point's orthogonal distance to the line (solid blue)</span>. Ordinary least squares (dashed orange, a teaching comparison computed in this page, not by the package) measures <span data-q="vertical">vertical distances</span>: <span data-q="ols">y = ${f3(ols.slope)}·x ${ols.intercept < 0 ? '−' : '+'} ${f3(Math.abs(ols.intercept))}</span>. ${steepness(olsRms, fit.rms)} Vertical residuals depend on how the axes happen to lie, which a wall does not care about.`,
+          residuals: `Step 4 of 5 · residuals. TLS measures <span data-q="residuals">each point's orthogonal distance to the line (solid blue)</span>. Ordinary least squares (dashed orange, a teaching comparison computed in this page, not by the package) measures <span data-q="vertical">vertical distances</span>: <span data-q="ols">y = ${f3(ols.slope)}·x ${ols.intercept < 0 ? '−' : '+'} ${f3(Math.abs(ols.intercept))}</span>. ${steepness(fit.direction, olsRms, fit.rms)} Vertical residuals depend on how the axes happen to lie, which a wall does not care about.`,
           rms: `Step 5 of 5 · RMS against σ. The RMS <span data-q="residuals">orthogonal distance</span> is √λmin = ${mm(fit.rms)} (package fitLine), against σ = ${mm(sigma)}: ${fit.rms < sigma ? 'below σ, so FTLS would accept these points as one segment.' : 'above σ, so FTLS would not accept these points as one segment and would split them.'} Drag a point away from the wall and watch both the RMS and the OLS line react.`,
         }[name];
         host.text.innerHTML = `<p>${text}</p>`;
