@@ -43,7 +43,7 @@ function haloOf(it) {
   const h = { ...it, colour: HALO, dash: false, width: (it.width ?? 1.5) + 6 };
   if (it.type === 'points') h.radius = (it.radius ?? 2.5) + 3.5;
   if (it.type === 'marker') { h.size = (it.size ?? 7) + 3; h.shape = it.shape === 'x' ? 'x' : 'dot'; }
-  if (it.type === 'label') h.bold = true;
+  if (it.type === 'label') { h.bold = true; h.glow = true; }
   if (it.type === 'strip') h.colour = '#FFC400';
   if (it.type === 'circle') h.fill = undefined;
   return h;
@@ -233,8 +233,8 @@ export class Figure {
     const w = ctx.measureText(it.text).width, line = 1.2 * size;
     const x = v.X(it.x) + (it.offset?.[0] ?? 6) * d, y0 = v.Y(it.y) + (it.offset?.[1] ?? -6) * d;
     const box = (y) => ({ x0: x, x1: x + w, y0: y - 0.85 * size, y1: y + 0.25 * size });
-    // a word's space apart, so that two names never read as one ("map x robot")
-    const gap = 0.5 * size;
+    // names on one line stay a clear gap apart, so that two never read as one ("map x robot = sensor")
+    const gap = 1.5 * size;
     const free = (b) => this.labels.every((o) => b.x1 + gap <= o.x0 || b.x0 >= o.x1 + gap || b.y1 <= o.y0 || b.y0 >= o.y1);
     let y = y0;
     for (const k of [0, 1, -1, 2, -2, 3, -3]) if (free(box(y0 + k * line))) { y = y0 + k * line; break; }
@@ -311,7 +311,16 @@ export class Figure {
       case 'label':
         ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * v.t}px system-ui, sans-serif`;
         ctx.fillStyle = it.colour ?? INK.segment;
-        ctx.fillText(it.text, ...(at ?? [v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d]));
+        {
+          const [x, y] = at ?? [v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d];
+          // a white edge keeps a name readable where it crosses a line or points (an axis, a scan); a highlighted
+          // name's halo is a wider glow in the halo colour, drawn first, so it shows outside that edge
+          ctx.save();
+          ctx.strokeStyle = it.glow ? HALO : 'rgba(255,255,255,0.9)'; ctx.lineWidth = (it.glow ? 7 : 3) * v.t; ctx.lineJoin = 'round';
+          ctx.strokeText(it.text, x, y);
+          ctx.restore();
+          ctx.fillText(it.text, x, y);
+        }
         break;
       default:
         throw new TypeError(`Figure: unknown item type ${it.type}`);

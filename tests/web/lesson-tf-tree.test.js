@@ -147,6 +147,12 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
             const apart = a.x1 + gap <= b.x0 || a.x0 >= b.x1 + gap || a.y1 <= b.y0 || a.y0 >= b.y1;
             assert.ok(apart, `${width}x${height}${lecture ? ' lecture' : ''}, mount ${angle}°, step ${k + 1}: "${a.text}" covers "${b.text}"`);
           }
+          if (k >= 2) {
+            // in the map frame the map's name sits under its origin, clear of its x axis (the line y = 0)
+            const origin = await page.evaluate(() => { const p = window.__rtl.clientPoint(0, 0), r = document.querySelector('#canvas').getBoundingClientRect(); return p.y - r.top; });
+            const map = labels.find((l) => l.text === 'map');
+            assert.ok(map.y0 > origin + 1, `${width}x${height}${lecture ? ' lecture' : ''}, step ${k + 1}: "map" at ${map.y0}..${map.y1}, axis at ${origin}`);
+          }
         }
         if (angle === '0' && width === 390) {
           await goStep(page, 2);
