@@ -43,7 +43,7 @@ function haloOf(it) {
   const h = { ...it, colour: HALO, dash: false, width: (it.width ?? 1.5) + 6 };
   if (it.type === 'points') h.radius = (it.radius ?? 2.5) + 3.5;
   if (it.type === 'marker') { h.size = (it.size ?? 7) + 3; h.shape = it.shape === 'x' ? 'x' : 'dot'; }
-  if (it.type === 'label') h.bold = true;
+  if (it.type === 'label') { h.bold = true; h.glow = true; }
   if (it.type === 'strip') h.colour = '#FFC400';
   if (it.type === 'circle') h.fill = undefined;
   return h;
@@ -191,11 +191,13 @@ export class Figure {
     ctx.fillStyle = '#ffffff';
     ctx.fillRect(0, 0, v.W, v.H);
     this.drawScale();
+    this.labels = [];
     for (const item of this.scene.items) {
-      if (this.highlighted && item.q === this.highlighted) this.drawItem(haloOf(item));
-      this.drawItem(item);
+      const at = item.type === 'label' ? this.placeLabel(item) : null;
+      if (this.highlighted && item.q === this.highlighted) this.drawItem(haloOf(item), at);
+      this.drawItem(item, at);
     }
-    for (const item of this.overlay) this.drawItem(item);
+    for (const item of this.overlay) this.drawItem(item, item.type === 'label' ? this.placeLabel(item) : null);
     const title = this.titleLayout();
     if (this.scene.inset) this.drawInset(this.scene.inset, title.height);
     this.drawTitle(title);
@@ -222,7 +224,31 @@ export class Figure {
     lines.forEach((l, i) => ctx.fillText(l, 8 * d, (14 + 16 * i) * d));
   }
 
-  drawItem(it) {
+  // Where label `it` is drawn (device px, the text's baseline start): at its offset from its point, or, when that
+  // would cover a label drawn before it in this render (frames that nearly coincide, names of nearby points on a
+  // phone's small figure), the nearest of a few places one line below or above that covers none. Records the box.
+  placeLabel(it) {
+    const { ctx } = this, v = this.view, d = v.m, size = (it.bold ? 13 : 12) * v.t;
+    ctx.font = `${it.bold ? '600 ' : ''}${size}px system-ui, sans-serif`;
+    const w = ctx.measureText(it.text).width, line = 1.2 * size;
+    const x = v.X(it.x) + (it.offset?.[0] ?? 6) * d, y0 = v.Y(it.y) + (it.offset?.[1] ?? -6) * d;
+    const box = (y) => ({ x0: x, x1: x + w, y0: y - 0.85 * size, y1: y + 0.25 * size });
+    // names on one line stay a clear gap apart, so that two never read as one ("map x robot = sensor")
+    const gap = 1.5 * size;
+    const free = (b) => this.labels.every((o) => b.x1 + gap <= o.x0 || b.x0 >= o.x1 + gap || b.y1 <= o.y0 || b.y0 >= o.y1);
+    let y = y0;
+    for (const k of [0, 1, -1, 2, -2, 3, -3]) if (free(box(y0 + k * line))) { y = y0 + k * line; break; }
+    this.labels.push({ ...box(y), text: it.text });
+    return [x, y];
+  }
+
+  // The labels of the last render as drawn: { text, x0, y0, x1, y1 } in CSS px of the canvas (tests check overlaps).
+  labelBoxes() {
+    const r = this.view?.dpr ?? 1;
+    return (this.labels ?? []).map((b) => ({ text: b.text, x0: b.x0 / r, y0: b.y0 / r, x1: b.x1 / r, y1: b.y1 / r }));
+  }
+
+  drawItem(it, at = null) {
     const { ctx } = this, v = this.view, d = v.m;
     ctx.setLineDash(it.dash ? [5 * d, 4 * d] : []);
     ctx.lineWidth = (it.width ?? 1.5) * d;
@@ -285,7 +311,16 @@ export class Figure {
       case 'label':
         ctx.font = `${it.bold ? '600 ' : ''}${(it.bold ? 13 : 12) * v.t}px system-ui, sans-serif`;
         ctx.fillStyle = it.colour ?? INK.segment;
-        ctx.fillText(it.text, v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d);
+        {
+          const [x, y] = at ?? [v.X(it.x) + (it.offset?.[0] ?? 6) * d, v.Y(it.y) + (it.offset?.[1] ?? -6) * d];
+          // a white edge keeps a name readable where it crosses a line or points (an axis, a scan); a highlighted
+          // name's halo is a wider glow in the halo colour, drawn first, so it shows outside that edge
+          ctx.save();
+          ctx.strokeStyle = it.glow ? HALO : 'rgba(255,255,255,0.9)'; ctx.lineWidth = (it.glow ? 7 : 3) * v.t; ctx.lineJoin = 'round';
+          ctx.strokeText(it.text, x, y);
+          ctx.restore();
+          ctx.fillText(it.text, x, y);
+        }
         break;
       default:
         throw new TypeError(`Figure: unknown item type ${it.type}`);

@@ -212,6 +212,9 @@ async function main() {
   const textLink = wireTextLink($('lesson-text'), () => state.figure);
   hook.highlighted = () => textLink.current();
   // the figure's title as the scene names it, and the lines the canvas shows of it (wrapped, maybe shortened)
+  hook.figureLabels = () => state.figure?.labelBoxes() ?? [];
+  // the items drawn over the scene (the "your turn" rings and verdict marks), as plain data
+  hook.figureOverlay = () => (state.figure?.overlay ?? []).map((it) => ({ ...it }));
   hook.figureTitle = () => state.figure && { title: state.figure.scene.title, lines: state.figure.titleLayout().lines };
   // the figure's items that draw a quantity of the text, as plain data (tests hover them)
   hook.figureQuantities = () => (state.figure?.scene.items ?? []).filter((it) => it.q)

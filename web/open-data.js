@@ -176,7 +176,9 @@ export function wireOpenData({ data, input, progressBar, message, chooser, onSou
       const o = document.createElement('option');
       o.value = `${name}:${k}`;
       const n = s.returns ?? s.points.length / 2;
-      o.textContent = `${caption}, ${unit} ${k}${unit !== 'ring' && s.ring !== undefined ? ` (ring ${s.ring})` : ''}: ${n} points${s.clusters !== undefined ? `, ${s.clusters} cluster${s.clusters === 1 ? '' : 's'}` : ''}`;
+      // the file is the group's label: the option itself stays short, since a closed drop-down cuts what does not fit
+      o.textContent = `${unit} ${k}${unit !== 'ring' && s.ring !== undefined ? ` (ring ${s.ring})` : ''}: ${n} points${s.clusters !== undefined ? `, ${s.clusters} cluster${s.clusters === 1 ? '' : 's'}` : ''}`;
+      o.title = `${caption}, ${o.textContent}`;
       group.append(o);
     });
     chooser.append(group);

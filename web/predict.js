@@ -10,7 +10,23 @@
 //     points: [{ index, x, y }]              — answer by clicking one of these points of the figure,
 //     check(given) → { right: bool, html },  — the verdict and why, from the trace's numbers;
 //     marks?: [{ x, y }] }                   — points the question is about, ringed in the figure while it is asked.
+// check's verdict may carry marks too: [{ x, y, kind: 'pick' | 'answer', text? }], drawn over the revealed step so
+// that the figure shows the student's pick (a cross) apart from the right answer (a ring), each with its numbers.
 const STORE = 'rtl-predict-score';
+
+// The verdict's marks as figure items: the pick a vermilion cross, the answer a green ring, each labelled.
+const VERDICT_INK = { pick: ['#D55E00', '#A63D00'], answer: ['#009E73', '#00704F'] };
+export function verdictItems(marks) {
+  const items = [];
+  for (const m of marks) {
+    const [mark, ink] = VERDICT_INK[m.kind];
+    items.push(m.kind === 'pick'
+      ? { type: 'marker', x: m.x, y: m.y, shape: 'x', colour: mark, size: 8, verdict: m.kind }
+      : { type: 'marker', x: m.x, y: m.y, colour: mark, size: 11, verdict: m.kind });
+    if (m.text) items.push({ type: 'label', x: m.x, y: m.y, text: m.text, colour: ink, bold: true, offset: [12, m.kind === 'pick' ? 18 : -12], verdict: m.kind });
+  }
+  return items;
+}
 
 export class Predict {
   // root: the question box; toggle: the "your turn" checkbox; player: the page's Player; figure(): the open figure.
@@ -87,6 +103,8 @@ export class Predict {
     try { sessionStorage.setItem(STORE, JSON.stringify(this.score)); } catch { /* private mode: the score stays in memory */ }
     this.verdict = { step, ...verdict };
     this.player.go(step);
+    // the revealed step is drawn: mark the pick and the answer over it (the next step's drawing clears them)
+    if (verdict.marks?.length && this.verdict) this.figure().setOverlay(verdictItems(verdict.marks));
     this.render();
   }
 

@@ -129,5 +129,41 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 390);
   });
 
+  test('the frames\' names never cover each other: every step, identity and a small mount, on a phone, a laptop and in lecture mode', async () => {
+    for (const [width, height, lecture] of [[390, 844, false], [1280, 800, false], [1920, 1080, true]]) {
+      await page.setViewportSize({ width, height });
+      await page.evaluate((on) => window.__rtl.lecture.set(on), lecture);
+      for (const angle of ['0', '5']) {
+        // the field is hidden in lecture mode: set it as the slider would
+        await page.evaluate((a) => { const i = document.querySelector('input[name="mountAngle"]'); i.value = a; i.dispatchEvent(new Event('input', { bubbles: true })); }, angle);
+        await page.waitForFunction((a) => Math.abs(window.__rtl.finalState().mount.angle - a * Math.PI / 180) < 1e-9, Number(angle), { timeout: PAGE_TIMEOUT });
+        for (let k = 0; k < 4; k++) {
+          await goStep(page, k);
+          const labels = await page.evaluate(() => window.__rtl.figureLabels());
+          assert.ok(labels.length >= 2, `step ${k + 1}: ${labels.length} labels`);
+          for (let i = 0; i < labels.length; i++) for (let j = 0; j < i; j++) {
+            const a = labels[i], b = labels[j];
+            const gap = 4;   // CSS px: a space between two names on one line, so they do not read as one
+            const apart = a.x1 + gap <= b.x0 || a.x0 >= b.x1 + gap || a.y1 <= b.y0 || a.y0 >= b.y1;
+            assert.ok(apart, `${width}x${height}${lecture ? ' lecture' : ''}, mount ${angle}°, step ${k + 1}: "${a.text}" covers "${b.text}"`);
+          }
+          if (k >= 2) {
+            // in the map frame the map's name sits under its origin, clear of its x axis (the line y = 0)
+            const origin = await page.evaluate(() => { const p = window.__rtl.clientPoint(0, 0), r = document.querySelector('#canvas').getBoundingClientRect(); return p.y - r.top; });
+            const map = labels.find((l) => l.text === 'map');
+            assert.ok(map.y0 > origin + 1, `${width}x${height}${lecture ? ' lecture' : ''}, step ${k + 1}: "map" at ${map.y0}..${map.y1}, axis at ${origin}`);
+          }
+        }
+        if (angle === '0' && width === 390) {
+          await goStep(page, 2);
+          await page.screenshot({ path: join(SHOTS, 'lesson-tf-tree-robot-map-390x844.png') });
+        }
+      }
+    }
+    await page.evaluate(() => window.__rtl.lecture.set(false));
+    await page.fill('input[name="mountAngle"]', '0');
+    await page.dispatchEvent('input[name="mountAngle"]', 'input');
+  });
+
   test('no console errors', () => assert.deepEqual(problems, []));
 });

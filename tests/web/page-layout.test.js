@@ -4,7 +4,9 @@
 // are marked and explained next to the field.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { PAGE_TIMEOUT, openDemoPage, openLesson } from './helpers.js';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { DATA, PAGE_TIMEOUT, openDemoPage, openLesson } from './helpers.js';
 
 const LESSONS = ['overview', 'car', 'ia', 'ftls', 'aftls', 'itls', 'dp', 'rw', 'compare', 'tracking'];
 const box = (page, sel) => page.locator(sel).first().boundingBox();
@@ -33,6 +35,48 @@ describe('lesson page layout', { timeout: 240000 }, () => {
       }
       assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
     }
+  });
+
+  test('1280x800: every drop-down of every lesson shows its chosen option whole (native <select> text is cut, not wrapped)', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.evaluate(() => { document.querySelector('#own-data').open = true; });
+    const ids = await page.$$eval('#lesson-menu a[data-lesson]', (as) => as.map((a) => a.dataset.lesson));
+    assert.ok(ids.length >= 14, `${ids.length} lessons`);
+    let checked = 0;
+    for (const id of ids) {
+      await openLesson(page, id);
+      // the selected option's text in the select's own font, against the room inside it (padding and the arrow)
+      const cut = await page.evaluate(() => {
+        const ctx = document.createElement('canvas').getContext('2d');
+        return [...document.querySelectorAll('.panel select')].filter((s) => s.getClientRects().length).map((s) => {
+          const css = getComputedStyle(s);
+          ctx.font = `${css.fontWeight} ${css.fontSize} ${css.fontFamily}`;
+          const text = s.selectedOptions[0]?.textContent ?? '';
+          const room = s.clientWidth - parseFloat(css.paddingLeft) - parseFloat(css.paddingRight) - 20;
+          return { name: s.name || s.id, text, need: ctx.measureText(text).width, room };
+        });
+      });
+      for (const c of cut) assert.ok(c.need <= c.room, `${id}: "${c.text}" (${c.name}) needs ${c.need.toFixed(0)} px, has ${c.room.toFixed(0)}`);
+      checked += cut.length;
+    }
+    assert.ok(checked >= ids.length, `${checked} drop-downs checked`);
+    // a log opened: the scan chooser names the file, the scan and its counts
+    const text = readFileSync(join(DATA, 'csail.log'), 'utf8');
+    const dt = await page.evaluateHandle((b) => { const t = new DataTransfer(); t.items.add(new File([new Uint8Array(b)], 'csail-run-2003-a.log')); return t; }, Array.from(Buffer.from(text)));
+    await page.dispatchEvent('body', 'drop', { dataTransfer: dt });
+    await page.waitForFunction(() => window.__rtl.source()?.scan === 0, null, { timeout: PAGE_TIMEOUT });
+    const chooser = await page.evaluate(() => {
+      const s = document.querySelector('#scan-chooser'), css = getComputedStyle(s), ctx = document.createElement('canvas').getContext('2d');
+      ctx.font = `${css.fontWeight} ${css.fontSize} ${css.fontFamily}`;
+      return { text: s.selectedOptions[0].textContent, need: ctx.measureText(s.selectedOptions[0].textContent).width, room: s.clientWidth - parseFloat(css.paddingLeft) - parseFloat(css.paddingRight) - 20 };
+    });
+    assert.ok(chooser.need <= chooser.room, `scan chooser: "${chooser.text}" needs ${chooser.need.toFixed(0)} px, has ${chooser.room.toFixed(0)}`);
+    // the file is named by the option's group (and in its tooltip with the scan)
+    assert.equal(await page.$eval('#scan-chooser optgroup:last-of-type', (g) => g.label), 'csail-run-2003-a.log');
+    assert.equal(await page.$eval('#scan-chooser', (s) => s.selectedOptions[0].title), `csail-run-2003-a.log, ${chooser.text}`);
+    await page.selectOption('#scan-chooser', '');
+    await page.waitForFunction(() => window.__rtl.source() === null, null, { timeout: PAGE_TIMEOUT });
+    await page.evaluate(() => { document.querySelector('#own-data').open = false; });
   });
 
   test('1280 px: the comparison table shows all its columns without scrolling, even beside a page scrollbar', async () => {

@@ -126,7 +126,8 @@ describe('open your own robot files: MCAP, ROS 1 bags, PCD', { timeout: 400000 }
     const options = await lastGroup(page);
     assert.equal(options.length, 30);
     const k = 7, pts = node.scans[k].points;
-    assert.equal(options[k][1], `robot.mcap /scan, scan ${k}: ${pts.filter((v, i) => i % 2 === 0 && Number.isFinite(v)).length} points, ${rtl.segment(pts, SEG).clusters.length} clusters`);
+    assert.equal(await page.$eval('#scan-chooser optgroup:last-of-type', (g) => g.label), 'robot.mcap /scan', 'the group names the file and topic');
+    assert.equal(options[k][1], `scan ${k}: ${pts.filter((v, i) => i % 2 === 0 && Number.isFinite(v)).length} points, ${rtl.segment(pts, SEG).clusters.length} clusters`);
     await page.selectOption('#scan-chooser', options[k][0]);
     const [dataset] = options[k][0].split(':');
     await page.waitForFunction((d) => window.__rtl.source()?.dataset === d && window.__rtl.source()?.scan === 7, dataset, { timeout: PAGE_TIMEOUT });
@@ -154,7 +155,7 @@ describe('open your own robot files: MCAP, ROS 1 bags, PCD', { timeout: 400000 }
     assert.equal(cloudOptions.length, 2);
     const returns = Array.from({ length: 4 }, (_, b) => { const r = clouds[1].ring(b); let n = 0; for (let i = 0; i < r.length; i += 3) if (Number.isFinite(r[i])) n++; return n; });
     const best = returns.indexOf(Math.max(...returns));
-    assert.match(cloudOptions[1][1], new RegExp(`^robot\\.mcap /os_cloud, scan 1 \\(ring ${best}\\): ${returns[best]} points, `));
+    assert.match(cloudOptions[1][1], new RegExp(`^scan 1 \\(ring ${best}\\): ${returns[best]} points, `));
     await page.selectOption('#scan-chooser', cloudOptions[1][0]);
     await page.waitForFunction(() => window.__rtl.source()?.scan === 1, null, { timeout: PAGE_TIMEOUT });
     await carRunsOn(page, xyOf(clouds[1].ring(best)));

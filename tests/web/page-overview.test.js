@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
-import { DATA, PAGE_TIMEOUT, SCREENSHOTS, openDemoPage } from './helpers.js';
+import { DATA, PAGE_TIMEOUT, SCREENSHOTS, openDemoPage, openLesson } from './helpers.js';
 
 const lessonOf = (page, id) => page.evaluate((h) => window.__rtl.lessons.find((l) => l.id === h), id);
 async function scrubTo(page, k) {
@@ -116,6 +116,33 @@ describe('the overview lesson', { timeout: 240000 }, () => {
     assert.ok(text.includes(`Scan 21 at its pose (${last.x.toFixed(2)}, ${last.y.toFixed(2)}) m`), text);
     await follow(page, 'tf-tree');
     assert.match(await page.textContent('#lesson-text'), /Step 3 of 4 · robot → map/);
+  });
+
+  test('the map fills the figure at every map step, on a phone and in lecture mode (the view follows the map)', async () => {
+    await openLesson(page, 'overview');
+    for (const [width, height, lecture] of [[390, 844, false], [1920, 1080, true], [1280, 800, false]]) {
+      await page.setViewportSize({ width, height });
+      await page.evaluate((on) => window.__rtl.lecture.set(on), lecture);
+      for (let k = 4; k < 14; k++) {
+        await scrubTo(page, k);
+        // the placed scans' segments and poses as drawn, against the world rectangle the figure shows
+        const items = (await page.evaluate(() => window.__rtl.figureQuantities())).filter((it) => it.q === 'mapSegments' || it.q === 'scans');
+        const xs = [], ys = [];
+        for (const it of items) {
+          if (it.xy) for (let i = 0; i < it.xy.length; i += 2) { xs.push(it.xy[i]); ys.push(it.xy[i + 1]); }
+          else { xs.push(it.x); ys.push(it.y); }
+        }
+        const e = await page.evaluate(() => window.__rtl.figureExtent());
+        const fw = (Math.max(...xs) - Math.min(...xs)) / (e.maxX - e.minX), fh = (Math.max(...ys) - Math.min(...ys)) / (e.maxY - e.minY);
+        const at = `${width}x${height}${lecture ? ' lecture' : ''}, step ${k + 1}`;
+        assert.ok(Math.max(fw, fh) > 0.8, `${at}: the map spans ${fw.toFixed(2)} x ${fh.toFixed(2)} of the figure`);
+        const cx = (Math.max(...xs) + Math.min(...xs)) / 2, cy = (Math.max(...ys) + Math.min(...ys)) / 2;
+        assert.ok(Math.abs(cx - (e.minX + e.maxX) / 2) < 0.1 * (e.maxX - e.minX) && Math.abs(cy - (e.minY + e.maxY) / 2) < 0.1 * (e.maxY - e.minY), `${at}: centred`);
+      }
+      await scrubTo(page, 6);
+      await page.screenshot({ path: join(SCREENSHOTS, `overview-map-step7-${lecture ? 'lecture-' : ''}${width}x${height}.png`), fullPage: width < 500 });
+    }
+    await page.evaluate(() => window.__rtl.lecture.set(false));
   });
 
   test('no console errors', async () => {

@@ -70,6 +70,8 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     await page.screenshot({ path: join(SCREENSHOTS, 'predict-dp-right-1280x800.png') });
     assert.match(verdict, /^Right\./);
     assert.ok(verdict.includes(`${trace[q].distance.toFixed(3)} m`), verdict);
+    const right = (await page.evaluate(() => window.__rtl.figureOverlay())).filter((m) => m.verdict);
+    assert.deepEqual(right.map((m) => [m.type, m.verdict]), [['marker', 'answer'], ['label', 'answer']], 'a right pick: one ring, no cross');
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 1 });
 
     q = await forwardToQuestion(page);
@@ -84,6 +86,23 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     assert.match(verdict, /^Not quite\./);
     assert.ok(verdict.includes(`You picked point ${wrong}.`), verdict);
     assert.ok(verdict.includes(`point ${e.farthest} farthest from the chord ${e.first}–${e.last}, at ${e.distance.toFixed(3)} m`), verdict);
+    // the figure marks the pick (a cross) and the right answer (a ring) apart, the answer with the trace's distance
+    const marks = await page.evaluate(() => window.__rtl.figureOverlay());
+    const of = (kind, type) => marks.filter((m) => m.verdict === kind && m.type === type);
+    assert.equal(of('pick', 'marker').length, 1);
+    assert.equal(of('pick', 'marker')[0].shape, 'x');
+    assert.deepEqual([of('pick', 'marker')[0].x, of('pick', 'marker')[0].y], [s.chain[2 * wrong], s.chain[2 * wrong + 1]]);
+    assert.equal(of('answer', 'marker').length, 1);
+    assert.notEqual(of('answer', 'marker')[0].shape, 'x');
+    assert.deepEqual([of('answer', 'marker')[0].x, of('answer', 'marker')[0].y], [s.chain[2 * e.farthest], s.chain[2 * e.farthest + 1]]);
+    assert.equal(of('pick', 'label')[0].text, `your pick: ${wrong}`);
+    assert.equal(of('answer', 'label')[0].text, `farthest: ${e.farthest}, ${e.distance.toFixed(3)} m > ε`);
+    const labels = await page.evaluate(() => window.__rtl.figureLabels());
+    assert.ok(labels.some((l) => l.text === `your pick: ${wrong}`) && labels.some((l) => l.text.startsWith(`farthest: ${e.farthest}`)), 'both drawn');
+    await page.screenshot({ path: join(SCREENSHOTS, 'predict-dp-wrong-1280x800.png') });
+    // the next step's drawing clears them
+    await page.click('#player [data-act="forward"]');
+    await page.waitForFunction(() => !window.__rtl.figureOverlay().some((m) => m.verdict), null, { timeout: PAGE_TIMEOUT });
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 2 });
   });
 
@@ -100,6 +119,8 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     const verdict = await page.textContent('#predict');
     assert.match(verdict, /^Not quite\./);
     assert.ok(verdict.includes(`${e.distance.toFixed(3)} m apart`) && verdict.includes(`threshold ${e.threshold.toFixed(3)} m`), verdict);
+    const label = (await page.evaluate(() => window.__rtl.figureOverlay())).find((m) => m.verdict === 'answer' && m.type === 'label');
+    assert.equal(label.text, `${e.linked ? 'link' : 'no link'}: ${e.distance.toFixed(3)} m ${e.linked ? '≤' : '>'} ${e.threshold.toFixed(3)} m`);
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 3 });
   });
 

@@ -146,5 +146,19 @@ describe('3D view mounted in the lesson page (web/#lidar-3d) in Chromium', { tim
     }
   });
 
+  test('in lecture mode at 1920x1080 the top view\'s caption grows with the figure type (readable on a projector)', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.waitForFunction(() => document.querySelector('.lidar3d-top').dataset.captionPx === '12', null, { timeout: PAGE_TIMEOUT });
+    await page.setViewportSize({ width: 1920, height: 1080 });
+    await page.evaluate(() => window.__rtl.lecture.set(true));
+    // the figure's text scale in lecture mode: the 2D figure's title and the top view's caption share it
+    const scale = await page.evaluate(() => Number(getComputedStyle(document.documentElement).getPropertyValue('--figure-text-scale')));
+    assert.ok(scale >= 1.5, `text scale ${scale}`);
+    await page.waitForFunction((px) => Number(document.querySelector('.lidar3d-top').dataset.captionPx) === px, 12 * scale, { timeout: PAGE_TIMEOUT });
+    await page.screenshot({ path: join(SHOTS, 'view3d-page-lecture-1920x1080.png') });
+    await page.evaluate(() => window.__rtl.lecture.set(false));
+    await page.waitForFunction(() => document.querySelector('.lidar3d-top').dataset.captionPx === '12', null, { timeout: PAGE_TIMEOUT });
+  });
+
   test('no console errors', () => assert.deepEqual(problems, []));
 });

@@ -95,7 +95,9 @@ export default {
             (run.dp ? `<p class="why">Decided in the Douglas–Peucker lesson at ${link('dp', { epsilon: params.epsilon }, run.dp.at, `step ${run.dp.at}`)}: ${run.dp.what}. Other methods fit lines instead: ${link('ftls', {}, null, 'FTLS')}, ${link('compare', { epsilon: params.epsilon }, null, 'compare them')}.</p>` : '<p class="why">Measuring the Douglas–Peucker lesson…</p>');
         } else {
           const upto = run.map.slice(0, k - STAGES.length + 1), cur = upto.at(-1);
-          host.figure.fitPoints(run.map.flatMap((r) => [...r.segments, r.pose.x, r.pose.y]));
+          // the view follows the map as it grows (the scans placed so far), so that it fills the figure at every step
+          // rather than waiting in a corner of the whole stretch's extent
+          host.figure.fitPoints(upto.flatMap((r) => [...r.segments, r.pose.x, r.pose.y]));
           // the map grows: the scans placed so far, their points faint under their segments
           for (const r of upto) s.points(r.points, { colour: '#c9d3e0', radius: 1.3 });
           for (const r of upto) s.segments(r.segments, { colour: r === cur ? INK.candidate : INK.segment, width: r === cur ? 2.2 : 1.6, q: 'mapSegments' });

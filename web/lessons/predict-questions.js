@@ -8,6 +8,10 @@ const YES_NO = [{ value: 'yes', label: 'Yes' }, { value: 'no', label: 'No' }];
 
 // The points of a chain with these indices, for a question answered by clicking one.
 const pointsOf = (xy, indices) => indices.map((index) => ({ index, x: xy[2 * index], y: xy[2 * index + 1] }));
+// A verdict's marks (web/predict.js draws them): point i of a chain, the student's pick, the middle of two points.
+const at = (xy, i) => ({ x: xy[2 * i], y: xy[2 * i + 1] });
+const pick = (xy, i, text) => ({ ...at(xy, i), kind: 'pick', text });
+const between = (xy, i, j) => ({ x: (xy[2 * i] + xy[2 * j]) / 2, y: (xy[2 * i + 1] + xy[2 * j + 1]) / 2 });
 
 // Douglas–Peucker: before each range that splits, "click the point where it splits".
 export function dpQuestions(run, chain) {
@@ -21,9 +25,10 @@ export function dpQuestions(run, chain) {
         points: pointsOf(chain, interior),
         check(given) {
           const p = Number(given);
+          const answer = { ...at(chain, e.farthest), kind: 'answer', text: `farthest: ${e.farthest}, ${f3(e.distance)} > ε` };
           return p === e.farthest
-            ? { right: true, html: `Point ${e.farthest} is the interior point farthest from the chord ${e.first}–${e.last}: ${f3(e.distance)}, more than ε = ${f3(e.epsilon)}, so it becomes a corner.` }
-            : { right: false, html: `You picked point ${p}. The package measured point ${e.farthest} farthest from the chord ${e.first}–${e.last}, at ${f3(e.distance)} (more than ε = ${f3(e.epsilon)}): the split is there, and no other point of the range is that far.` };
+            ? { right: true, marks: [{ ...answer, text: `your pick ${p}: ${f3(e.distance)} > ε` }], html: `Point ${e.farthest} is the interior point farthest from the chord ${e.first}–${e.last}: ${f3(e.distance)}, more than ε = ${f3(e.epsilon)}, so it becomes a corner.` }
+            : { right: false, marks: [pick(chain, p, `your pick: ${p}`), answer], html: `You picked point ${p}. The package measured point ${e.farthest} farthest from the chord ${e.first}–${e.last}, at ${f3(e.distance)} (more than ε = ${f3(e.epsilon)}): the split is there, and no other point of the range is that far.` };
         },
       };
     },
@@ -43,9 +48,10 @@ export function rwQuestions(run, chain) {
         points: pointsOf(chain, after),
         check(given) {
           const p = Number(given);
+          const answer = { ...at(chain, e.index), kind: 'answer', text: `first outside: ${e.index}, ${f3(e.distance)} > ε` };
           return p === e.index
-            ? { right: true, html: `Point ${e.index} is ${f3(e.distance)} from the strip's axis, more than ε: point ${e.index - 1} becomes the next key.` }
-            : { right: false, html: `You picked point ${p}. The first point outside is ${e.index}, ${f3(e.distance)} from the axis (ε = ${f3(e.epsilon)})${p < e.index ? `; point ${p} comes before it and is still inside` : `; the scan stops at ${e.index} before reaching ${p}`}.` };
+            ? { right: true, marks: [{ ...answer, text: `your pick ${p}: ${f3(e.distance)} > ε` }], html: `Point ${e.index} is ${f3(e.distance)} from the strip's axis, more than ε: point ${e.index - 1} becomes the next key.` }
+            : { right: false, marks: [pick(chain, p, `your pick: ${p} (${p < e.index ? 'inside the strip' : 'after the exit'})`), answer], html: `You picked point ${p}. The first point outside is ${e.index}, ${f3(e.distance)} from the axis (ε = ${f3(e.epsilon)})${p < e.index ? `; point ${p} comes before it and is still inside` : `; the scan stops at ${e.index} before reaching ${p}`}.` };
         },
       };
     },
@@ -67,7 +73,8 @@ export function compareQuestions(run, points) {
         check(given) {
           const right = (given === 'yes') === e.linked;
           const why = `they are ${f3(e.distance)} apart, ${e.linked ? 'within' : 'beyond'} the threshold ${f3(e.threshold)}`;
-          return { right, html: right ? `They ${e.linked ? 'link' : 'do not link'}: ${why}.` : `They ${e.linked ? 'do link' : 'do not link'}: ${why}.` };
+          const marks = [{ ...between(points, e.i, e.j), kind: 'answer', text: `${e.linked ? 'link' : 'no link'}: ${f3(e.distance)} ${e.linked ? '≤' : '>'} ${f3(e.threshold)}` }];
+          return { right, marks, html: right ? `They ${e.linked ? 'link' : 'do not link'}: ${why}.` : `They ${e.linked ? 'do link' : 'do not link'}: ${why}.` };
         },
       };
     },
@@ -87,7 +94,8 @@ export function cornerQuestions(run, chain) {
         check(given) {
           const right = (given === 'yes') === e.ok;
           const why = `the two lines cross ${f3(e.crossingDistance)} from the middle of points ${e.boundary - 1} and ${e.boundary}, ${e.ok ? 'within' : 'beyond'} δ = ${f3(e.delta)}`;
-          return { right, html: `${e.ok ? 'It meets' : 'It does not meet'}: ${why}${e.ok ? '' : ', so the partition must be repaired there'}.` };
+          const marks = [{ ...between(chain, e.boundary - 1, e.boundary), kind: 'answer', text: `${e.ok ? 'meets' : 'misses'}: ${f3(e.crossingDistance)} ${e.ok ? '≤' : '>'} δ` }];
+          return { right, marks, html: `${e.ok ? 'It meets' : 'It does not meet'}: ${why}${e.ok ? '' : ', so the partition must be repaired there'}.` };
         },
       };
     },
@@ -118,10 +126,12 @@ export function budgetQuestions(run) {
         points: pointsOf(run.points, was),
         check(given) {
           const p = Number(given), where = `beams ${runsText(gained)} (${gained.length} beams)`;
+          const mid = gained[Math.floor(gained.length / 2)];
+          const answers = gained.map((i) => ({ ...at(run.points, i), kind: 'answer', text: i === mid ? `explained at J = ${after.J}: beams ${runsText(gained)}` : undefined }));
           if (Number.isFinite(after.expected[p])) {
-            return { right: true, html: `Beam ${p} is explained at J = ${after.J}: it misses the map by ${f3(Math.abs(range(p) - after.expected[p]))} along its ray instead of counting as the unexplained cost. The budget went to ${where}; ${change}.` };
+            return { right: true, marks: [...answers, { ...at(run.points, p), kind: 'answer', text: `your pick ${p}: misses by ${f3(Math.abs(range(p) - after.expected[p]))}` }], html: `Beam ${p} is explained at J = ${after.J}: it misses the map by ${f3(Math.abs(range(p) - after.expected[p]))} along its ray instead of counting as the unexplained cost. The budget went to ${where}; ${change}.` };
           }
-          return { right: false, html: `You picked beam ${p}: it stays unexplained at J = ${after.J}. The package spent the budget on ${where}, a stretch that lines explain well; ${change}.` };
+          return { right: false, marks: [...answers, pick(run.points, p, `your pick: ${p} (stays unexplained)`)], html: `You picked beam ${p}: it stays unexplained at J = ${after.J}. The package spent the budget on ${where}, a stretch that lines explain well; ${change}.` };
         },
       };
     },

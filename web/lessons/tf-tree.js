@@ -72,9 +72,10 @@ export default {
       const colour = FRAME_COLOURS[name];
       scene.segments([p[0], p[1], p[2], p[3], p[0], p[1], p[4], p[5]], { colour, width: 2.5 });
       scene.label(p[2], p[3], `${name} x`, { colour });
-      // names apart, since frames can coincide (the identity mount puts the sensor on the robot's origin)
-      const off = { map: [0, -0.25], robot: [0, 0.15], sensor: [0, -0.45] }[name].map((v) => v * len);
-      scene.label(p[0] + off[0], p[1] + off[1], caption, { colour });
+      // names apart, since frames can coincide (the identity mount puts the sensor on the robot's origin); the map's
+      // name sits one line of text under its origin, clear of its x axis at any type size
+      const off = { map: [0, 0], robot: [0, 0.15], sensor: [0, -0.45] }[name].map((v) => v * len);
+      scene.label(p[0] + off[0], p[1] + off[1], caption, { colour, ...(name === 'map' ? { offset: [6, 18] } : {}) });
     };
     const extentOf = (...sets) => {
       let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;

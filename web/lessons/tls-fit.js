@@ -1,19 +1,27 @@
-// Lesson: the total-least-squares line fit, on 8 real points of a wall. The fit (centroid, normal, offset, RMS) is
-// the package's fitLine; the ordinary-least-squares line is a teaching comparison computed here (two formulas).
-// Points can be dragged with the mouse, or picked with [ / ] and moved with the arrow keys (Shift: 10 cm).
-
-// Intel Research Lab, scan 28, beams 124-131: a wall about 4.3 m away seen nearly edge-on (83.9 degrees in the robot
-// frame). Its orthogonal residuals are ~1.5 cm, but its vertical ones are about nine times larger: the case where
-// measuring errors vertically (OLS) is the wrong model.
-export const EXCERPT = Object.freeze({ dataset: 'intel', scan: 28, firstBeam: 124, lastBeam: 131 });
+// Lesson: the total-least-squares line fit, on real points of a wall: its bundled excerpt, or a straight run of the
+// scan the user chose (tls-fit-source.js). The fit (centroid, normal, offset, RMS) is the package's fitLine; the
+// ordinary-least-squares line is a teaching comparison computed here (two formulas). Points can be dragged with the
+// mouse, or picked with [ / ] and moved with the arrow keys (Shift: 10 cm).
 import { Scene, lineThrough } from '../figure.js';
 import { note, numberField, selectField } from './ui.js';
+import { EXCERPT, tlsFitPoints } from './tls-fit-source.js';
+
+export { EXCERPT };
 
 const STEPS = ['centroid', 'spread', 'normal', 'residuals', 'rms'];
 const NUDGE = 0.01;   // m per arrow key press
 
 const f3 = (v) => (Number.isFinite(v) ? v.toFixed(3) : '–');
+// where and why name the user's file: text, never markup, in the note and the explanation.
+const escapeHtml = (t) => t.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 const mm = (v) => (Number.isFinite(v) ? `${(v * 1000).toFixed(1)} mm` : '–');
+// The wall's angle to the x axis (from the package's direction) and what it does to vertical residuals: the bundled
+// wall runs at 84°, where they are about nine times the orthogonal ones.
+const steepness = (direction, olsRms, tlsRms) => {
+  const deg = Math.atan2(Math.abs(direction[1]), Math.abs(direction[0])) * 180 / Math.PI, r = olsRms / tlsRms;
+  return `This wall runs at ${deg.toFixed(1)}° to the x axis: OLS vertical RMS ${mm(olsRms)} against the orthogonal ${mm(tlsRms)}, ${r.toFixed(1)} times` +
+    (r >= 2 ? ', so measuring errors vertically is the wrong model here.' : '; the steeper a wall, the further the two part.');
+};
 
 // Teaching comparison, not the package: OLS regresses y on x (vertical residuals), y = slope * x + intercept.
 export function olsLine(xy) {
@@ -27,23 +35,14 @@ export function olsLine(xy) {
   return { slope, intercept: my - slope * mx };
 }
 
-// The points of the excerpt, as the package reads the log (robot frame, gaps skipped).
-async function excerptPoints(host) {
-  const scans = await host.data.load(EXCERPT.dataset);
-  const p = scans[EXCERPT.scan].points;
-  const out = [];
-  for (let i = EXCERPT.firstBeam; i <= EXCERPT.lastBeam; i++) {
-    if (Number.isFinite(p[2 * i]) && Number.isFinite(p[2 * i + 1])) out.push(p[2 * i], p[2 * i + 1]);
-  }
-  return out;
-}
-
 export default {
   id: 'tls-fit',
   title: 'TLS line fit',
   summary: 'Fit a line to a wall by total least squares: centroid, covariance, the normal, orthogonal residuals; compared with ordinary least squares.',
   async create(host) {
-    const original = await excerptPoints(host);
+    const run = await tlsFitPoints(host);
+    const original = run.points;
+    const label = (i) => `${run.word} ${run.indices[i]}`;
     let points = original.slice();
     let selected = 0;
     let step = 0;
@@ -55,15 +54,14 @@ export default {
     const sigmaField = numberField(controls, { key: 'sigma', label: 'σ: max RMS distance', value: 0.03, min: 0.005, max: 1,
       step: 0.005, kind: 'number', unit: 'm', hint: 'FTLS accepts a run of points as one segment while its RMS stays below σ.', onInput: changed });
     const pointField = selectField(controls, { key: 'point', label: 'Point to move (arrow keys on the figure)',
-      options: Array.from({ length: original.length / 2 }, (_, i) => [String(i), `beam ${EXCERPT.firstBeam + i}`]), value: '0',
+      options: Array.from({ length: original.length / 2 }, (_, i) => [String(i), label(i)]), value: '0',
       onInput: () => { selected = Number(pointField.read()); lesson.show(step); } });
     const pointSelect = pointField.input;
     const reset = document.createElement('button');
     Object.assign(reset, { type: 'button', className: 'small wide', textContent: 'Reset the points' });
     reset.dataset.act = 'reset-points';
     controls.append(reset);
-    note(controls, `Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}: a wall seen nearly edge-on, so vertical ` +
-      'and orthogonal residuals differ by a factor of about nine. Drag a point, or focus the figure and use [ ] to pick one and the arrow keys to move it (Shift: 10 cm).');
+    note(controls, `<strong>Excerpt:</strong> ${escapeHtml(run.where)}. ${escapeHtml(run.why)} Drag a point, or focus the figure and use [ ] to pick one and the arrow keys to move it (Shift: 10 cm).`);
     let sigma = 0.03, sigmaOk = true;
     const readSigma = () => {
       const v = sigmaField.read();
@@ -170,7 +168,7 @@ export default {
         const [cx, cy] = fit.centroid, [a, b] = fit.normal, c = fit.offset, [dx, dy] = fit.direction;
         const n = points.length / 2;
         const name = STEPS[step];
-        const scene = new Scene(`TLS line fit, Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}-${EXCERPT.lastBeam}: ${name}`);
+        const scene = new Scene(`TLS line fit, ${run.where}: ${name}`);
         // line and residuals first, points on top
         if (step >= 2) lineItem(scene, cx, cy, dx, dy, { colour: '#0072B2', width: 2.5, q: 'line' });
         if (step >= 3) {
@@ -213,26 +211,27 @@ export default {
           const xs = [], ys = [], ok = [];
           for (let i = 0; i < n; i++) {
             const d = Math.abs(a * points[2 * i] + b * points[2 * i + 1] + c);
-            xs.push(EXCERPT.firstBeam + i); ys.push(d); ok.push(d < sigma);
+            xs.push(run.indices[i]); ys.push(d); ok.push(d < sigma);
           }
-          scene.setInset({ title: `|orthogonal residual| per beam, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: 'beam', yformat: (y) => mm(y) });
+          scene.setInset({ title: `|orthogonal residual| per ${run.word}, RMS ${mm(fit.rms)}`, xs, ys, ok, hline: sigma, hlabel: 'σ', xlabel: run.word, yformat: (y) => mm(y) });
         }
         fig.show(scene);
 
         const olsRms = Math.sqrt(points.reduce((s, v, i) => (i % 2 ? s + (v - ols.slope * points[i - 1] - ols.intercept) ** 2 : s), 0) / n);
         const lmin = fit.rms ** 2, lmax = spread.sxx + spread.syy - lmin;
         const text = {
-          centroid: `Step 1 of 5 · centroid. The ${n} points are Intel scan ${EXCERPT.scan}, beams ${EXCERPT.firstBeam}–${EXCERPT.lastBeam}, a wall in the robot frame. The best line in the total-least-squares sense always passes through <span data-q="centroid">their centroid (×) = (${f3(cx)}, ${f3(cy)}) m</span>, so only its direction is left to find.`,
+          centroid: `Step 1 of 5 · centroid. The ${n} points are ${escapeHtml(run.where)}, ${run.origin === 'source' ? 'a straight run of your chosen scan' : 'a wall'} in the robot frame. The best line in the total-least-squares sense always passes through <span data-q="centroid">their centroid (×) = (${f3(cx)}, ${f3(cy)}) m</span>, so only its direction is left to find.`,
           spread: `Step 2 of 5 · spread. Around the centroid the points spread as the covariance matrix [[${spread.sxx.toExponential(2)}, ${spread.sxy.toExponential(2)}], [${spread.sxy.toExponential(2)}, ${spread.syy.toExponential(2)}]] m². Its eigenvectors are the axes drawn: <span data-q="major">the long green one along the wall (λ = ${lmax.toExponential(2)} m²)</span>, <span data-q="minor">the short pink one across it (λ = ${lmin.toExponential(2)} m²)</span>.`,
           normal: `Step 3 of 5 · normal. The normal of the fitted line is the eigenvector of the smaller eigenvalue: <span data-q="normal">n = (${f3(a)}, ${f3(b)})</span>, so <span data-q="line">the line is ${f3(a)}·x + ${f3(b)}·y ${c < 0 ? '−' : '+'} ${f3(Math.abs(c))} = 0</span> (package fitLine). Turning the line any other way around the centroid would increase the sum of squared orthogonal distances.`,
-          residuals: `Step 4 of 5 · residuals. TLS measures <span data-q="residuals">each point's orthogonal distance to the line (solid blue)</span>. Ordinary least squares (dashed orange, a teaching comparison computed in this page, not by the package) measures <span data-q="vertical">vertical distances</span>: <span data-q="ols">y = ${f3(ols.slope)}·x ${ols.intercept < 0 ? '−' : '+'} ${f3(Math.abs(ols.intercept))}</span>. For a wall seen this steeply the vertical residuals are much longer (OLS vertical RMS ${mm(olsRms)}), and they depend on how the axes happen to lie, which a wall does not care about.`,
+          residuals: `Step 4 of 5 · residuals. TLS measures <span data-q="residuals">each point's orthogonal distance to the line (solid blue)</span>. Ordinary least squares (dashed orange, a teaching comparison computed in this page, not by the package) measures <span data-q="vertical">vertical distances</span>: <span data-q="ols">y = ${f3(ols.slope)}·x ${ols.intercept < 0 ? '−' : '+'} ${f3(Math.abs(ols.intercept))}</span>. ${steepness(fit.direction, olsRms, fit.rms)} Vertical residuals depend on how the axes happen to lie, which a wall does not care about.`,
           rms: `Step 5 of 5 · RMS against σ. The RMS <span data-q="residuals">orthogonal distance</span> is √λmin = ${mm(fit.rms)} (package fitLine), against σ = ${mm(sigma)}: ${fit.rms < sigma ? 'below σ, so FTLS would accept these points as one segment.' : 'above σ, so FTLS would not accept these points as one segment and would split them.'} Drag a point away from the wall and watch both the RMS and the OLS line react.`,
         }[name];
         host.text.innerHTML = `<p>${text}</p>`;
       },
       finalState() {
         return {
-          excerpt: { ...EXCERPT }, points: points.slice(), selected, sigma, step,
+          excerpt: { dataset: run.dataset, scan: run.scan, firstBeam: run.firstBeam, lastBeam: run.lastBeam }, origin: run.origin,
+          indices: run.indices.slice(), points: points.slice(), selected, sigma, step,
           fit: { normal: Array.from(fit.normal), offset: fit.offset, centroid: Array.from(fit.centroid), rms: fit.rms, count: fit.count },
           ols: { ...ols }, accepted: fit.rms < sigma,
         };

@@ -36,11 +36,12 @@ export function numberField(parent, { key, label, value, min, max, step, kind = 
   };
 }
 
-// A <select> field; returns { input, read(), set(v) }.
+// A <select> field; returns { input, read(), set(v) }. It takes the form's whole width: a native drop-down cuts its
+// text instead of wrapping it, and half the panel is too narrow for a data set's name.
 export function selectField(parent, { key, label, options, value, onInput }) {
   const id = `f-${key}-${++serial}`;
   const wrap = document.createElement('div');
-  wrap.className = 'field';
+  wrap.className = 'field wide';
   wrap.innerHTML = `<label for="${id}"></label><select id="${id}" name="${key}"></select>`;
   wrap.querySelector('label').textContent = label;
   const sel = wrap.querySelector('select');

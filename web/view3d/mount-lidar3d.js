@@ -35,7 +35,13 @@ function drawTopView(canvas, scene, minPoints) {
   }
   ctx.stroke();
   ctx.fillStyle = '#000'; ctx.beginPath(); ctx.arc(w / 2, h / 2, 4, 0, 2 * Math.PI); ctx.fill();
-  ctx.font = '12px system-ui, sans-serif'; ctx.fillText(`top view · ${2 * range} m across · x up`, 8, 16);
+  // the caption grows with the page's figure type (--figure-text-scale: large in lecture mode, as the 2D figure's)
+  const px = 12 * (Number(getComputedStyle(canvas).getPropertyValue('--figure-text-scale')) || 1);
+  const text = `top view · ${2 * range} m across · x up`;
+  ctx.font = `${px}px system-ui, sans-serif`;
+  ctx.fillStyle = 'rgba(255,255,255,0.85)'; ctx.fillRect(0, 0, ctx.measureText(text).width + px, 1.5 * px);
+  ctx.fillStyle = '#1c2330'; ctx.fillText(text, px / 2, 1.1 * px);
+  canvas.dataset.captionPx = String(px);              // the caption's size as drawn (tests read it)
 }
 
 /**
