@@ -77,8 +77,10 @@ val segmentAndVectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t opti
   return guarded([&] {
     const char* fn = "segmentAndVectorize";
     const auto o = readOptions<PipelineOptions>(options);
-    if (o.dim != 2 && o.dim != 3) throw std::invalid_argument(std::string(fn) + ": dim must be 2 or 3, got " + std::to_string(o.dim));
-    if (o.method < 0 || o.method > 4) throw std::invalid_argument(std::string(fn) + ": unknown method " + std::to_string(o.method));
+    // wasm/js/pipeline.js checked both (a caller's mistake is its TypeError/RangeError): this guards the binding, in
+    // few bytes (the package is at its size budget)
+    if ((o.dim != 2 && o.dim != 3) || o.method < 0 || o.method > 4)
+      throw std::invalid_argument("segmentAndVectorize: dim must be 2 or 3 and method 0 to 4");
     const auto dim = static_cast<std::size_t>(o.dim);
     const double* xyz = doubles(ptr);
     // one rule for the whole scan (gaps allowed): every coordinate within +-1e18, also in clusters too small to vectorize
@@ -94,7 +96,7 @@ val segmentAndVectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t opti
     const auto min = static_cast<std::size_t>(o.minPoints);
     if (o.dim == 2) rtl_ops::segmentAndVectorize<2>(xyz, n, s, v, min, *r.out);
     else rtl_ops::segmentAndVectorize<3>(xyz, n, s, v, min, *r.out);
-    if (r.out->badInput) throw std::logic_error(std::string(fn) + ": a point the input check passed was refused");
+    if (r.out->badInput) throw std::logic_error("segmentAndVectorize: a point the input check passed was refused");
     r.computeMs = nowMs() - t0;
     return val(writeResults(results(), r));
   });
