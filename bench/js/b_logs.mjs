@@ -15,12 +15,13 @@
 //    checked equal across compressions and rounds (the same work). Medians over the rounds.
 // 3. (after 2) Several logs: the CLI on --logs (default 2) MCAPs of --log-scans (default N) scans each (zstd), -m ftls,
 //    --jobs 1 against --jobs K (K = the number of logs), wall time of the whole command (each worker's start, wasm
-//    instantiation included), and the speed-up (ideal: min(K, idle cores)). --throughput=0 skips section 1.
+//    instantiation included), and the speed-up (ideal: min(K, idle cores)); also the commands' CPU time, and from it
+//    the speed-up K idle cores would give at most. Outputs checked equal. --throughput=0 skips section 1.
 // 2. Memory: a log of --big-mb MB (chunks uncompressed) read and processed by the batched pipeline; RSS sampled every 1000 scans after the
 //    first 2000 (warm-up); growth = max - first sample. The file is deleted afterwards.
 import { existsSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { availableParallelism } from 'node:os';
+import { availableParallelism, loadavg } from 'node:os';
 import { open } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -209,15 +210,18 @@ if (BIG_MB > 0) {
   const mb = statSync(path).size / 1e6;
   console.log(`# memory: ${count} scans, ${mb.toFixed(0)} MB MCAP (chunks uncompressed) written in ${((performance.now() - tw) / 1000).toFixed(0)} s`);
   let base, peak = 0;
+  const quarters = [];   // RSS at each quarter of the log: a leak rises steadily, a heap settling does not
   const t = await timed(() => pipeline(path, (n) => {
     if (n % 1000 !== 0 || n < 2000) return;
     const rss = process.memoryUsage().rss;
     base ??= rss;
     peak = Math.max(peak, rss);
+    if (quarters.length < 4 && n >= ((quarters.length + 1) * count) / 4 - 1000) quarters.push(rss);
   }, batchedScan));
   rmSync(path);
   console.log(`# memory: pipeline over the whole log at ${Math.round(count / (t.ms / 1000))} scans/s; RSS after warm-up ${(base / 1e6).toFixed(0)} MB, ` +
-              `peak ${(peak / 1e6).toFixed(0)} MB, growth ${((peak - base) / 1e6).toFixed(1)} MB (goal < 50 MB)`);
+              `peak ${(peak / 1e6).toFixed(0)} MB, growth ${((peak - base) / 1e6).toFixed(1)} MB (goal < 50 MB); at each quarter of the log ` +
+              `${quarters.map((q) => (q / 1e6).toFixed(0)).join(', ')} MB`);
 }
 
 if (LOGS > 1) {
@@ -227,15 +231,28 @@ if (LOGS > 1) {
     await writeLog(files[k], LOG_SCANS, 'zstd');
   }
   const cli = fileURLToPath(new URL('../../bin/rtl.js', import.meta.url));
-  const wall = (jobs) => {
-    const t = performance.now();
+  // The CPU time of the finished children (Linux: /proc/self/stat's cutime + cstime, in clock ticks of 10 ms): the
+  // CLI and its worker threads. On a shared machine the wall clock says little; the CPU time of --jobs K against
+  // --jobs 1 says what running K at once costs (each worker's start-up, contention), hence the speed-up K idle cores
+  // would give at most: K x cpu(1) / cpu(K), for K logs of equal size.
+  const childCpuMs = () => {
+    if (!existsSync('/proc/self/stat')) return NaN;
+    const stat = readFileSync('/proc/self/stat', 'utf8'), f = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+    return (Number(f[13]) + Number(f[14])) * 10;
+  };
+  const run = (jobs) => {
+    const t = performance.now(), c = childCpuMs();
     execFileSync(process.execPath, [cli, ...files, '--topic', '/scan', '-m', 'ftls', '--jobs', String(jobs), '-o', join(dir, `out-${jobs}.jsonl`)]);
-    return performance.now() - t;
+    return { wall: performance.now() - t, cpu: childCpuMs() - c };
   };
   const one = [], many = [];
-  for (let r = 0; r < ROUNDS; r++) { one.push(wall(1)); many.push(wall(LOGS)); }
-  const lines = (jobs) => readFileSync(join(dir, `out-${jobs}.jsonl`), 'utf8').split('\n').filter(Boolean).length;
-  if (lines(1) !== lines(LOGS) || lines(1) !== LOGS * LOG_SCANS) throw new Error(`--jobs outputs differ: ${lines(1)} vs ${lines(LOGS)} lines`);
-  console.log(`# --jobs: ${LOGS} logs x ${LOG_SCANS} scans, rtl -m ftls: --jobs 1 ${(median(one) / 1000).toFixed(1)} s, --jobs ${LOGS} ` +
-              `${(median(many) / 1000).toFixed(1)} s, speed-up ${(median(one) / median(many)).toFixed(2)} (${availableParallelism()} cores on this machine)`);
+  for (let r = 0; r < ROUNDS; r++) { one.push(run(1)); many.push(run(LOGS)); }
+  const lines = (jobs) => readFileSync(join(dir, `out-${jobs}.jsonl`), 'utf8').split('\n').filter(Boolean).sort();
+  const [out1, outK] = [lines(1), lines(LOGS)];
+  if (out1.length !== LOGS * LOG_SCANS || out1.join('\n') !== outK.join('\n')) throw new Error(`--jobs outputs differ: ${out1.length} vs ${outK.length} lines`);
+  const m = (a, k) => median(a.map((x) => x[k])) / 1000;
+  console.log(`# --jobs: ${LOGS} logs x ${LOG_SCANS} scans, rtl -m ftls, outputs equal: wall --jobs 1 ${m(one, 'wall').toFixed(1)} s, --jobs ${LOGS} ` +
+              `${m(many, 'wall').toFixed(1)} s, speed-up ${(m(one, 'wall') / m(many, 'wall')).toFixed(2)} (${availableParallelism()} cores on this machine, ` +
+              `load average ${loadavg()[0].toFixed(1)}); CPU --jobs 1 ${m(one, 'cpu').toFixed(1)} s, --jobs ${LOGS} ${m(many, 'cpu').toFixed(1)} s: ` +
+              `at most ${(LOGS * m(one, 'cpu') / m(many, 'cpu')).toFixed(2)} on ${LOGS} idle cores`);
 }

@@ -139,3 +139,15 @@ test('segmentAndVectorize: random points and options give results or typed error
   assert.ok(results > 50 && errors > 50, `${results} results, ${errors} errors`);
   assert.equal(rtl.heapInUse(), heap);
 });
+
+test('segmentAndVectorize: a result stays as it was after later calls (the module refills its kept output arrays)', () => {
+  const snapshot = (r) => JSON.stringify(r, (k, v) => (ArrayBuffer.isView(v) ? Array.from(v) : v));
+  const first = rtl.segmentAndVectorize(csail[3].points, { vectorize: { method: 'ftls' } });
+  const before = snapshot(first);
+  assert.ok(first.vectorized.length > 5 && first.segmentOffsets.at(-1) > 10, 'a scan with real work');
+  // larger, smaller, 3D and other-method scans in between
+  for (const s of [intel[0], csail[0], csail[7]]) rtl.segmentAndVectorize(s.points, { vectorize: { method: 'dp' }, minPoints: 2 });
+  rtl.segmentAndVectorize(ouster.ring(1), { dim: 3, vectorize: { method: 'itls' } });
+  assert.equal(snapshot(first), before);
+  assert.equal(snapshot(rtl.segmentAndVectorize(csail[3].points, { vectorize: { method: 'ftls' } })), before);
+});

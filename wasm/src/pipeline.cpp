@@ -38,32 +38,38 @@ struct PipelineOptions {
   }
 };
 
+// segmentAndVectorize()'s output arrays between calls (kept.h: released with the other kept buffers).
+struct KeptOutput {
+  rtl_ops::PipelineOutput out;
+};
+
 // segmentAndVectorize()'s results (wasm/js/pipeline.js reads them by these names); pipeline_ops.h's PipelineOutput
-// says what each is.
+// says what each is. out: the kept output, or `own` (a scan above kKeptPoints; the schema's listing).
 struct PipelineResults {
   double computeMs = 0;
-  rtl_ops::PipelineOutput out;
+  rtl_ops::PipelineOutput own;
+  rtl_ops::PipelineOutput* out = &own;
   template <class F>
   void fields(F& f) {
     f.scalar("computeMs", computeMs);
-    f.scalar("stride", static_cast<double>(out.stride));
-    f.take("labels", out.seg.labels);
-    f.take("indices", out.seg.indices);
-    f.array("offsets", out.seg.offsets);
-    f.array("runs", out.seg.runs);
-    f.array("runOffsets", out.seg.runOffsets);
-    f.array("vectorized", out.vectorized);
-    f.array("flags", out.flags);
-    f.array("failures", out.failures);
-    f.array("segmentOffsets", out.segmentOffsets);
-    f.array("segments", out.segments);
-    f.array("segmentIndices", out.indices);
-    f.array("params", out.params);
-    f.array("rms", out.rms);
-    f.array("polylineParts", out.polylineParts);
-    f.array("polylineOffsets", out.polylineOffsets);
-    f.array("breakOffsets", out.breakOffsets);
-    f.array("breaks", out.breaks);
+    f.scalar("stride", static_cast<double>(out->stride));
+    f.take("labels", out->seg.labels);
+    f.take("indices", out->seg.indices);
+    f.array("offsets", out->seg.offsets);
+    f.array("runs", out->seg.runs);
+    f.array("runOffsets", out->seg.runOffsets);
+    f.array("vectorized", out->vectorized);
+    f.array("flags", out->flags);
+    f.array("failures", out->failures);
+    f.array("segmentOffsets", out->segmentOffsets);
+    f.array("segments", out->segments);
+    f.array("segmentIndices", out->indices);
+    f.array("params", out->params);
+    f.array("rms", out->rms);
+    f.array("polylineParts", out->polylineParts);
+    f.array("polylineOffsets", out->polylineOffsets);
+    f.array("breakOffsets", out->breakOffsets);
+    f.array("breaks", out->breaks);
   }
 };
 
@@ -71,20 +77,26 @@ val segmentAndVectorize(std::uintptr_t ptr, std::size_t len, std::uintptr_t opti
   return guarded([&] {
     const char* fn = "segmentAndVectorize";
     const auto o = readOptions<PipelineOptions>(options);
-    if (o.dim != 2 && o.dim != 3) throw std::invalid_argument(std::string(fn) + ": dim must be 2 or 3, got " + std::to_string(o.dim));
-    if (o.method < 0 || o.method > 4) throw std::invalid_argument(std::string(fn) + ": unknown method " + std::to_string(o.method));
+    // wasm/js/pipeline.js checked both (a caller's mistake is its TypeError/RangeError): this guards the binding, in
+    // few bytes (the package is at its size budget)
+    if ((o.dim != 2 && o.dim != 3) || o.method < 0 || o.method > 4)
+      throw std::invalid_argument("segmentAndVectorize: dim must be 2 or 3 and method 0 to 4");
     const auto dim = static_cast<std::size_t>(o.dim);
     const double* xyz = doubles(ptr);
     // one rule for the whole scan (gaps allowed): every coordinate within +-1e18, also in clusters too small to vectorize
     checkPoints(fn, xyz, len, dim, 0, true, kMaxCoordinate);
     const rtl_ops::SegmentParams s = rtl_ops::segmentParams(o);
     const rtl_ops::VectorizeParams v = rtl_ops::vectorizeParams(o, kMaxCoordinate);
+    // A log's scans refill the last call's output arrays (kept, with their capacity) instead of growing ~20 vectors
+    // from empty every scan. A scan above kKeptPoints releases the kept objects mid-call: it gets its own.
+    const std::size_t n = len / dim;
     PipelineResults r;
+    if (n <= rtl_ops::kKeptPoints) r.out = &rtl_ops::kept<KeptOutput>().out;
     const double t0 = nowMs();
     const auto min = static_cast<std::size_t>(o.minPoints);
-    if (o.dim == 2) rtl_ops::segmentAndVectorize<2>(xyz, len / 2, s, v, min, r.out);
-    else rtl_ops::segmentAndVectorize<3>(xyz, len / 3, s, v, min, r.out);
-    if (r.out.badInput) throw std::logic_error(std::string(fn) + ": a point the input check passed was refused");
+    if (o.dim == 2) rtl_ops::segmentAndVectorize<2>(xyz, n, s, v, min, *r.out);
+    else rtl_ops::segmentAndVectorize<3>(xyz, n, s, v, min, *r.out);
+    if (r.out->badInput) throw std::logic_error("segmentAndVectorize: a point the input check passed was refused");
     r.computeMs = nowMs() - t0;
     return val(writeResults(results(), r));
   });

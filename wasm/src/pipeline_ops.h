@@ -62,8 +62,8 @@ void append(std::vector<T>& to, const std::vector<T>& from) {
 }  // namespace detail
 
 // Segments the n points of xyz (dim D; NaN: a gap) and vectorizes every cluster of at least minPoints (>= 2)
-// points with v (untraced, lines: v.plane false). `out` is cleared first. It must not be a kept object: a scan or
-// cluster above kKeptPoints releases those mid-call. badInput: a coordinate is +-Infinity, or one of a vectorized cluster is beyond v.maxMagnitude
+// points with v (untraced, lines: v.plane false). `out` is cleared first (its arrays keep their capacity). It may be
+// a kept object only when n <= kKeptPoints: a scan or cluster above kKeptPoints releases those mid-call. badInput: a coordinate is +-Infinity, or one of a vectorized cluster is beyond v.maxMagnitude
 // (the output is then incomplete). O(segment + sum of the clusters' vectorize) time.
 template <int D>
 void segmentAndVectorize(const double* xyz, std::size_t n, const SegmentParams& s, const VectorizeParams& v,

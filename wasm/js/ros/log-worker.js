@@ -15,7 +15,15 @@ import init from 'rtl-wasm';
 import { openLog } from './logs.js';
 
 const node = typeof self === 'undefined' || typeof self.postMessage !== 'function';
-const port = node ? (await import('node:worker_threads')).parentPort : self;
+// inside try: a browser bundle leaves this Node-only import alone (esbuild does not resolve it there)
+async function nodePort() {
+  try {
+    return (await import('node:worker_threads')).parentPort;
+  } catch (e) {
+    throw new Error(`log-worker: neither a Web Worker nor a Node worker_threads Worker: ${e.message}`);
+  }
+}
+const port = node ? await nodePort() : self;
 const post = (msg, transfer = []) => port.postMessage(msg, transfer);
 const listen = (fn) => (node ? port.on('message', fn) : port.addEventListener('message', (e) => fn(e.data)));
 

@@ -45,10 +45,25 @@ function topicList(connections) {
 const bagTopics = (connections, counts) =>
   topicList([...connections.values()].map((c) => ({ topic: c.topic, type: c.type ?? '', count: counts.get(c.conn) ?? 0 })));
 
-async function need(pkg, file) {
+// The optional peers, each imported by a literal specifier so that bundlers (esbuild, Vite, webpack) follow them with
+// no configuration; loaded on first use only, so the core package and logs that do not need a peer work without it.
+const PEERS = {
+  '@mcap/core': () => import('@mcap/core'),
+  '@mcap/support': () => import('@mcap/support'),
+  '@foxglove/rosmsg': () => import('@foxglove/rosmsg'),
+  '@foxglove/rosmsg2-serialization': () => import('@foxglove/rosmsg2-serialization'),
+  '@foxglove/rosmsg-serialization': () => import('@foxglove/rosmsg-serialization'),
+  '@foxglove/rosbag': () => import('@foxglove/rosbag'),
+  // the record classes of @foxglove/rosbag, for bags without an index (read record by record)
+  '@foxglove/rosbag/record': () => import('@foxglove/rosbag/dist/cjs/record.js'),
+  '@foxglove/rosbag/fields': () => import('@foxglove/rosbag/dist/cjs/fields.js'),
+};
+
+async function need(peer, file) {
   try {
-    return await import(pkg);
+    return await PEERS[peer]();
   } catch (e) {
+    const pkg = peer.startsWith('@foxglove/rosbag/') ? '@foxglove/rosbag' : peer;
     throw new LogError('MISSING_DEPENDENCY', `openLog: ${file}: reading this log needs the optional peer dependency ${pkg} ` +
       `(npm install @mcap/core @mcap/support @foxglove/rosmsg @foxglove/rosmsg2-serialization @foxglove/rosmsg-serialization ` +
       `@foxglove/rosbag): ${e.message}`, { file, cause: e });
@@ -60,7 +75,13 @@ async function byteSource(source, name) {
   const fn = 'openLog';
   if (typeof source === 'string') {
     if (source === '') throw new RangeError(`${fn}: path must not be empty`);
-    const fs = await import('node:fs/promises');
+    // inside try: a browser bundle leaves this Node-only import alone (esbuild does not resolve it there)
+    let fs;
+    try {
+      fs = await import('node:fs/promises');
+    } catch (e) {
+      throw new TypeError(`${fn}: a path needs Node's file system (in a browser, pass a File or Blob): ${e.message}`);
+    }
     const handle = await fs.open(source, 'r');
     try {
       return { ...(await handleSource(handle, name ?? source)), close: () => handle.close() };
@@ -504,7 +525,7 @@ async function* bagRecords(src, decompress, rec) {
 
 async function openBagStream(src, decompress, indexError) {
   const file = src.name;
-  const rec = { ...(await need('@foxglove/rosbag/dist/cjs/record.js', file)), ...(await need('@foxglove/rosbag/dist/cjs/fields.js', file)) };
+  const rec = { ...(await need('@foxglove/rosbag/record', file)), ...(await need('@foxglove/rosbag/fields', file)) };
   const { parse } = await need('@foxglove/rosmsg', file);
   const { MessageReader } = await need('@foxglove/rosmsg-serialization', file);
   const connections = new Map(), counts = new Map();
