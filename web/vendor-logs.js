@@ -3,9 +3,8 @@
 // Web Worker sees no import map, so the bare names the entry imports must be resolved before the browser gets them.
 // Nothing is fetched from a CDN.
 //
-// Three adaptations, both at bundle time, none in the package's files:
-// - the entry loads each peer with `import(name)` on a variable name (they are optional), which no bundler can
-//   follow; the bundle gives those calls a table of the peers' static imports instead (peerTable below);
+// Two adaptations, both at bundle time, none in the package's files (the entry imports its peers by literal names,
+// which esbuild follows by itself):
 // - the decompressors (@foxglove/wasm-lz4, wasm-zstd, wasm-bz2) are Emscripten modules that `require` their .wasm
 //   for a file URL; the bundle inlines each .wasm as a data: URL (application/wasm) that the worker fetches.
 // - the lz4 and zstd decompressors copy their output with Node's Buffer: web/vendor-buffer.js stands in for it.
@@ -25,36 +24,12 @@ export async function peerNames(root) {
   return Object.keys((await packageJson(root)).peerDependencies ?? {});
 }
 
-// Modules of those peers the entry names by a literal (e.g. need('@foxglove/rosbag/dist/cjs/record.js', file)): its
-// reader of bags without an index uses the record classes of @foxglove/rosbag directly.
-const NEEDED_MODULE = /\bneed\((['"])([^'"]+)\1/g;
-export const neededModules = (text) => [...new Set([...text.matchAll(NEEDED_MODULE)].map((m) => m[2]))];
-
 // The file the package's exports map gives its public subpath 'rtl-wasm/logs'.
 export async function logsEntry(root) {
   const target = (await packageJson(root)).exports?.['./logs'];
   const file = typeof target === 'string' ? target : target?.browser ?? target?.import ?? target?.default;
   if (typeof file !== 'string') throw new Error('package.json has no export for ./logs');
   return join(root, file);
-}
-
-const DYNAMIC_PEER_IMPORT = /\bimport\((\w+)\)/g;
-
-function peerTable(names, entry) {
-  const filter = new RegExp(`^${entry.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}$`);
-  return {
-    name: 'rtl-peer-table',
-    setup(build) {
-      build.onLoad({ filter }, async (args) => {
-        const text = await fs.readFile(args.path, 'utf8');
-        const table = `const __rtlPeers = {${names.map((n) => `${JSON.stringify(n)}: () => import(${JSON.stringify(n)})`).join(', ')}};\n` +
-          'const __rtlPeer = (name) => (__rtlPeers[name] ? __rtlPeers[name]() : Promise.reject(new Error(`${name} is not in the bundle`)));\n';
-        const patched = text.replace(DYNAMIC_PEER_IMPORT, (m, v) => `__rtlPeer(${v})`);
-        if (patched === text) throw new Error(`${args.path} has no import(name) to route to its peers: update web/vendor-logs.js`);
-        return { contents: table + patched, loader: 'js' };
-      });
-    },
-  };
 }
 
 const cache = new Map();   // root -> { stamp, code }
@@ -72,7 +47,6 @@ export async function bundleLogs(root) {
     nodePaths: [join(root, 'node_modules')], absWorkingDir: root, logLevel: 'silent', legalComments: 'eof',
     loader: { '.wasm': 'dataurl' }, external: ['fs', 'path', 'crypto', 'node:*'],
     inject: [BUFFER_SHIM],
-    plugins: [peerTable([...new Set([...await peerNames(root), ...neededModules(await fs.readFile(entry, 'utf8'))])], entry)],
   });
   const code = result.outputFiles[0].text;
   cache.set(root, { stamp, code });
