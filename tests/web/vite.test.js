@@ -30,7 +30,7 @@ async function checkApp(browser, url, shot) {
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console.error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   const wasmResponses = [];
-  page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(`${r.status()} ${r.headers()['content-type']}`); });
+  page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(`${/rtl-extras[^/]*\.wasm$/.test(r.url()) ? 'extras' : 'core'} ${r.status()} ${r.headers()['content-type']}`); });
   await page.goto(url);
   await page.waitForFunction(() => window.__result !== undefined, null, { timeout: 60000 });
   const r = await page.evaluate(() => window.__result);
@@ -58,7 +58,8 @@ async function checkApp(browser, url, shot) {
   assert.equal(svgUses, 4);
   assert.equal(r.svgCircles, 1, 'one mark, the unlabelled points\' colour');
   assert.equal(r.svgLines, 1);
-  assert.deepEqual(wasmResponses, ['200 application/wasm'], 'one streaming-compilable .wasm request');
+  assert.deepEqual(wasmResponses, ['core 200 application/wasm', 'extras 200 application/wasm'],
+    'one streaming-compilable .wasm request per module: the core at init(), the extras at load()');
   assert.deepEqual(problems, []);
   assert.equal(r.version, JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
 }
