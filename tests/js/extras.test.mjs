@@ -160,3 +160,22 @@ test('esbuild bundles the browser entry: the extras glue becomes a chunk of its 
   assert.equal(extrasChunk.length, 1, 'one chunk holds the extras glue, which finds rtl-extras.wasm beside itself');
   assert.match(entry[1], /import\("\.\/[\w-]+\.js"\)/, 'the entry imports it on demand');
 });
+
+test('each module reports its own boundary schema: the moved calls\' option structs are the extras module\'s', async () => {
+  const { default: createCore } = await import(new URL('rtl.mjs', DIST).href);
+  const { default: createExtras } = await import(new URL('rtl-extras.mjs', DIST).href);
+  const core = await createCore({ wasmBinary: coreBytes });
+  const extras = await createExtras({ wasmBinary: readFileSync(new URL('rtl-extras.wasm', DIST)) });
+  const calls = extras.boundarySchema().calls;
+  assert.deepEqual(Object.keys(calls).sort(), ['assign', 'drawScan2D', 'drawTikz3D', 'kalmanCreate']);
+  assert.deepEqual(calls.drawScan2D.options, [['width', 1], ['height', 1], ['markRadius', 1], ['format', 1, ['tikz', 'tikzpicture', 'svg']]]);
+  assert.deepEqual(calls.drawTikz3D.options, [['fov', 1], ['direction', 3], ['width', 1], ['height', 1], ['markRadius', 1], ['standalone', 1]]);
+  assert.deepEqual(calls.assign.options, [['rows', 1], ['cols', 1], ['maximize', 1]]);
+  assert.deepEqual(calls.kalmanCreate.options.map(([n]) => n), ['stateDim', 'measurementDim', 'controlDim', 'processNoise', 'observationNoise']);
+  for (const c of Object.values(calls)) assert.deepEqual([c.scalars, c.arrays], [[], []], 'results built in C++ (NamedObjectResult)');
+  const coreCalls = Object.keys(core.boundarySchema().calls);
+  assert.ok(coreCalls.includes('segment') && coreCalls.includes('simplify'));
+  for (const k of Object.keys(calls)) assert.ok(!coreCalls.includes(k), `${k} is not in the core`);
+  for (const f of ['drawScan2D', 'readPcd', 'assign', 'kalmanCreate']) assert.equal(typeof core[f], 'undefined', `the core has no ${f}`);
+  assert.equal(typeof extras.segment, 'undefined', 'the extras module has no segment');
+});
