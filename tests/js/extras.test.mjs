@@ -122,8 +122,8 @@ test('browser entry: a failed fetch rejects load() with an Error starting "load:
 });
 
 test('load and init({ load }): TypeError / RangeError for a bad module name', async () => {
-  await assert.rejects(async () => rtl.load(), (e) => e instanceof TypeError && /^load: name must be a module name \(a string\), got undefined/.test(e.message));
-  await assert.rejects(async () => rtl.load('core'), (e) => e instanceof RangeError && e.message === 'load: name "core" is not a module of the package (known: extras)');
+  await assert.rejects(rtl.load(), (e) => e instanceof TypeError && /^load: name must be a module name \(a string\), got undefined/.test(e.message));
+  await assert.rejects(rtl.load('core'), (e) => e instanceof RangeError && e.message === 'load: name "core" is not a module of the package (known: extras)');
   await assert.rejects(init({ load: 'extras' }), (e) => e instanceof TypeError && /^init: option load must be an array of module names/.test(e.message));
   await assert.rejects(init({ load: ['extras', 'draw'] }), (e) => e instanceof RangeError && e.message === 'init: option load[1] "draw" is not a module of the package (known: extras)');
   throwsWith(() => rtl.heapInUse('all'), RangeError, /^heapInUse: module "all" is not a module of the package \(known: core, extras\)$/);

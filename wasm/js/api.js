@@ -35,11 +35,12 @@ const VERSION = '__RTL_VERSION__';
 const loaders = new WeakMap();
 
 /**
- * The package's API on one started Emscripten module m. tsc checks the object against index.d.ts's RTL
+ * The package's API on one started core module m, with the modules loaded on demand (onDemand: {parts, locateFile},
+ * see start() and modules.js). tsc checks the object against index.d.ts's RTL
  * (tests/js/types.test.mjs); lastComputeMs, a getter added below, is the one member the literal leaves out.
  * @returns {RTL}
  */
-function wrap(m, parts) {
+function wrap(m, onDemand) {
   let lastComputeMs = NaN;  // time spent in the C++ library by the last segment()/vectorize()/simplify() call
   // Stateful objects own a C++ object behind an integer handle: dispose() frees it, and if the caller forgets,
   // the FinalizationRegistry frees it after the wrapper is garbage collected (the held value does not reference
@@ -48,8 +49,8 @@ function wrap(m, parts) {
   const heap = heapOf(m);
   // What the functions of this instance share: the module, its memory functions, the calls' options and results by
   // name (schema.js), the registry and the timing.
-  // extras(fn): the extras module's {m, withHeap, boundary}, or an Error naming fn and the call that loads it.
-  const { extras, load, modules } = onDemandModules(m, parts, registry);
+  // extras(fn): the extras module's {m, withHeap, boundary, registry}, or an Error naming fn and the call that loads it.
+  const { extras, load, modules } = onDemandModules(m, onDemand, registry);
   const ctx = { m, ...heap, boundary: boundaryOf(m), registry, extras, setComputeMs: (ms) => { lastComputeMs = ms; } };
   const { release } = heap;
   // A diagnostic of one module ('core', 'extras') or, without a name, the sum over the loaded ones (equal figures
@@ -86,8 +87,8 @@ function wrap(m, parts) {
     pointBuffer: heap.pointBuffer,
     memoryBytes: (which) => each('memoryBytes', which, (x) => x.memoryBytes()),
     stackPointer: (which) => each('stackPointer', which, (x) => x.stackPointer()),
-    // Starts a module loaded on demand ('extras'); idempotent; resolves to this object.
-    load: (name) => load(name).then(() => /** @type {RTL} */ (api)),
+    // Starts a module loaded on demand ('extras'); idempotent; resolves to this object (a bad name rejects too).
+    load: async (name) => { await load(name); return /** @type {RTL} */ (api); },
   };
   Object.defineProperty(api, 'lastComputeMs', { get: () => lastComputeMs, enumerable: false });
   loaders.set(api, load);
