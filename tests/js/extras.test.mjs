@@ -3,11 +3,15 @@
 // entries load it in init(); the browser entry loads it on rtl.load('extras') (or init({ load })), and before that
 // each moved function throws the documented Error; load() checks its argument, is idempotent and can be retried
 // after a failed fetch; the diagnostics cover both modules. The browser entry runs here in Node with the core's
-// bytes given and a fetch() that serves dist/ (the glue fetches rtl-extras.wasm through locateFile's URL).
+// bytes given and a fetch() that serves dist/ (the glue fetches rtl-extras.wasm through locateFile's URL). The CLI
+// (bin/rtl.js) writes the same JSON, SVG and TikZ bytes as before the split, on the tests/data logs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { createHash } from 'node:crypto';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
+import { fileURLToPath } from 'node:url';
 import init from 'rtl-wasm';
 import { goldenDigests } from './extras/golden-cases.mjs';
 import { throwsWith } from './helpers.mjs';
@@ -178,4 +182,19 @@ test('each module reports its own boundary schema: the moved calls\' option stru
   for (const k of Object.keys(calls)) assert.ok(!coreCalls.includes(k), `${k} is not in the core`);
   for (const f of ['drawScan2D', 'readPcd', 'assign', 'kalmanCreate']) assert.equal(typeof core[f], 'undefined', `the core has no ${f}`);
   assert.equal(typeof extras.segment, 'undefined', 'the extras module has no segment');
+});
+
+test('the CLI writes the same bytes as before the split: JSON, SVG, TikZ 2D/3D on the tests/data logs, a bag, a budget', { timeout: 180_000 }, () => {
+  const sha = (b) => createHash('sha256').update(b).digest('hex');
+  const root = fileURLToPath(new URL('../..', import.meta.url));
+  const cases = JSON.parse(readFileSync(new URL('extras/cli-golden.json', import.meta.url), 'utf8'));
+  assert.equal(cases.length, 27);
+  for (const c of cases) {
+    const r = spawnSync(process.execPath, ['bin/rtl.js', ...c.args], { cwd: root, maxBuffer: 1 << 26 });
+    const what = `rtl ${c.args.join(' ')}`;
+    assert.equal(r.status, c.status, `${what}: exit status (${r.stderr})`);
+    assert.equal(r.stdout.length, c.bytes, `${what}: output length`);
+    assert.equal(sha(r.stdout), c.stdout, `${what}: output bytes`);
+    assert.equal(sha(r.stderr), c.stderr, `${what}: stderr`);
+  }
 });

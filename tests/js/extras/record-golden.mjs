@@ -1,6 +1,8 @@
 // Records golden-cases.mjs's digests from a built package folder into extras-golden.json:
 //   node tests/js/extras/record-golden.mjs <dist folder>
 // Run once on the package before the extras module existed; the test compares the package against that file.
+// cli-golden.json holds the CLI's outputs of the same time (bin/rtl.js on the tests/data logs, run from the
+// repository root: the SHA-256 of stdout and stderr, the exit status and the output's length per argument list).
 import { writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
