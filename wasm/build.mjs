@@ -1,6 +1,7 @@
 #!/usr/bin/env node
 // Builds the rtl-wasm package into dist/: configures and builds wasm/ with emcmake (build dir build/wasm), checks
-// that the ES6 and CommonJS links produced the same rtl.wasm, and assembles the JS entries and the .d.ts.
+// that the ES6 and CommonJS links produced the same rtl.wasm (and the same rtl-extras.wasm, the module loaded on
+// demand: docs/package-modules.md), and assembles the JS entries and the .d.ts.
 //   node wasm/build.mjs            (npm run build)     RTL_JOBS=n  parallel compile jobs (default: all cores)
 //   RTL_WASM_BUILD_DIR=dir, RTL_DIST_DIR=dir (relative to the repository; defaults build/wasm, dist): build a variant
 //   (a folder configured beforehand with other options keeps them) into its own package folder, leaving dist/ alone.
@@ -54,15 +55,19 @@ const packageOptions = process.env.RTL_WASM_BUILD_DIR ? [] : ['-DRTL_WASM_SIMD12
 // override: emcmake's default passes a flag Node 20 rejects.
 run('emcmake', ['cmake', '-S', '.', '-B', BUILD, '-DCMAKE_BUILD_TYPE=Release', '-DEigen3_DIR=/usr/share/eigen3/cmake',
   '-DCMAKE_CROSSCOMPILING_EMULATOR=/usr/bin/node', '-DRTL_BUILD_WASM=ON', '-DRTL_INSTALL=OFF', ...packageOptions]);
-run('cmake', ['--build', BUILD, '-j', jobs, '--target', 'rtl_wasm_es', 'rtl_wasm_node']);
+run('cmake', ['--build', BUILD, '-j', jobs, '--target', 'rtl_wasm_es', 'rtl_wasm_node', 'rtl_extras_es', 'rtl_extras_node']);
 
 const es = join(BUILD, 'wasm', 'es');
 const node = join(BUILD, 'wasm', 'node');
-for (const f of [join(es, 'rtl.mjs'), join(es, 'rtl.wasm'), join(node, 'rtl.cjs'), join(node, 'rtl.wasm')]) {
-  if (!existsSync(f)) fail(`missing build output ${f}`);
+// The core module (rtl.*) and the extras module (rtl-extras.*), each an ES6 and a CommonJS glue around one .wasm.
+const MODULES = ['rtl', 'rtl-extras'];
+for (const name of MODULES) {
+  for (const f of [join(es, `${name}.mjs`), join(es, `${name}.wasm`), join(node, `${name}.cjs`), join(node, `${name}.wasm`)]) {
+    if (!existsSync(f)) fail(`missing build output ${f}`);
+  }
+  if (!readFileSync(join(es, `${name}.wasm`)).equals(readFileSync(join(node, `${name}.wasm`))))
+    fail(`the ES6 and CommonJS links produced different ${name}.wasm files; dist/ ships only one`);
 }
-if (!readFileSync(join(es, 'rtl.wasm')).equals(readFileSync(join(node, 'rtl.wasm'))))
-  fail('the ES6 and CommonJS links produced different rtl.wasm files; dist/ ships only one');
 
 // The CommonJS twin of index.d.ts (for `import init = require('rtl-wasm')` under TypeScript's node16/nodenext):
 // the same declarations inside `namespace init`, merged with the init function value, and `export = init`.
@@ -121,9 +126,11 @@ async function writeBundle(file, format) {
 
 rmSync(DIST, { recursive: true, force: true });
 mkdirSync(DIST, { recursive: true });
-writeMinified('rtl.mjs', readFileSync(join(es, 'rtl.mjs'), 'utf8'), 'esm', false);
-writeMinified('rtl.cjs', readFileSync(join(node, 'rtl.cjs'), 'utf8'), 'cjs', false);
-copyFileSync(join(es, 'rtl.wasm'), join(DIST, 'rtl.wasm'));
+for (const name of MODULES) {
+  writeMinified(`${name}.mjs`, readFileSync(join(es, `${name}.mjs`), 'utf8'), 'esm', false);
+  writeMinified(`${name}.cjs`, readFileSync(join(node, `${name}.cjs`), 'utf8'), 'cjs', false);
+  copyFileSync(join(es, `${name}.wasm`), join(DIST, `${name}.wasm`));
+}
 await writeBundle('api.mjs', 'esm');
 await writeBundle('api.cjs', 'cjs');
 
@@ -146,8 +153,11 @@ copyFileSync(join(ROOT, 'wasm', 'NOTICE.md'), join(DIST, 'NOTICE.md'));
 // ---- end of the ROS subpath exports
 
 console.log(`dist/ ready (rtl-wasm ${pkg.version}): rtl.wasm ${readFileSync(join(DIST, 'rtl.wasm')).length} bytes`);
-// The size as the package's budget counts it (tests/js/pack.test.mjs asserts it): what a browser loads, each file by gzip -9.
+// The size as the package's budget counts it (tests/js/pack.test.mjs asserts it): what a browser loads first, each
+// file by gzip -9; the extras module, loaded on demand, is counted on its own.
 if (hasCommand('gzip')) {
-  const gz = ['rtl.wasm', 'rtl.mjs', 'api.mjs', 'index.mjs'].map((f) => [f, execFileSync('gzip', ['-9', '-c', join(DIST, f)], { maxBuffer: 1 << 26 }).length]);
-  console.log(`gzip -9: ${gz.map(([f, n]) => `${f} ${n}`).join(', ')}; total ${gz.reduce((a, [, n]) => a + n, 0)} B (budget <= 350,000)`);
+  const sizes = (files) => files.map((f) => [f, execFileSync('gzip', ['-9', '-c', join(DIST, f)], { maxBuffer: 1 << 26 }).length]);
+  const say = (gz) => `${gz.map(([f, n]) => `${f} ${n}`).join(', ')}; total ${gz.reduce((a, [, n]) => a + n, 0)} B`;
+  console.log(`gzip -9, loaded first: ${say(sizes(['rtl.wasm', 'rtl.mjs', 'api.mjs', 'index.mjs']))} (budget <= 350,000)`);
+  console.log(`gzip -9, extras (on demand): ${say(sizes(['rtl-extras.wasm', 'rtl-extras.mjs']))}`);
 }

@@ -117,7 +117,7 @@ self.onmessage = async ({ data }) => {
     ready ??= init();
     const rtl = await ready;
     if (data.kind === 'carmen') readCarmen(rtl, data);
-    else if (data.kind === 'pcd') readPcd(rtl, data);
+    else if (data.kind === 'pcd') readPcd(await rtl.load('extras'), data);  // readPcd: in the extras module
     else if (data.kind === 'log-open') await openLog(data);
     else if (data.kind === 'log-read') await readTopic(rtl, data);
     else throw new TypeError(`data-worker: unknown message kind ${data.kind}`);

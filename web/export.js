@@ -66,12 +66,14 @@ export function exportArguments(figure) {
   return { drawing: sceneDrawing(figure.scene, e, figure.scale), svg: { width: 800, height: Math.min(Math.max(h, 100), 4000) } };
 }
 
-// SVG and TikZ texts of what `figure` shows now.
-export function figureSvg(rtl, figure) {
+// SVG and TikZ texts of what `figure` shows now (the writers are in the package's extras module, loaded on first use).
+export async function figureSvg(rtl, figure) {
+  await rtl.load('extras');
   const { drawing, svg } = exportArguments(figure);
   return rtl.toSvg(drawing, svg);
 }
-export function figureTikz(rtl, figure) {
+export async function figureTikz(rtl, figure) {
+  await rtl.load('extras');
   return rtl.toTikz(exportArguments(figure).drawing);
 }
 

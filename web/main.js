@@ -199,8 +199,8 @@ async function main() {
     return { drawing: { ...drawing, points: Array.from(drawing.points), labels: Array.from(drawing.labels), segments: Array.from(drawing.segments) }, svg };
   };
   const name = () => `rtl-${state.lesson.id}-step${state.player.step + 1}`;
-  $('dl-svg').addEventListener('click', () => download(`${name()}.svg`, 'image/svg+xml', figureSvg(state.rtl, state.figure)));
-  $('dl-tikz').addEventListener('click', () => download(`${name()}.tex`, 'text/x-tex', figureTikz(state.rtl, state.figure)));
+  $('dl-svg').addEventListener('click', async () => download(`${name()}.svg`, 'image/svg+xml', await figureSvg(state.rtl, state.figure)));
+  $('dl-tikz').addEventListener('click', async () => download(`${name()}.tex`, 'text/x-tex', await figureTikz(state.rtl, state.figure)));
   $('reset-view').addEventListener('click', () => state.figure?.resetView());
   $('copy-link').addEventListener('click', copyLink);
   // the user's own data: the lesson reopens (its defaults) on the chosen scan

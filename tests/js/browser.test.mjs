@@ -1,5 +1,6 @@
 // The whole API in headless Chromium (the browser entry dist/index.js, ES6 web glue, .wasm fetched by the glue):
-// readers on fetched files, segment, vectorize, stateful classes with Symbol.dispose, SVG, and error classes.
+// readers on fetched files, segment, vectorize, stateful classes with Symbol.dispose, SVG (after load('extras'),
+// which fetches the extras module once), and error classes.
 // Then the C++ writer's SVG of a real scan with clusters and segments (toSvg) is loaded as an SVG document, rendered
 // and screenshot; the screenshot's pixels must show every cluster colour, the black segments and a white ground.
 // Uses the page tests' server and browser helpers (tests/web/helpers.js).
@@ -51,6 +52,11 @@ test('Chromium: every function of the package works from the browser entry', { t
     t.insert('robot', 'map', { angle: scans[0].theta, translation: [scans[0].x, scans[0].y] });
     const moved = t.transformPoints('robot', 'map', chain.subarray(0, 2));
     t.dispose();
+    // toSvg is in the extras module, which the browser entry loads on demand: before load(), the documented Error
+    let beforeLoad = null;
+    try { rtl.toSvg({}); } catch (e) { beforeLoad = [e.constructor.name, e.message]; }
+    const loaded = (await rtl.load('extras')) === rtl;
+    const fetched = performance.getEntriesByType('resource').map((e) => new URL(e.name).pathname).filter((p) => p.startsWith('/dist/'));
     const svg = rtl.toSvg({ points: xy, labels: seg.labels, segments: v.segments });
     const heap = rtl.heapInUse();
     let kinds = new Set();
@@ -66,7 +72,7 @@ test('Chromium: every function of the package works from the browser entry', { t
         const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
         return doc.documentElement.nodeName === 'svg' && doc.getElementsByTagName('parsererror').length === 0;
       })(),
-      kinds: [...kinds].sort(), heapSame: rtl.heapInUse() === heap,
+      kinds: [...kinds].sort(), heapSame: rtl.heapInUse() === heap, beforeLoad, loaded, fetched,
     };
   });
   assert.deepEqual(errors, []);
@@ -82,6 +88,10 @@ test('Chromium: every function of the package works from the browser entry', { t
   assert.equal(r.svg, true);
   assert.deepEqual(r.kinds, ['RangeError', 'TypeError']);
   assert.equal(r.heapSame, true, '10,000 failing calls leave the heap as it was');
+  assert.deepEqual(r.beforeLoad, ['Error', "toSvg: this function is in the package's extras module, which is not loaded: call await rtl.load('extras') first (or init({ load: ['extras'] }))"]);
+  assert.equal(r.loaded, true);
+  for (const f of ['/dist/rtl.wasm', '/dist/rtl-extras.mjs', '/dist/rtl-extras.wasm'])
+    assert.equal(r.fetched.filter((p) => p === f).length, 1, `${f} fetched once: ${r.fetched}`);
 }));
 
 test('Chromium renders the C++ writer\'s SVG of a scan: a screenshot shows every cluster colour and the segments', { timeout: 120_000 }, () => onPackagePage(async (page, errors, server) => {
@@ -89,6 +99,7 @@ test('Chromium renders the C++ writer\'s SVG of a scan: a screenshot shows every
   const d = await page.evaluate(async () => {
     const { default: init } = await import('/dist/index.js');
     const rtl = await init();
+    await rtl.load('extras');  // toSvg
     const xy = rtl.readCarmenLog(await (await fetch('/tests/data/intel.log')).text())[3].points;
     const seg = rtl.segment(xy, { step: 3, lowerBound: 0.1, upperBound: 0.5 });
     const segments = [];

@@ -3,7 +3,9 @@
 // objects with its own copy of a function they run. When readers.cpp (-Oz) came first, the hot bindings grew their
 // kept point vectors through its std::vector<VectorND>::__append, whose zero-fill called non-inlined Eigen
 // constructors: a 100k-point call right after a small one took 10-40x its steady time. Checked on the objects of the
-// wasm build folder (RTL_WASM_BUILD_DIR, default build/wasm) with llvm-nm; skipped only without a wasm build.
+// core module's link (the extras module, rtl-extras.wasm, runs no hot loop: draw.cpp, pcd.cpp and alg.cpp at -Oz,
+// and module.cpp's diagnostics) in the wasm build folder (RTL_WASM_BUILD_DIR, default build/wasm) with llvm-nm;
+// skipped only without a wasm build.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';

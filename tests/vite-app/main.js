@@ -1,6 +1,6 @@
 // A consumer app as a web developer writes it: a bare import of the installed package, bundled by `vite build`.
 // It fits a line to four points with a known answer, triggers one error, segments and vectorizes an L-shaped wall and
-// draws with the SVG exporter, then publishes the outcome on window.__result (and in the page) for the browser test.
+// draws with the SVG exporter (after loading the package's extras module), then publishes the outcome on window.__result (and in the page) for the browser test.
 import init from 'rtl-wasm';
 
 // Points at t = -3, -1, 1, 3 along the direction u = (2, 1)/sqrt(5) through (1, 1.5), pushed off the line by
@@ -25,6 +25,7 @@ async function main() {
     error = { name: e.name, message: e.message };
   }
   const again = rtl.fitLine(points); // the module keeps working after an error
+  await rtl.load('extras'); // toSvg is in the package's extras module, fetched on demand
   // The package's SVG exporter draws the points and the fitted line (between the outer points' projections).
   const [c, dir] = [fit.centroid, fit.direction];
   const end = (t) => [c[0] + t * dir[0], c[1] + t * dir[1]];

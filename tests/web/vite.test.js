@@ -30,7 +30,7 @@ async function checkApp(browser, url, shot) {
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console.error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   const wasmResponses = [];
-  page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(`${r.status()} ${r.headers()['content-type']}`); });
+  page.on('response', (r) => { if (r.url().endsWith('.wasm')) wasmResponses.push(`${/rtl-extras[^/]*\.wasm$/.test(r.url()) ? 'extras' : 'core'} ${r.status()} ${r.headers()['content-type']}`); });
   await page.goto(url);
   await page.waitForFunction(() => window.__result !== undefined, null, { timeout: 60000 });
   const r = await page.evaluate(() => window.__result);
@@ -58,7 +58,8 @@ async function checkApp(browser, url, shot) {
   assert.equal(svgUses, 4);
   assert.equal(r.svgCircles, 1, 'one mark, the unlabelled points\' colour');
   assert.equal(r.svgLines, 1);
-  assert.deepEqual(wasmResponses, ['200 application/wasm'], 'one streaming-compilable .wasm request');
+  assert.deepEqual(wasmResponses, ['core 200 application/wasm', 'extras 200 application/wasm'],
+    'one streaming-compilable .wasm request per module: the core at init(), the extras at load()');
   assert.deepEqual(problems, []);
   assert.equal(r.version, JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')).version);
 }
@@ -91,15 +92,22 @@ describe('packed tarball in a consumer folder: the rtl command, and tests/vite-a
     }
   });
 
-  test('the build emits the package\'s .wasm unchanged as a hashed asset', () => {
+  test('the build emits the package\'s two .wasm unchanged as hashed assets, the extras glue as a chunk of its own', () => {
     const assets = readdirSync(join(app, 'dist', 'assets'));
     const wasm = assets.filter((f) => f.endsWith('.wasm'));
-    assert.equal(wasm.length, 1, `assets: ${assets.join(', ')}`);
-    assert.match(wasm[0], /^rtl-[\w-]+\.wasm$/);
-    assert.ok(readFileSync(join(app, 'dist', 'assets', wasm[0])).equals(readFileSync(join(REPO, 'dist', 'rtl.wasm'))));
+    assert.equal(wasm.length, 2, `assets: ${assets.join(', ')}`);
+    const core = wasm.find((f) => !f.startsWith('rtl-extras-')), extras = wasm.find((f) => f.startsWith('rtl-extras-'));
+    assert.ok(core && extras, `assets: ${assets.join(', ')}`);
+    assert.match(core, /^rtl-[\w-]+\.wasm$/);
+    assert.ok(readFileSync(join(app, 'dist', 'assets', core)).equals(readFileSync(join(REPO, 'dist', 'rtl.wasm'))));
+    assert.ok(readFileSync(join(app, 'dist', 'assets', extras)).equals(readFileSync(join(REPO, 'dist', 'rtl-extras.wasm'))));
     const js = assets.filter((f) => f.endsWith('.js'));
-    assert.ok(js.length >= 1);
-    assert.ok(js.some((f) => readFileSync(join(app, 'dist', 'assets', f), 'utf8').includes(wasm[0])), 'the bundle refers to the hashed .wasm');
+    assert.ok(js.length >= 2);
+    const text = (f) => readFileSync(join(app, 'dist', 'assets', f), 'utf8');
+    const coreJs = js.filter((f) => text(f).includes(core)), extrasJs = js.filter((f) => text(f).includes(extras));
+    assert.equal(coreJs.length, 1, 'one bundle refers to the hashed core .wasm');
+    assert.equal(extrasJs.length, 1, 'one chunk refers to the hashed extras .wasm');
+    assert.notEqual(coreJs[0], extrasJs[0], 'the extras glue is a chunk of its own, fetched on load(\'extras\')');
   });
 
   test('the installed tarball provides the rtl command (package bin), which runs from the consumer folder', () => {

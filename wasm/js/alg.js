@@ -3,8 +3,9 @@
 import { boolOption, check, num, options, toF64 } from './checks.js';
 import { CppObject, HANDLE } from './owned.js';
 
-/** assign and the KalmanFilter class of one module instance: ctx = {m, withHeap, registry} (api.js; see owned.js). */
-export function algorithmsApi({ m, withHeap, registry }) {
+/** assign and the KalmanFilter class of one package instance: ctx.extras(fn) gives the extras module's {m, withHeap,
+ *  registry} (modules.js; see owned.js), or throws when it is not loaded. */
+export function algorithmsApi({ extras }) {
   // A cost matrix as [row-major Float64Array, rows, cols]: an array of equal-length rows (rows/cols inferred,
   // given ones must agree), or a flat array / typed array with options rows and cols.
   function costMatrix(costs, o, fn) {
@@ -48,16 +49,18 @@ export function algorithmsApi({ m, withHeap, registry }) {
   // total cost; columns[i] = -1 for the rows left out when rows > cols.
   function assign(costs, opts) {
     const fn = 'assign';
+    const { m, withHeap, boundary } = extras(fn);
     const o = options(opts, fn, ['rows', 'cols', 'maximize']);
     const maximize = boolOption(o, 'maximize', fn, false);
     const [flat, rows, cols] = costMatrix(costs, o, fn);
-    return withHeap(fn, [flat], (p, n) => m.assign(p, n, rows, cols, maximize));
+    return withHeap(fn, [flat], (p, n) => m.assign(p, n, boundary.call('assign').writeOptions({ rows, cols, maximize })));
   }
 
   class KalmanFilter extends CppObject {
-    #n; #m; #c;
+    #n; #m; #c; #x;
     constructor(opts) {
       const fn = 'KalmanFilter';
+      const x = extras(fn), { m } = x;
       if (opts === undefined) throw new TypeError(`${fn}: options {stateDim, measurementDim} are required`);
       const o = options(opts, fn, ['stateDim', 'measurementDim', 'controlDim', 'processNoise', 'observationNoise']);
       for (const k of ['stateDim', 'measurementDim']) if (o[k] === undefined) throw new TypeError(`${fn}: option ${k} is required`);
@@ -66,7 +69,9 @@ export function algorithmsApi({ m, withHeap, registry }) {
       const c = num(o, 'controlDim', fn, 0, { min: 0, integer: true, max: 4096 });
       const q = num(o, 'processNoise', fn, 1);
       const r = num(o, 'observationNoise', fn, 1);
-      super(check(m.kalmanCreate(n, md, c, q, r), fn), (h) => m.kalmanDestroy(h), registry, fn, 'filter');
+      const created = { stateDim: n, measurementDim: md, controlDim: c, processNoise: q, observationNoise: r };
+      super(check(m.kalmanCreate(x.boundary.call('kalmanCreate').writeOptions(created)), fn), (h) => m.kalmanDestroy(h), x.registry, fn, 'filter');
+      this.#x = x;
       this.#n = n;
       this.#m = md;
       this.#c = c;
@@ -82,6 +87,7 @@ export function algorithmsApi({ m, withHeap, registry }) {
       if (a.length !== rows * cols)
         throw new RangeError(`${fn}: expected ${rows * cols} numbers (${rows} x ${cols}${cols > 1 ? ', row-major' : ''}), got ${a.length}`);
       for (let i = 0; i < a.length; i++) if (!Number.isFinite(a[i])) throw new RangeError(`${fn}: values[${i}] is ${a[i]}, expected a finite number`);
+      const { m, withHeap } = this.#x;
       withHeap(fn, [a], (p, n) => m.kalmanSet(h, which, p, n));
     }
     setState(x) { this.#set('setState', 0, this.#n, 1, x); }
@@ -102,6 +108,7 @@ export function algorithmsApi({ m, withHeap, registry }) {
       const fn = 'KalmanFilter.predict';
       const h = this[HANDLE]('predict');
       const u = control === undefined ? new Float64Array(this.#c) : this.#vector(fn, control, this.#c, 'control');
+      const { m, withHeap } = this.#x;
       withHeap(fn, [u], (p, n) => m.kalmanPredict(h, p, n));
     }
     // The correction with measurement z through H and R (Joseph form).
@@ -110,10 +117,11 @@ export function algorithmsApi({ m, withHeap, registry }) {
       const h = this[HANDLE]('correct');
       if (measurement === undefined) throw new TypeError(`${fn}: measurement is required`);
       const z = this.#vector(fn, measurement, this.#m, 'measurement');
+      const { m, withHeap } = this.#x;
       withHeap(fn, [z], (p, n) => m.kalmanCorrect(h, p, n));
     }
-    state() { return m.kalmanState(this[HANDLE]('state')); }
-    covariance() { return m.kalmanCovariance(this[HANDLE]('covariance')); }
+    state() { return this.#x.m.kalmanState(this[HANDLE]('state')); }
+    covariance() { return this.#x.m.kalmanCovariance(this[HANDLE]('covariance')); }
   }
   return { assign, KalmanFilter };
 }

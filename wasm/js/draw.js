@@ -6,8 +6,9 @@ import { boolOption, check, describe, num, options, toF64 } from './checks.js';
 const DRAWING_2D = ['dim', 'points', 'labels', 'segments', 'title', 'standalone'];
 const DRAWING_3D = ['dim', 'points', 'labels', 'segments', 'planes', 'polygons', 'standalone'];
 
-/** toTikz, toSvg and toLatexTable of one module instance: ctx = {m, withHeap} (api.js). */
-export function drawingApi({ m, withHeap }) {
+/** toTikz, toSvg and toLatexTable of one package instance: ctx.extras(fn) gives the extras module's {m, withHeap}
+ *  (modules.js), or throws when it is not loaded. */
+export function drawingApi({ extras }) {
   // Points (NaN = gap, never drawn), labels (integers >= -1) and segments of a 2D or 3D drawing.
   function checkDrawing(d, fn) {
     if (d === null || typeof d !== 'object' || Array.isArray(d) || ArrayBuffer.isView(d))
@@ -116,6 +117,7 @@ export function drawingApi({ m, withHeap }) {
   // into width x height cm; 3D: LaTeXTikz3D's picture of width x height cm from the camera.
   function toTikz(drawing, opts) {
     const fn = 'toTikz';
+    const { m, withHeap, boundary } = extras(fn);
     const o = options(opts, fn, ['standalone', 'width', 'height', 'markRadius', 'camera']);
     const standaloneOpt = boolOption(o, 'standalone', fn, undefined);
     const [W, H, r] = sizeOptions(o, fn, 12, 12, 'markRadius');
@@ -124,13 +126,15 @@ export function drawingApi({ m, withHeap }) {
     if (d.dim === 2) {
       if (o.camera !== undefined) throw new TypeError(`${fn}: option camera needs a 3D drawing (dim: 3)`);
       return withHeap(fn, [d.xy, d.labels, d.segs], (p, np, l, nl, s, ns) =>
-        m.drawScan2D(p, np, l, nl, s, ns, d.title, W, H, r, standalone ? 0 : 1));
+        m.drawScan2D(p, np, l, nl, s, ns, d.title, boundary.call('drawScan2D').writeOptions(
+          { width: W, height: H, markRadius: r, format: standalone ? 'tikz' : 'tikzpicture' })));
     }
-    const cam = camera(o.camera, fn);
+    const [fov, ...direction] = camera(o.camera, fn);
     const [pv, pc] = faces(drawing.planes, fn, 'planes');
     const [qv, qc] = faces(drawing.polygons, fn, 'polygons');
     return withHeap(fn, [d.xy, d.labels, d.segs, pv, pc, qv, qc], (p, np, l, nl, s, ns, a, na, b, nb, e, ne, f, nf) =>
-      m.drawTikz3D(p, np, l, nl, s, ns, a, na, b, nb, e, ne, f, nf, ...cam, W, H, r, standalone));
+      m.drawTikz3D(p, np, l, nl, s, ns, a, na, b, nb, e, ne, f, nf, boundary.call('drawTikz3D').writeOptions(
+        { fov, direction, width: W, height: H, markRadius: r, standalone })));
   }
 
   // The same 2D picture as SVG (rtl::writeSvg, a document in cm). Sizes are CSS pixels (96 per inch), so that the
@@ -138,6 +142,7 @@ export function drawingApi({ m, withHeap }) {
   const CM_PER_PX = 2.54 / 96;
   function toSvg(drawing, opts) {
     const fn = 'toSvg';
+    const { m, withHeap, boundary } = extras(fn);
     const o = options(opts, fn, ['width', 'height', 'pointRadius']);
     const W = num(o, 'width', fn, 800, { min: 0, exclusiveMin: true, max: 100000 });
     const H = num(o, 'height', fn, 800, { min: 0, exclusiveMin: true, max: 100000 });
@@ -145,12 +150,14 @@ export function drawingApi({ m, withHeap }) {
     const d = checkDrawing(drawing, fn);
     if (d.dim !== 2) throw new RangeError(`${fn}: only 2D drawings (3D: toTikz with dim 3)`);
     return withHeap(fn, [d.xy, d.labels, d.segs], (p, np, l, nl, s, ns) =>
-      m.drawScan2D(p, np, l, nl, s, ns, d.title, W * CM_PER_PX, H * CM_PER_PX, r * CM_PER_PX, 2));
+      m.drawScan2D(p, np, l, nl, s, ns, d.title, boundary.call('drawScan2D').writeOptions(
+        { width: W * CM_PER_PX, height: H * CM_PER_PX, markRadius: r * CM_PER_PX, format: 'svg' })));
   }
 
   // rows: arrays of cells (strings, or numbers written with String()); a null row is a horizontal rule.
   function toLatexTable(rows, opts) {
     const fn = 'toLatexTable';
+    const { m } = extras(fn);
     const o = options(opts, fn, ['heading', 'caption', 'escape', 'columns']);
     const escape = boolOption(o, 'escape', fn, true);
     const cells = (row, what) => {

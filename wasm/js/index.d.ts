@@ -18,8 +18,11 @@ export type Dim = 2 | 3;
 export interface InitOptions {
   /** The module's .wasm bytes. Loaded automatically in Node and (via fetch) in browsers; pass it to override. */
   wasmBinary?: ArrayBuffer | Uint8Array;
-  /** Where the .wasm lives when it is hosted somewhere else (a CDN). Do not pass it with a bundler. */
+  /** Where the .wasm lives when it is hosted somewhere else (a CDN). Do not pass it with a bundler. It is asked for
+   *  rtl-extras.wasm too when the extras module is loaded. */
   locateFile?: (path: string, scriptDirectory: string) => string;
+  /** Modules to load on demand that init() loads at once, as rtl.load(name) would (see RTL.load). */
+  load?: ModuleName[];
 }
 
 /** Loads and instantiates the WebAssembly module. Each call makes an independent instance. A wasmBinary that is
@@ -801,13 +804,32 @@ export interface RTL {
   StreamSegmenter: new (options?: StreamSegmenterOptions) => StreamSegmenter;
   TfTree: new (root: string, options?: { dim?: Dim }) => TfTree;
   /** bytes of wasm heap allocated by malloc once the buffers kept between calls are released (releaseBuffers():
-   *  equal figures before and after a series of calls mean nothing leaked; diagnostics, used by the leak tests) */
-  heapInUse(): number;
-  /** bytes of wasm linear memory */
-  memoryBytes(): number;
+   *  equal figures before and after a series of calls mean nothing leaked; diagnostics, used by the leak tests).
+   *  Without a module name: the sum over the core and every loaded module; with one, that module's. */
+  heapInUse(module?: PackageModule): number;
+  /** bytes of wasm linear memory (without a module name: the sum over the loaded modules) */
+  memoryBytes(module?: PackageModule): number;
   /** milliseconds the last segment()/vectorize()/simplify()/extractPolylines() call spent inside the C++ library (the rest of the call's time
    *  is argument checks and array transfer); diagnostics for benchmarks */
   readonly lastComputeMs: number;
-  /** the wasm shadow-stack pointer (diagnostics: it is the same before and after every call, failing or not) */
-  stackPointer(): number;
+  /** the wasm shadow-stack pointer (diagnostics: it is the same before and after every call, failing or not);
+   *  without a module name, the sum over the loaded modules' */
+  stackPointer(module?: PackageModule): number;
+  // ---- modules loaded on demand (the extras module)
+  /** Loads a module of the package on demand and resolves to this object. 'extras' (rtl-extras.wasm + its glue)
+   *  holds toSvg, toTikz, toLatexTable, readPcd, assign and KalmanFilter. The Node entries (import in Node,
+   *  require) load it in init(), so there this resolves at once; the browser entry loads it here (or in
+   *  init({ load: ['extras'] })). Idempotent: later calls get the same promise (after a failed load, a new try).
+   *  Calling one of its functions before it is loaded throws an Error whose message starts with the function's
+   *  name and says to call `await rtl.load('extras')`. TypeError/RangeError starting "load: " for a bad name;
+   *  an Error starting "load: " when the module cannot be fetched or started. */
+  load(name: ModuleName): Promise<RTL>;
+  // ---- end of the modules loaded on demand
 }
+
+// ---- modules loaded on demand (the extras module)
+/** A module of the package loaded on demand (RTL.load). */
+export type ModuleName = 'extras';
+/** A module of the package, for the diagnostics (heapInUse, memoryBytes, stackPointer): the core or a loaded one. */
+export type PackageModule = 'core' | ModuleName;
+// ---- end of the modules loaded on demand

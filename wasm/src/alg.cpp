@@ -1,6 +1,7 @@
 // assign() and KalmanFilter: rtl::solveAssignment (Munkres / Hungarian) and rtl::KalmanX behind an integer handle
 // (the JS class owns it). Matrices cross as row-major doubles in the wasm heap.
 #include "adapter.h"
+#include "schema.h"
 
 #include <Eigen/Core>
 
@@ -13,9 +14,24 @@ namespace {
 using Kalman = rtl::KalmanX<double>;
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-val assign(std::uintptr_t ptr, std::size_t len, double rows, double cols, bool maximize) {
+// assign()'s options (wasm/js/alg.js writes them by these names; schema.h): the matrix shape (checked by the JS
+// layer: integers, rows * cols = the costs' count) and the sense. The result is a small object built here.
+struct AssignOptions {
+  double rows = 0, cols = 0;
+  bool maximize = false;
+  template <class F>
+  void fields(F& f) {
+    f("rows", rows);
+    f("cols", cols);
+    f("maximize", maximize);
+  }
+};
+
+val assign(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
   return guarded([&] {
-    const auto r = static_cast<std::size_t>(rows), c = static_cast<std::size_t>(cols);
+    const auto o = readOptions<AssignOptions>(options);
+    const bool maximize = o.maximize;
+    const auto r = static_cast<std::size_t>(o.rows), c = static_cast<std::size_t>(o.cols);
     if (r * c != len) throw std::invalid_argument("costs has " + str(len) + " numbers for a " + str(r) + " x " + str(c) + " matrix");
     const double* costs = doubles(ptr);
     const std::vector<std::size_t> col = rtl::solveAssignment(len ? costs : nullptr, r, c, maximize);
@@ -34,9 +50,25 @@ val assign(std::uintptr_t ptr, std::size_t len, double rows, double cols, bool m
 
 Kalman* handle(std::uintptr_t h) { return reinterpret_cast<Kalman*>(h); }
 
-val kalmanCreate(double n, double m, double c, double q, double r) {
+// KalmanFilter's options (wasm/js/alg.js; schema.h): the dimensions (checked by the JS layer) and the noise scales
+// of Q and R.
+struct KalmanOptions {
+  double stateDim = 0, measurementDim = 0, controlDim = 0, processNoise = 1, observationNoise = 1;
+  template <class F>
+  void fields(F& f) {
+    f("stateDim", stateDim);
+    f("measurementDim", measurementDim);
+    f("controlDim", controlDim);
+    f("processNoise", processNoise);
+    f("observationNoise", observationNoise);
+  }
+};
+
+val kalmanCreate(std::uintptr_t options) {
   return guarded([&] {
-    auto* k = new Kalman(static_cast<std::size_t>(n), static_cast<std::size_t>(m), static_cast<std::size_t>(c), q, r);
+    const auto o = readOptions<KalmanOptions>(options);
+    auto* k = new Kalman(static_cast<std::size_t>(o.stateDim), static_cast<std::size_t>(o.measurementDim),
+                         static_cast<std::size_t>(o.controlDim), o.processNoise, o.observationNoise);
     return val(static_cast<double>(reinterpret_cast<std::uintptr_t>(k)));
   }, "KalmanX");
 }
@@ -98,6 +130,9 @@ void kalmanDestroy(std::uintptr_t h) { delete handle(h); }
 
 EMSCRIPTEN_BINDINGS(rtl_alg) {
   using namespace rtl_wasm;
+  // Results built as JS objects here (assign: {columns, total}; kalmanCreate: the handle).
+  registerCall<AssignOptions, NamedObjectResult>("assign");
+  registerCall<KalmanOptions, NamedObjectResult>("kalmanCreate");
   emscripten::function("assign", &assign);
   emscripten::function("kalmanCreate", &kalmanCreate);
   emscripten::function("kalmanSet", &kalmanSet);

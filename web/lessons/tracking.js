@@ -88,6 +88,7 @@ export default {
   title: 'Tracking clusters',
   summary: 'Follow the clusters of consecutive scans: Munkres pairs each track with a cluster, a Kalman filter smooths each track.',
   async create(host) {
+    await host.rtl.load('extras');  // assign and KalmanFilter are in the package's extras module
     const p0 = DEFAULTS;
     const scans = await host.data.load(p0.dataset);
     note(host.controls, `<strong>Excerpt:</strong> ${host.data.DATASETS[p0.dataset].label}, scans 2–11 of ${scans.length}, in the map by the log's poses: the robot turns on the spot, fixed objects keep still. From scan 18 on it drives, and Munkres sometimes pairs a track with a cluster that is not its nearest.`);
