@@ -1,14 +1,16 @@
 // fitLine(): the total-least-squares line of a point set (wasm/src/fit.cpp); argument checks only.
 import { dimOption, options, toF64 } from './checks.js';
 
-/** fitLine() of one module instance: ctx = {m, withHeap} (api.js). */
-export function fitLineApi({ m, withHeap }) {
+/** fitLine() of one module instance: ctx = {m, withHeap, boundary} (api.js). */
+export function fitLineApi({ m, withHeap, boundary }) {
+  // The options of m.fitLine by name, as wasm/src/fit.cpp declares them (schema.js).
+  const call = boundary.call('fitLine');
   function fitLine(points, opts) {
     const fn = 'fitLine';
     const o = options(opts, fn, ['dim']);
     const dim = dimOption(o, fn);
     const xy = toF64(points, fn, 'points');
-    return withHeap(fn, [xy], (p, n) => m.fitLine(p, n, dim));
+    return withHeap(fn, [xy], (p, n) => m.fitLine(p, n, call.writeOptions({ dim })));
   }
   return { fitLine };
 }
