@@ -2,6 +2,7 @@
 // option or a missing value, gets a message of this package rather than Node's), then checks of each value and of
 // the combinations. parseCommandLine throws UsageError (exit code 2); the message is printed after "rtl: ".
 import { extname } from 'node:path';
+import { defaults } from 'rtl-wasm';
 
 export class UsageError extends Error {}
 
@@ -172,6 +173,8 @@ export function parseCommandLine(argv) {
   const noSegment = Boolean(v['no-segment'] || v.raw);
   if (noSegment && v.segment) throw new UsageError(`--segment and ${v.raw ? '--raw' : '--no-segment'} contradict each other`);
   const segmenter = oneOf('segmenter', ['car', 'ia'], 'car');
+  // The package's defaults (its `defaults` export): the same values as a call without the option.
+  const seg = segmenter === 'car' ? defaults.segment : defaults.streamSegmenter, vect = defaults.vectorize;
   const opts = {
     file,
     files: positionals,
@@ -191,18 +194,18 @@ export function parseCommandLine(argv) {
     fit: Boolean(v.fit),
     segment: !noSegment,
     segmenter,
-    scaling: num('scaling', 0.05, { min: 0 }),
-    // CAR step s compares up to s-1 previous points, so 2 links consecutive points; IA's window of 3 (the package's).
-    step: num('step', segmenter === 'car' ? 2 : 3, { min: 1, integer: true }),
-    lower: num('lower', 0.1, { min: 0 }),
-    upper: num('upper', 0.5, { min: 0 }),
+    scaling: num('scaling', defaults.streamSegmenter.scaling, { min: 0 }),
+    // CAR step s compares up to s-1 previous points, so 2 links consecutive points; IA's window of 3.
+    step: num('step', seg.step, { min: 1, integer: true }),
+    lower: num('lower', seg.lowerBound, { min: 0 }),
+    upper: num('upper', seg.upperBound, { min: 0 }),
     method: oneOf('vectorize', METHODS, undefined),
-    sigma: num('sigma', 0.03, { positive: true }),
-    delta: num('delta', 0.3, { positive: true }),
+    sigma: num('sigma', vect.sigma, { positive: true }),
+    delta: num('delta', vect.delta, { positive: true }),
     strict: Boolean(v.strict),
-    epsilon: num('epsilon', 0.09, { positive: true }),
-    simplexShift: num('simplex-shift', 1, { min: 1, integer: true }),
-    maxIterations: num('max-iterations', 10000, { min: 1, integer: true }),
+    epsilon: num('epsilon', vect.epsilon, { positive: true }),
+    simplexShift: num('simplex-shift', vect.simplexShift, { min: 1, integer: true }),
+    maxIterations: num('max-iterations', vect.maxIterations, { min: 1, integer: true }),
     primitive: oneOf('primitive', ['line', 'plane'], 'line'),
     minPoints: num('min-points', 3, { min: 2, integer: true }),
     maxVertices: num('max-vertices', undefined, { min: 2, integer: true }),

@@ -4,10 +4,11 @@
 // build, and writes JSON, SVG or TikZ. Exit codes: 0 ok, 1 bad input data, 2 bad usage, 3 a function this build of
 // the package does not have.
 import { readFileSync, writeFileSync } from 'node:fs';
-import init from 'rtl-wasm';
+import init, { defaults } from 'rtl-wasm';
 import { parseCommandLine, UsageError } from './options.js';
 import { InputError, MissingFeature, asUsageError, loadPoints, render, run } from './pipeline.js';
 
+const { segment: seg, streamSegmenter: stream, vectorize: vect } = defaults;
 const HELP = `Usage: rtl [options] <file>      (use - to read standard input)
        rtl [options] <log.mcap|log.bag>...   (robot logs: every scan of a topic)
 
@@ -48,11 +49,11 @@ Segmentation (always first, unless --no-segment)
       --raw              (non-gap points) in scan order, as one cluster
       --segmenter S      car (batch, the scan as a closed loop; default) | ia (streaming)
       --step N           car: each point is compared with up to N-1 previous points
-                         (default 2: consecutive points are linked; 1 links nothing);
-                         ia: the window of the last N points (default 3)
-      --lower M          lower bound of the distance threshold in metres (default 0.1)
-      --upper M          upper bound in metres (default 0.5)
-      --scaling K        ia: threshold = K * range, clamped to the bounds (default 0.05)
+                         (default ${seg.step}: consecutive points are linked; 1 links nothing);
+                         ia: the window of the last N points (default ${stream.step})
+      --lower M          lower bound of the distance threshold in metres (default ${seg.lowerBound})
+      --upper M          upper bound in metres (default ${seg.upperBound})
+      --scaling K        ia: threshold = K * range, clamped to the bounds (default ${stream.scaling})
 
 Line fit
       --fit              total-least-squares line through each cluster of at least
@@ -60,15 +61,15 @@ Line fit
 
 Vectorization
   -m, --vectorize METHOD ftls | aftls | itls | dp | rw, applied to each cluster
-      --sigma M          max RMS distance of points from a line (TLS methods, default 0.03)
-      --delta M          corner tolerance of FTLS/AFTLS (default 0.3)
+      --sigma M          max RMS distance of points from a line (TLS methods, default ${vect.sigma})
+      --delta M          corner tolerance of FTLS/AFTLS (default ${vect.delta})
       --strict           FTLS/AFTLS: RTL's strict behaviour: a cluster whose corners cannot
                          all be met within --delta gets no segments ("failed" in the JSON).
                          Default (split mode): the polyline breaks at such a corner, so the
                          cluster becomes several polylines ("breaks" in the JSON).
-      --epsilon M        tolerance of Douglas-Peucker / Reumann-Witkam (default 0.09)
-      --simplex-shift N  AFTLS optimizer start simplex shift (default 1)
-      --max-iterations N AFTLS optimizer iteration cap (default 10000)
+      --epsilon M        tolerance of Douglas-Peucker / Reumann-Witkam (default ${vect.epsilon})
+      --simplex-shift N  AFTLS optimizer start simplex shift (default ${vect.simplexShift})
+      --max-iterations N AFTLS optimizer iteration cap (default ${vect.maxIterations})
       --primitive P      line | plane, for 3D points (default line; plane needs aftls)
       --min-points N     clusters with fewer points are not fitted/vectorized (default 3)
       --max-vertices J   instead of segmenting and vectorizing: polylines over the whole 2D

@@ -109,3 +109,30 @@ test('the module declares segment, vectorize and simplify; their results arrive 
   const kept = rtl.simplify([{ x: 0, y: 0 }, { x: 1, y: 0.001 }, { x: 2, y: 0 }], 0.1, true);
   assert.equal(kept.length, 2);
 });
+
+test('fitLine, the readers and TfTree cross by the declared names: the module declares every option, no positions', async () => {
+  const { default: createRtlModule } = await import('../../dist/rtl.mjs');
+  const { readFile } = await import('node:fs/promises');
+  const m = await createRtlModule({ wasmBinary: await readFile(new URL('../../dist/rtl.wasm', import.meta.url)) });
+  const { calls } = m.boundarySchema();
+  assert.deepEqual(calls.fitLine.options, [['dim', 1]]);
+  assert.deepEqual(calls.readCarmenLog.options, [['maxRange', 1]]);
+  assert.deepEqual(calls.readOrganizedLidar.options, [['beams', 1], ['layout', 1, ['column-major', 'row-major']]]);
+  assert.deepEqual(calls.tfCreate.options, [['dim', 1]]);
+  assert.deepEqual(calls.tfInsert.options, [['rotation', 4], ['translation', 3]]);
+  for (const name of ['fitLine', 'readCarmenLog', 'readOrganizedLidar', 'tfCreate', 'tfInsert'])
+    assert.deepEqual([calls[name].scalars, calls[name].arrays], [[], []], name);  // objects built in C++
+  // The bindings take the options block, not numbers: one argument fewer than the positional ones had.
+  const b = boundaryOf(m);
+  // 4 numbers with dim 3: the shape check, before any number is read, names the dim the options block gave.
+  assert.match(m.fitLine(0, 4, b.call('fitLine').writeOptions({ dim: 3 })).error, /not a multiple of dim 3/);
+  assert.match(m.fitLine(0, 3, b.call('fitLine').writeOptions({ dim: 2 })).error, /not a multiple of dim 2/);
+  const rtl = await init();
+  const tree = new rtl.TfTree('w', { dim: 3 });
+  tree.insert('a', 'w', { angle: Math.PI / 2, axis: [0, 0, 2], translation: [1, 2, 3] });
+  const t = tree.tf('w', 'a');  // the node's transformation: parent -> child coordinates
+  assert.deepEqual([...t.translation], [1, 2, 3]);
+  [0, -1, 0, 1, 0, 0, 0, 0, 1].forEach((r, i) => assert.ok(Math.abs(t.rotation[i] - r) < 1e-12, `rotation[${i}]`));
+  assert.deepEqual([...tree.transformPoints('w', 'a', [1, 0, 0])].map((x) => Math.round(x * 1e12) / 1e12), [1, 3, 3]);
+  tree.dispose();
+});

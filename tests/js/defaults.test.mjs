@@ -14,7 +14,7 @@ const finite = (xy) => xy.filter((_, i) => Number.isFinite(xy[i - (i % 2)]) && N
 test('defaults: frozen, every level', () => {
   assert.ok(Object.isFrozen(defaults));
   for (const k of Object.keys(defaults)) assert.ok(Object.isFrozen(defaults[k]), k);
-  assert.deepEqual(Object.keys(defaults).sort(), ['segment', 'streamSegmenter', 'vectorize']);
+  assert.deepEqual(Object.keys(defaults).sort(), ['extractPolylines', 'segment', 'streamSegmenter', 'vectorize']);
 });
 
 test('segment(): no options = defaults.segment; another upperBound differs', () => {
@@ -40,6 +40,18 @@ test('vectorize(): no options but method = method + defaults.vectorize, every me
     }
     assert.ok(differs > 0, `${method}: 4x sigma / epsilon changes some scan's segment count`);
   }
+});
+
+test('extractPolylines(): no options = defaults.extractPolylines; a smaller budget differs', () => {
+  let differs = 0;
+  for (const s of scans) {
+    const plain = rtl.extractPolylines(s.points);
+    assert.ok(plain.vertexCount > 0 && plain.vertexCount <= defaults.extractPolylines.maxVertices);
+    assert.deepEqual(rtl.extractPolylines(s.points, { ...defaults.extractPolylines }), plain);
+    const other = rtl.extractPolylines(s.points, { ...defaults.extractPolylines, maxVertices: defaults.extractPolylines.maxVertices / 5 });
+    if (other.vertexCount !== plain.vertexCount) differs++;
+  }
+  assert.ok(differs > 0, 'a fifth of the vertex budget changes some scan\'s polylines');
 });
 
 test('new StreamSegmenter(): no options = defaults.streamSegmenter', () => {

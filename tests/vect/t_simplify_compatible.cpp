@@ -639,3 +639,48 @@ TEST(SimplifyCompatible, LargestMagnitudeEveryPosition)
     largestMagnitude(nullptr, 0, g);
     EXPECT_EQ(g, 3.0);
 }
+
+// The one finite check covers every input length and element type: a non-finite coordinate at any position of one,
+// two or more float or double points throws invalid_argument with the same message; the largest finite values and
+// empty input do not throw.
+template<typename T>
+void expectFiniteCheck()
+{
+    const T inf = std::numeric_limits<T>::infinity(), big = std::numeric_limits<T>::max();
+    for (size_t n : {1u, 2u, 3u, 4u, 7u})
+        for (size_t dim : {2u, 3u})
+        {
+            std::vector<T> flat(n * dim);
+            for (size_t j = 0; j < flat.size(); ++j)
+                flat[j] = static_cast<T>(j % 5) - T(2);
+            for (bool hq : {false, true})
+            {
+                std::vector<T> edge = flat;
+                edge.front() = big;
+                edge.back() = -big;
+                EXPECT_NO_THROW(rtl::simplifyCompatibleIndices(edge.data(), n, dim, T(0.5), hq)) << n << " " << dim;
+                for (size_t j = 0; j < flat.size(); ++j)
+                    for (T bad : {inf, -inf, std::numeric_limits<T>::quiet_NaN()})
+                    {
+                        std::vector<T> input = flat;
+                        input[j] = bad;
+                        try
+                        {
+                            rtl::simplifyCompatibleIndices(input.data(), n, dim, T(0.5), hq);
+                            ADD_FAILURE() << "no exception: n " << n << " dim " << dim << " at " << j << " " << bad;
+                        }
+                        catch (const std::invalid_argument &e)
+                        {
+                            EXPECT_STREQ(e.what(), "simplifyCompatibleIndices: non-finite coordinate") << n << " " << j;
+                        }
+                    }
+            }
+        }
+    EXPECT_TRUE(rtl::simplifyCompatibleIndices(static_cast<const T *>(nullptr), 0, 2, T(1), false).empty());
+}
+
+TEST(SimplifyCompatible, NonFiniteCoordinateThrowsAtEveryLengthAndType)
+{
+    expectFiniteCheck<double>();
+    expectFiniteCheck<float>();
+}

@@ -47,6 +47,17 @@ export function toF64(v, fn, name) {
   throw new TypeError(`${fn}: ${name} must be a Float64Array, a Float32Array or an array of numbers, got ${describe(v)}`);
 }
 
+/**
+ * A file's bytes as a Uint8Array over the same memory: an ArrayBuffer, or any ArrayBuffer view (typed array,
+ * DataView, Buffer); else a TypeError `${fn}: ${expected}, got ...`.
+ * @returns {Uint8Array}
+ */
+export function bytesArgument(v, fn, expected) {
+  if (v instanceof ArrayBuffer) return new Uint8Array(v);
+  if (ArrayBuffer.isView(v)) return new Uint8Array(v.buffer, v.byteOffset, v.byteLength);
+  throw new TypeError(`${fn}: ${expected}, got ${describe(v)}`);
+}
+
 /** The options object of a call ({} when not given); an unknown key is a TypeError. */
 export function options(o, fn, known) {
   if (o === undefined || o === null) return {};

@@ -11,4 +11,6 @@ export const defaults = Object.freeze({
   /** vectorize(): sigma (TLS methods), delta (FTLS/AFTLS corners), epsilon (Douglas-Peucker, Reumann-Witkam). */
   vectorize: Object.freeze({ sigma: 0.03, delta: 0.3, epsilon: 0.09, maxSize: 0, simplexShift: 1, maxIterations: 10000,
     split: true }),
+  /** extractPolylines(): the vertex budget, the largest gap a polyline bridges, the cost of an unexplained beam. */
+  extractPolylines: Object.freeze({ maxVertices: 50, maxGap: 1, unexplainedCost: 0.5 }),
 });

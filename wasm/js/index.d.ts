@@ -44,6 +44,7 @@ export interface Defaults {
   readonly streamSegmenter: Readonly<Required<Pick<StreamSegmenterOptions, 'step' | 'lowerBound' | 'upperBound' | 'scaling'>>>;
   readonly vectorize: Readonly<Required<Pick<VectorizeOptions, 'sigma' | 'delta' | 'epsilon' | 'maxSize' | 'simplexShift' |
     'maxIterations' | 'split'>>>;
+  readonly extractPolylines: Readonly<Required<ExtractPolylinesOptions>>;
 }
 
 // ---------------------------------------------------------------------------------------------- line fit (TLS)

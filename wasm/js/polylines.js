@@ -1,6 +1,7 @@
 // extractPolylines(): whole-scan polyline extraction at a vertex budget (rtl::ScanPolylines2D, wasm/src/polylines.cpp);
 // argument checks and the result's typed arrays only.
 import { num, options, toF64 } from './checks.js';
+import { defaults } from './defaults.js';
 
 /** extractPolylines() of one module instance: ctx = {m, withInput, boundary, setComputeMs} (api.js). */
 export function polylinesApi({ m, withInput, boundary, setComputeMs }) {
@@ -16,10 +17,11 @@ export function polylinesApi({ m, withInput, boundary, setComputeMs }) {
     if (points === undefined) throw new TypeError(`${fn}: points (the scan's beams, interleaved x, y) are required`);
     const xy = toF64(points, fn, 'points');
     const o = options(opts, fn, ['maxVertices', 'maxGap', 'unexplainedCost']);
-    // The C++ defaults (ScanPolylines2D): 50 vertices, 1 m, 0.5 m. Above 2^32 vertices means no budget.
-    const maxVertices = num(o, 'maxVertices', fn, 50, { min: 2, integer: true, max: 2 ** 32 - 1 });
-    const maxGap = num(o, 'maxGap', fn, 1, { min: 0, exclusiveMin: true });
-    const unexplainedCost = num(o, 'unexplainedCost', fn, 0.5, { min: 0, exclusiveMin: true });
+    // The C++ defaults (ScanPolylines2D), from defaults.js. Above 2^32 vertices means no budget.
+    const d = defaults.extractPolylines;
+    const maxVertices = num(o, 'maxVertices', fn, d.maxVertices, { min: 2, integer: true, max: 2 ** 32 - 1 });
+    const maxGap = num(o, 'maxGap', fn, d.maxGap, { min: 0, exclusiveMin: true });
+    const unexplainedCost = num(o, 'unexplainedCost', fn, d.unexplainedCost, { min: 0, exclusiveMin: true });
     if (xy.length % 2 !== 0)
       throw new RangeError(`${fn}: points has ${xy.length} numbers, not a multiple of 2 (interleaved x, y expected)`);
     const r = withInput(fn, xy, (p, n) => m.extractPolylines(p, n,

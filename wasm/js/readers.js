@@ -1,22 +1,21 @@
 // readCarmenLog and readOrganizedLidar: the C++ core's readers (wasm/src/readers.cpp) over a file's text or bytes;
 // argument checks and the scans as typed arrays only.
-import { describe, num, options } from './checks.js';
+import { bytesArgument, describe, num, options } from './checks.js';
 
-/** The readers of one module instance: ctx = {m, withHeap} (api.js). */
-export function readersApi({ m, withHeap }) {
+/** The readers of one module instance: ctx = {m, withHeap, boundary} (api.js). */
+export function readersApi({ m, withHeap, boundary }) {
+  // The options of m.readCarmenLog and m.readOrganizedLidar by name, as wasm/src/readers.cpp declares them (schema.js).
+  const carmenCall = boundary.call('readCarmenLog'), lidarCall = boundary.call('readOrganizedLidar');
   // CARMEN logs: every FLASER line is a scan; beams without a return (range <= 0, non-finite or >= maxRange) are NaN
   // points; maxRange is the log's own no-return value unless given. Text as a string (UTF-8 encoded here) or bytes.
   function readCarmenLog(text, opts) {
     const fn = 'readCarmenLog';
-    let u8;
-    if (typeof text === 'string') u8 = new TextEncoder().encode(text);
-    else if (text instanceof ArrayBuffer) u8 = new Uint8Array(text);
-    else if (ArrayBuffer.isView(text)) u8 = new Uint8Array(text.buffer, text.byteOffset, text.byteLength);
-    else throw new TypeError(`${fn}: text must be a string, an ArrayBuffer or a typed array of the file, got ${describe(text)}`);
+    const u8 = typeof text === 'string' ? new TextEncoder().encode(text)
+      : bytesArgument(text, fn, 'text must be a string, an ArrayBuffer or a typed array of the file');
     const o = options(opts, fn, ['maxRange']);
     // Default: detected from the log (NaN to the C++ reader); Infinity keeps every finite positive range.
     const maxRange = o.maxRange === Infinity ? Infinity : num(o, 'maxRange', fn, NaN, { min: 0, exclusiveMin: true });
-    const r = withHeap(fn, [u8], (p, n) => m.readCarmenLog(p, n, maxRange));
+    const r = withHeap(fn, [u8], (p, n) => m.readCarmenLog(p, n, carmenCall.writeOptions({ maxRange })));
     const scans = [];
     for (let k = 0; k + 1 < r.offsets.length; k++) {
       const b = r.offsets[k], e = r.offsets[k + 1];
@@ -33,10 +32,7 @@ export function readersApi({ m, withHeap }) {
   // The cloud is stored column-major whatever the file layout: beam b of column c is point c * beams + b.
   function readOrganizedLidar(data, opts) {
     const fn = 'readOrganizedLidar';
-    let u8;
-    if (data instanceof ArrayBuffer) u8 = new Uint8Array(data);
-    else if (ArrayBuffer.isView(data)) u8 = new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
-    else throw new TypeError(`${fn}: data must be an ArrayBuffer or a typed array / DataView / Buffer, got ${describe(data)}`);
+    const u8 = bytesArgument(data, fn, 'data must be an ArrayBuffer or a typed array / DataView / Buffer');
     if (opts === undefined) throw new TypeError(`${fn}: options {beams} are required`);
     const o = options(opts, fn, ['beams', 'layout']);
     if (o.beams === undefined) throw new TypeError(`${fn}: option beams is required`);
@@ -45,7 +41,7 @@ export function readersApi({ m, withHeap }) {
     if (typeof layout !== 'string') throw new TypeError(`${fn}: option layout must be a string, got ${describe(layout)}`);
     if (layout !== 'column-major' && layout !== 'row-major')
       throw new RangeError(`${fn}: option layout must be 'column-major' or 'row-major', got '${layout}'`);
-    const r = withHeap(fn, [u8], (p, n) => m.readOrganizedLidar(p, n, beams, layout === 'row-major' ? 1 : 0));
+    const r = withHeap(fn, [u8], (p, n) => m.readOrganizedLidar(p, n, lidarCall.writeOptions({ beams, layout })));
     return organized(beams, r.columns, r.points, r.intensity);
   }
 

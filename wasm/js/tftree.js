@@ -9,15 +9,16 @@ function frameName(v, fn, what) {
   return v;
 }
 
-// A transformation {angle, translation} (2D) or {quaternion | angle + axis, translation} (3D) -> [q0..q3, t0..t2]
-// with a unit quaternion [w, x, y, z] in 3D.
+// A transformation {angle, translation} (2D) or {quaternion | angle + axis, translation} (3D) -> the options of
+// m.tfInsert: {rotation: [angle, 0, 0, 0] (2D) or a unit quaternion [w, x, y, z] (3D), translation: [x, y, z]}
+// (z 0 in 2D).
 function rigid(tf, fn, dim) {
   if (tf === null || typeof tf !== 'object' || Array.isArray(tf) || ArrayBuffer.isView(tf))
     throw new TypeError(`${fn}: the transformation must be an object, got ${describe(tf)}`);
   const known = dim === 2 ? ['angle', 'translation'] : ['quaternion', 'angle', 'axis', 'translation'];
   const o = options(tf, fn, known);
   const t = o.translation === undefined ? new Float64Array(dim) : vector(o.translation, fn, 'translation', dim);
-  if (dim === 2) return [num(o, 'angle', fn, 0), 0, 0, 0, t[0], t[1], 0];
+  if (dim === 2) return { rotation: [num(o, 'angle', fn, 0), 0, 0, 0], translation: [t[0], t[1], 0] };
   let q;
   if (o.quaternion !== undefined) {
     if (o.angle !== undefined || o.axis !== undefined) throw new TypeError(`${fn}: give either quaternion or angle + axis, not both`);
@@ -35,11 +36,13 @@ function rigid(tf, fn, dim) {
   }
   const qn = Math.hypot(...q);
   if (!(qn > 0)) throw new RangeError(`${fn}: quaternion must not be zero`);
-  return [q[0] / qn, q[1] / qn, q[2] / qn, q[3] / qn, t[0], t[1], t[2]];
+  return { rotation: [q[0] / qn, q[1] / qn, q[2] / qn, q[3] / qn], translation: [t[0], t[1], t[2]] };
 }
 
-/** The TfTree class of one module instance: ctx = {m, withHeap, registry} (api.js; see owned.js). */
-export function tfTreeApi({ m, withHeap, registry }) {
+/** The TfTree class of one module instance: ctx = {m, withHeap, boundary, registry} (api.js; see owned.js). */
+export function tfTreeApi({ m, withHeap, boundary, registry }) {
+  // The options of m.tfCreate and m.tfInsert by name, as wasm/src/tftree.cpp declares them (schema.js).
+  const createCall = boundary.call('tfCreate'), insertCall = boundary.call('tfInsert');
   class TfTree extends CppObject {
     #dim;
     constructor(root, opts) {
@@ -47,7 +50,7 @@ export function tfTreeApi({ m, withHeap, registry }) {
       frameName(root, fn, 'root');
       const o = options(opts, fn, ['dim']);
       const dim = dimOption(o, fn);
-      super(check(m.tfCreate(dim, root), fn), (h) => m.tfDestroy(h), registry, fn, 'tree');
+      super(check(m.tfCreate(root, createCall.writeOptions({ dim })), fn), (h) => m.tfDestroy(h), registry, fn, 'tree');
       this.#dim = dim;
     }
     get dim() { return this.#dim; }
@@ -57,7 +60,7 @@ export function tfTreeApi({ m, withHeap, registry }) {
       const h = this[HANDLE]('insert');
       frameName(name, fn, 'name');
       frameName(parent, fn, 'parent');
-      return check(m.tfInsert(h, name, parent, ...rigid(tf, fn, this.#dim)), fn);
+      return check(m.tfInsert(h, name, parent, insertCall.writeOptions(rigid(tf, fn, this.#dim))), fn);
     }
     erase(name) { return m.tfErase(this[HANDLE]('erase'), frameName(name, 'TfTree.erase', 'name')); }
     contains(name) { return m.tfContains(this[HANDLE]('contains'), frameName(name, 'TfTree.contains', 'name')); }
@@ -72,7 +75,7 @@ export function tfTreeApi({ m, withHeap, registry }) {
       frameName(from, fn, 'from');
       frameName(to, fn, 'to');
       const xyz = toF64(points, fn, 'points');
-      return withHeap(fn, [xyz], (p, n) => m.tfApply(h, from, to, p, n, this.#dim));
+      return withHeap(fn, [xyz], (p, n) => m.tfApply(h, from, to, p, n));
     }
   }
   return { TfTree };

@@ -2,6 +2,7 @@
 // The sums are taken about the centroid (two passes), so that points far from the origin keep full precision;
 // the line is then shifted back.
 #include "adapter.h"
+#include "schema.h"
 
 #include <rtl/vect/ApproximationTlsLine2D.h>
 #include <rtl/vect/ApproximationTlsLine3D.h>
@@ -83,8 +84,19 @@ val fitLineImpl(const double* xy, std::size_t n) {
   return r;
 }
 
-val fitLine(std::uintptr_t ptr, std::size_t len, int dim) {
+// fitLine()'s options (wasm/js/fitline.js writes them by these names after checking them; schema.h). The result is
+// a small object built here (NamedObjectResult).
+struct FitLineOptions {
+  int dim = 0;
+  template <class F>
+  void fields(F& f) {
+    f("dim", dim);
+  }
+};
+
+val fitLine(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
   return guarded([&] {
+    const int dim = readOptions<FitLineOptions>(options).dim;
     if (dim != 2 && dim != 3) throw std::invalid_argument("fitLine: dim must be 2 or 3, got " + std::to_string(dim));
     const double* xy = doubles(ptr);
     checkPoints("fitLine", xy, len, static_cast<std::size_t>(dim), 2, false, kMaxCoordinate);
@@ -95,4 +107,7 @@ val fitLine(std::uintptr_t ptr, std::size_t len, int dim) {
 }  // namespace
 }  // namespace rtl_wasm
 
-EMSCRIPTEN_BINDINGS(rtl_fit) { emscripten::function("fitLine", &rtl_wasm::fitLine); }
+EMSCRIPTEN_BINDINGS(rtl_fit) {
+  emscripten::function("fitLine", &rtl_wasm::fitLine);
+  rtl_wasm::registerCall<rtl_wasm::FitLineOptions, rtl_wasm::NamedObjectResult>("fitLine");
+}

@@ -2,6 +2,7 @@
 // in the wasm heap, through the readers' in-memory entry points: no std::istream (the stream and locale machinery
 // would be ~20 KB gzipped of the package).
 #include "adapter.h"
+#include "schema.h"
 
 #include <string_view>
 
@@ -11,10 +12,30 @@
 namespace rtl_wasm {
 namespace {
 
-val readOrganizedLidar(std::uintptr_t ptr, std::size_t len, std::size_t beams, int layout) {
+// The readers' options (wasm/js/readers.js writes them by these names after checking them; schema.h). Their results
+// are objects built here (NamedObjectResult).
+struct OrganizedLidarOptions {
+  std::size_t beams = 0;
+  int layout = 0;  // the index of its name in the choices below
+  template <class F>
+  void fields(F& f) {
+    f("beams", beams);
+    f("layout", layout, {"column-major", "row-major"});
+  }
+};
+struct CarmenLogOptions {
+  double maxRange = 0;  // NaN: the reader detects the log's no-return value
+  template <class F>
+  void fields(F& f) {
+    f("maxRange", maxRange);
+  }
+};
+
+val readOrganizedLidar(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
   return guarded([&] {
-    const auto cloud = rtl::readOrganizedLidarBytes<double>(
-        reinterpret_cast<const unsigned char*>(bytes(ptr)), len, beams, layout == 1 ? rtl::OrganizedLayout::RowMajor : rtl::OrganizedLayout::ColumnMajor);
+    const auto o = readOptions<OrganizedLidarOptions>(options);
+    const auto cloud = rtl::readOrganizedLidarBytes<double>(reinterpret_cast<const unsigned char*>(bytes(ptr)), len,
+        o.beams, o.layout == 1 ? rtl::OrganizedLayout::RowMajor : rtl::OrganizedLayout::ColumnMajor);
     std::vector<double> xyz(3 * cloud.points.size());
     for (std::size_t i = 0; i < cloud.points.size(); ++i)
       for (int k = 0; k < 3; ++k) xyz[3 * i + static_cast<std::size_t>(k)] = cloud.points[i][k];
@@ -38,12 +59,11 @@ const char* sourceName(rtl::CarmenMaxRangeSource s) {
 }
 
 // All scans flat: points/ranges concatenated, scan k = beams offsets[k]..offsets[k+1]; per-scan pose and line.
-// maxRange NaN: the reader detects the log's no-return value.
-val readCarmenLog(std::uintptr_t ptr, std::size_t len, double maxRange) {
+val readCarmenLog(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
   return guarded([&] {
-    rtl::CarmenOptions options;
-    options.max_range = maxRange;
-    const auto log = rtl::readCarmenLogTextDetailed<double>(std::string_view(bytes(ptr), len), options);
+    rtl::CarmenOptions reader;
+    reader.max_range = readOptions<CarmenLogOptions>(options).maxRange;
+    const auto log = rtl::readCarmenLogTextDetailed<double>(std::string_view(bytes(ptr), len), reader);
     const auto& scans = log.scans;
     std::vector<double> pts, ranges, x, y, theta, stamp, line;
     std::vector<std::uint32_t> offsets{0};
@@ -76,6 +96,9 @@ val readCarmenLog(std::uintptr_t ptr, std::size_t len, double maxRange) {
 }  // namespace rtl_wasm
 
 EMSCRIPTEN_BINDINGS(rtl_readers) {
-  emscripten::function("readOrganizedLidar", &rtl_wasm::readOrganizedLidar);
-  emscripten::function("readCarmenLog", &rtl_wasm::readCarmenLog);
+  using namespace rtl_wasm;
+  emscripten::function("readOrganizedLidar", &readOrganizedLidar);
+  registerCall<OrganizedLidarOptions, NamedObjectResult>("readOrganizedLidar");
+  emscripten::function("readCarmenLog", &readCarmenLog);
+  registerCall<CarmenLogOptions, NamedObjectResult>("readCarmenLog");
 }

@@ -71,42 +71,59 @@ struct OptionReader {
   }
 };
 
-// Lists the options as [name, count] pairs.
+// An array [items...] (one copy of the val code for every lister below, not one per option or result type).
+[[gnu::noinline]] inline emscripten::val listOf(emscripten::val a, emscripten::val b) {
+  emscripten::val e = emscripten::val::array();
+  e.call<void>("push", a);
+  e.call<void>("push", b);
+  return e;
+}
+
+// Lists the options as [name, count] pairs ([name, 1, [choice names]] for an enumeration). The templates only
+// name the member's count; the lists are built by the non-template functions.
 struct OptionLister {
   emscripten::val list = emscripten::val::array();
-  std::size_t count = 0;
-  template <class T>
-  void operator()(const char* name, T&) {
-    const std::size_t n = std::is_array_v<T> ? std::extent_v<T> : 1;
-    count += n;
-    emscripten::val e = emscripten::val::array();
-    e.call<void>("push", emscripten::val(name));
-    e.call<void>("push", emscripten::val(static_cast<double>(n)));
+  [[gnu::noinline]] void add(const char* name, std::size_t n) {
+    list.call<void>("push", listOf(emscripten::val(name), emscripten::val(static_cast<double>(n))));
+  }
+  [[gnu::noinline]] void addChoices(const char* name, const char* const* choices, std::size_t n) {
+    emscripten::val names = emscripten::val::array();
+    for (std::size_t i = 0; i < n; ++i) names.call<void>("push", emscripten::val(choices[i]));
+    emscripten::val e = listOf(emscripten::val(name), emscripten::val(1.0));
+    e.call<void>("push", names);
     list.call<void>("push", e);
   }
+  template <class T>
+  void operator()(const char* name, T&) {
+    add(name, std::is_array_v<T> ? std::extent_v<T> : 1);
+  }
   template <class T, std::size_t N>
-  void operator()(const char* name, T& v, const char* const (&choices)[N]) {
-    (*this)(name, v);
-    emscripten::val names = emscripten::val::array();
-    for (const char* c : choices) names.call<void>("push", emscripten::val(c));
-    list[list["length"].as<unsigned>() - 1].call<void>("push", names);
+  void operator()(const char* name, T&, const char* const (&choices)[N]) {
+    addChoices(name, choices, N);
   }
 };
 
 // Lists the results as scalar names and [name, constructor] pairs.
 struct ResultLister {
   emscripten::val scalars = emscripten::val::array(), arrays = emscripten::val::array();
-  void scalar(const char* name, double) { scalars.call<void>("push", emscripten::val(name)); }
-  template <class T>
-  void array(const char* name, const std::vector<T>&) {
-    emscripten::val e = emscripten::val::array();
-    e.call<void>("push", emscripten::val(name));
-    e.call<void>("push", emscripten::val(typedArrayName<T>()));
-    arrays.call<void>("push", e);
+  [[gnu::noinline]] void scalar(const char* name, double) { scalars.call<void>("push", emscripten::val(name)); }
+  [[gnu::noinline]] void addArray(const char* name, const char* ctor) {
+    arrays.call<void>("push", listOf(emscripten::val(name), emscripten::val(ctor)));
   }
   template <class T>
-  void take(const char* name, std::vector<T>& v) { array(name, v); }
+  void array(const char* name, const std::vector<T>&) { addArray(name, typedArrayName<T>()); }
+  template <class T>
+  void take(const char* name, std::vector<T>&) { addArray(name, typedArrayName<T>()); }
 };
+
+// {options, scalars, arrays} of the listers' results.
+[[gnu::noinline]] inline emscripten::val describeLists(const OptionLister& ol, const ResultLister& rl) {
+  emscripten::val d = emscripten::val::object();
+  d.set("options", ol.list);
+  d.set("scalars", rl.scalars);
+  d.set("arrays", rl.arrays);
+  return d;
+}
 
 // Writes the results into a ResultBlock (adapter.h), in declaration order.
 template <class Block>
@@ -163,11 +180,7 @@ emscripten::val describeCall() {
   Results r{};
   schema_detail::ResultLister rl;
   r.fields(rl);
-  emscripten::val d = emscripten::val::object();
-  d.set("options", ol.list);
-  d.set("scalars", rl.scalars);
-  d.set("arrays", rl.arrays);
-  return d;
+  return schema_detail::describeLists(ol, rl);
 }
 
 // Registers a call's schema under its JS name (inside the call's EMSCRIPTEN_BINDINGS block).

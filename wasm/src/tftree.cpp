@@ -1,5 +1,6 @@
 // TfTree: rtl::TfTree<std::string, RigidTfND<D, double>> behind an integer handle (the JS class owns it).
 #include "adapter.h"
+#include "schema.h"
 
 #include <Eigen/Core>
 
@@ -12,6 +13,7 @@ namespace {
 
 struct TreeBase {
   virtual ~TreeBase() = default;
+  virtual int dim() const = 0;
   virtual bool insert(const std::string& name, const std::string& parent, const double* q, const double* t) = 0;
   virtual bool erase(const std::string& name) = 0;
   virtual bool contains(const std::string& name) const = 0;
@@ -26,6 +28,7 @@ struct Tree final : TreeBase {
   using V = rtl::VectorND<D, double>;
   rtl::TfTree<std::string, Tf> tree;
   explicit Tree(const std::string& root) : tree(root) {}
+  int dim() const override { return D; }
 
   // q: 2D {angle}; 3D unit quaternion {w, x, y, z} (normalised by the JS layer).
   static Tf make(const double* q, const double* t) {
@@ -73,17 +76,36 @@ struct Tree final : TreeBase {
 
 TreeBase* handle(std::uintptr_t h) { return reinterpret_cast<TreeBase*>(h); }
 
-val tfCreate(int dim, const std::string& root) {
+// new TfTree()'s options and TfTree.insert()'s transformation (wasm/js/tftree.js writes them by these names after
+// checking them; schema.h). The results are a handle, a flag or objects built here (NamedObjectResult).
+struct TreeOptions {
+  int dim = 0;
+  template <class F>
+  void fields(F& f) {
+    f("dim", dim);
+  }
+};
+struct RigidOptions {
+  double rotation[4] = {};     // 2D: {angle, 0, 0, 0}; 3D: a unit quaternion {w, x, y, z}
+  double translation[3] = {};  // 2D: {x, y, 0}
+  template <class F>
+  void fields(F& f) {
+    f("rotation", rotation);
+    f("translation", translation);
+  }
+};
+
+val tfCreate(const std::string& root, std::uintptr_t options) {
   return guarded([&] {
+    const int dim = readOptions<TreeOptions>(options).dim;
     TreeBase* t = dim == 3 ? static_cast<TreeBase*>(new Tree<3>(root)) : static_cast<TreeBase*>(new Tree<2>(root));
     return val(static_cast<double>(reinterpret_cast<std::uintptr_t>(t)));
   });
 }
-val tfInsert(std::uintptr_t h, const std::string& name, const std::string& parent, double q0, double q1, double q2,
-             double q3, double tx, double ty, double tz) {
+val tfInsert(std::uintptr_t h, const std::string& name, const std::string& parent, std::uintptr_t options) {
   return guarded([&] {
-    const double q[4] = {q0, q1, q2, q3}, t[3] = {tx, ty, tz};
-    return val(handle(h)->insert(name, parent, q, t));
+    const auto tf = readOptions<RigidOptions>(options);
+    return val(handle(h)->insert(name, parent, tf.rotation, tf.translation));
   });
 }
 bool tfErase(std::uintptr_t h, const std::string& name) { return handle(h)->erase(name); }
@@ -92,11 +114,10 @@ double tfSize(std::uintptr_t h) { return static_cast<double>(handle(h)->size());
 val tfGet(std::uintptr_t h, const std::string& from, const std::string& to) {
   return guarded([&] { return handle(h)->tf(from, to); });
 }
-val tfApply(std::uintptr_t h, const std::string& from, const std::string& to, std::uintptr_t ptr, std::size_t len,
-            int dim) {
+val tfApply(std::uintptr_t h, const std::string& from, const std::string& to, std::uintptr_t ptr, std::size_t len) {
   return guarded([&] {
     const double* xyz = doubles(ptr);
-    checkPoints("TfTree.transformPoints", xyz, len, static_cast<std::size_t>(dim), 0, true);
+    checkPoints("TfTree.transformPoints", xyz, len, static_cast<std::size_t>(handle(h)->dim()), 0, true);
     return handle(h)->apply(from, to, xyz, len);
   });
 }
@@ -108,7 +129,9 @@ void tfDestroy(std::uintptr_t h) { delete handle(h); }
 EMSCRIPTEN_BINDINGS(rtl_tftree) {
   using namespace rtl_wasm;
   emscripten::function("tfCreate", &tfCreate);
+  registerCall<TreeOptions, NamedObjectResult>("tfCreate");
   emscripten::function("tfInsert", &tfInsert);
+  registerCall<RigidOptions, NamedObjectResult>("tfInsert");
   emscripten::function("tfErase", &tfErase);
   emscripten::function("tfContains", &tfContains);
   emscripten::function("tfSize", &tfSize);

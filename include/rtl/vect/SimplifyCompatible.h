@@ -25,6 +25,8 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/core/CoordinateCheck.h"
+
 #if defined(__GNUC__) && defined(__SSE2__)
 #include <emmintrin.h>
 #elif defined(__GNUC__) && defined(__wasm_simd128__)
@@ -751,10 +753,10 @@ namespace rtl
                 prev[1] = last[1];
                 // The sum of the distances is finite if every coordinate is: a point with an infinite or NaN
                 // coordinate has an infinite or NaN distance. Finite coordinates can overflow it too: then the
-                // coordinates are checked one by one (cheaper than v - v of every coordinate on the way).
-                if (!(sum[0] + sum[1] <= std::numeric_limits<double>::max()))
-                    for (std::size_t j = 0; j < 2 * i; ++j)
-                        nan = nan + (xyz[j] - xyz[j]);
+                // coordinates are checked by the library's finite check (rtl/core/CoordinateCheck.h).
+                if (!(sum[0] + sum[1] <= std::numeric_limits<double>::max()) &&
+                    firstBeyond(xyz, 2 * i, std::numeric_limits<double>::infinity(), false) < 2 * i)
+                    nan = std::numeric_limits<double>::quiet_NaN();
             }
 #endif
             for (; i < n; ++i)
@@ -878,9 +880,8 @@ namespace rtl
         std::vector<std::size_t> kept;
         if (n <= 2)
         {
-            for (std::size_t i = 0; i < n * dim; ++i)
-                if (!std::isfinite(xyz[i]))
-                    throw std::invalid_argument("simplifyCompatibleIndices: non-finite coordinate");
+            if (detail::firstBeyond(xyz, n * dim, std::numeric_limits<double>::infinity(), false) < n * dim)
+                throw std::invalid_argument("simplifyCompatibleIndices: non-finite coordinate");
             for (std::size_t i = 0; i < n; ++i)
                 kept.push_back(i);
             return kept;
