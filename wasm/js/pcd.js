@@ -1,6 +1,6 @@
 // readPcd: the C++ core's PCD reader (wasm/src/pcd.cpp, in the extras module) over a file's bytes; argument checks
 // and the cloud as typed arrays only.
-import { describe, options } from './checks.js';
+import { bytesArgument, describe, options } from './checks.js';
 import { organized } from './readers.js';
 
 /** readPcd of one package instance: ctx.extras(fn) gives the extras module's {m, withHeap} (modules.js), or throws
@@ -18,10 +18,7 @@ export function pcdApi({ extras }) {
   function readPcd(data, opts) {
     const fn = 'readPcd';
     const { m, withHeap } = extras(fn);
-    let u8;
-    if (data instanceof ArrayBuffer) u8 = new Uint8Array(data);
-    else if (ArrayBuffer.isView(data)) u8 = new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
-    else throw new TypeError(`${fn}: data must be an ArrayBuffer or a typed array / DataView / Buffer, got ${describe(data)}`);
+    const u8 = bytesArgument(data, fn, 'data must be an ArrayBuffer or a typed array / DataView / Buffer');
     const o = options(opts, fn, ['fields']);
     const names = o.fields ?? ['intensity', 'ring'];
     if (!Array.isArray(names)) throw new TypeError(`${fn}: option fields must be an array of field names, got ${describe(names)}`);
