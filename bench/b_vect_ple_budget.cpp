@@ -46,7 +46,7 @@ namespace
     struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
-    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
+    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2, g_point_chord = 0;
     int g_radial = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
@@ -60,7 +60,7 @@ namespace
         if (g_exact_breaks >= 0) ex.setExactBreakCosts(g_exact_breaks > 0);
         if (g_window >= 0) ex.setNeighbourRefinement(static_cast<std::size_t>(g_window));
         if (g_trim >= 0) ex.setEndTrimming(g_trim > 0);
-        if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window);
+        if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window, static_cast<std::size_t>(g_point_chord));
         if (g_cost > 0) ex.setUnexplainedCost(g_cost);
         if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
         Row row;
@@ -164,7 +164,8 @@ int main(int argc, char **argv)
 {
     bool smoke = false, frontier = false;
     int reps = 5;
-    std::string dir;
+    std::string dir, only_log, methods = "0123";   // --log=NAME and --J=N restrict the run; --methods= the rows (0 baseline, 1 DP, 2 DP+LM, 3 DP+LM all)
+    std::size_t only_j = 0;
     if (const char *e = std::getenv("RTL_FULL_DATA_DIR")) dir = e;
     for (int i = 1; i < argc; ++i)
     {
@@ -180,6 +181,10 @@ int main(int argc, char **argv)
         else if (std::strcmp(argv[i], "--frontier") == 0) frontier = true;
         else if (std::strncmp(argv[i], "--radial=", 9) == 0) g_radial = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
+        else if (std::strncmp(argv[i], "--log=", 6) == 0) only_log = argv[i] + 6;
+        else if (std::strncmp(argv[i], "--point-chord=", 14) == 0) g_point_chord = std::atoi(argv[i] + 14);
+        else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
+        else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;
     }
     if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";
 
@@ -196,6 +201,7 @@ int main(int argc, char **argv)
                 "med us", "max us", "maxV", "PLE", "PLE+", "PLE+score");
     for (const auto &c : cases)
     {
+        if (!only_log.empty() && only_log != c.name) continue;
         std::vector<rtl::ple::Scan> scans;
         try
         {
@@ -256,6 +262,7 @@ int main(int argc, char **argv)
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
             for (int method = 0; method < 4; ++method)
             {
+                if ((only_j && J != only_j) || methods.find(static_cast<char>('0' + method)) == std::string::npos) continue;
                 const Row r = method == 0 ? evaluateBaseline(scans, J) : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
                 std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,

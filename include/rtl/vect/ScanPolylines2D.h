@@ -118,10 +118,12 @@ namespace rtl
         //! candidates, for each chain only up to `window` vertices beyond its choice there, and the budget allocated
         //! again; with `window` < 0, in full before the only allocation. With refinement on, the polylines within
         //! `window` vertices of the first choice (all, when `window` < 0) are refined radially (at most `iterations`
-        //! LM iterations; 0: none) before they are offered.
-        void setPointCandidates(bool on, int iterations = 20, int window = 2)
+        //! LM iterations; 0: none) before they are offered. `maxChord` > 0 limits a segment of the family to that many
+        //! beams (PointPolylines::setMaxChord: O(K n maxChord) instead of O(K n^2) per chain, the optimum among such
+        //! polylines only; 0: no limit).
+        void setPointCandidates(bool on, int iterations = 20, int window = 2, std::size_t maxChord = 0)
         {
-            point_candidates_ = on; point_iterations_ = iterations; point_window_ = window;
+            point_candidates_ = on; point_iterations_ = iterations; point_window_ = window; point_chord_ = maxChord;
         }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
@@ -315,6 +317,16 @@ namespace rtl
             x = r * ux_[i]; y = r * uy_[i];
         }
 
+        //! The angular span from beam a's direction to beam b's (both returned): AngularSpan::of their points, from
+        //! the directions computed once per scan (the same atan2 of the same coordinates, so the same numbers).
+        scan_polylines::AngularSpan wedge(std::size_t a, std::size_t b) const
+        {
+            scan_polylines::AngularSpan s;
+            s.start = angle_[a];
+            s.width = scan_polylines::wrapAngle(angle_[b] - angle_[a]);
+            return s;
+        }
+
         //! Crossing of lines f and g when it is well defined and within `reach` of both boundary points a and b.
         static bool corner(const scan_polylines::TlsFit &f, const scan_polylines::TlsFit &g, double ax, double ay, double bx, double by,
                            double reach, double &x, double &y)
@@ -462,9 +474,11 @@ namespace rtl
             if (n < 2 || maxSegments == 0) return;
             points_.load(&px_[cf], &py_[cf], n);
             points_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
+            points_.setMaxChord(point_chord_);
             points_.solve(std::min(maxSegments, max_vertices_ - 1));
             for (std::size_t k = 1; k <= points_.maxSegments(); ++k)
             {
+                if (!(points_.cost(k) < std::numeric_limits<double>::infinity())) continue;   // no k chords short enough
                 points_.vertices(k, vertex_index_);
                 Candidate &cand = newCandidate(c);
                 Polyline &p = cand.next();
@@ -653,7 +667,7 @@ namespace rtl
                 // farther round, it would fold its segments over other beams, or hide beams of other chains.
                 const std::size_t wa = a > cf ? a - 1 : a, wb = b < cl ? b + 1 : b;
                 if (!forced_[s] && corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y)
-                    && scan_polylines::AngularSpan::of(px_[wa], py_[wa], px_[wb], py_[wb]).contains(std::atan2(y, x), 0))
+                    && wedge(wa, wb).contains(std::atan2(y, x), 0))
                 {
                     if (corners) corners->push_back({s, breakGain(fits[s], fits[s + 1], a, b, cf, cl, x, y)});
                     cur->x.push_back(x); cur->y.push_back(y); ++vertices;
@@ -789,6 +803,7 @@ namespace rtl
         Candidate repart_;
         bool point_candidates_ = false;
         int point_iterations_ = 20, point_window_ = 2;
+        std::size_t point_chord_ = 0;
         scan_polylines::PointPolylines points_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
