@@ -1,7 +1,8 @@
 // Where the squared radial error of rtl::ScanPolylines2D lives on PLE's protocol (see bench/ple/README.md): every hit
 // beam of every scan is put in one class, the first that applies, and the classes' shares of the summed squared
 // error are printed per log and J, for the defaults and (--points=1) with point candidates:
-//   chain end     within one beam of its chain's first or last beam (a beam without a return or a > 1 m step beside it)
+//   chain end beam  its chain's first or last beam (a beam without a return or a > 1 m step beside it)
+//   beside it     the beam next to it inside the chain
 //   polyline end  within one beam of its polyline's first or last beam (inside a chain: the polyline breaks there)
 //   corner        within one beam of a boundary between two segments of one polyline
 //   grazing       the beam meets its segment's line at more than 70 degrees from the normal
@@ -25,18 +26,21 @@
 
 namespace
 {
-    enum Class { kChainEnd, kPolylineEnd, kCorner, kGrazing, kSpill, kInterior, kClasses };
-    const char *const kNames[kClasses] = {"chain end", "polyline end", "corner", "grazing", "spill", "interior"};
+    std::size_t g_top = 0;   // --top=N: list the N beams of largest error per row
+    enum Class { kChainEndBeam, kChainEnd, kPolylineEnd, kCorner, kGrazing, kSpill, kInterior, kClasses };
+    const char *const kNames[kClasses] = {"chain end beam", "beside it", "polyline end", "corner", "grazing", "spill", "interior"};
 
     struct Tally
     {
         std::array<double, kClasses> sum{};
         std::array<std::size_t, kClasses> beams{}, large{};
         std::vector<double> errors;              // every hit beam's squared error
+        struct Beam { double e; std::size_t scan, beam, chain_first, chain_last; int cls; long seg_first, seg_last; };
+        std::vector<Beam> worst;                 // the beams with |e| > 0.1
         std::size_t unexplained_left_out = 0, unexplained_inside = 0, returned = 0;
     };
 
-    void classify(const rtl::ple::Scan &scan, const rtl::ScanPolylines2D<double> &ex, double max_gap, Tally &t)
+    void classify(const rtl::ple::Scan &scan, std::size_t scan_index, const rtl::ScanPolylines2D<double> &ex, double max_gap, Tally &t)
     {
         const std::size_t n = scan.points.size();
         // chain of every returned beam, as in the extractor
@@ -86,7 +90,8 @@ namespace
             const double e = scan.ranges[i] - rhat[i], e2 = e * e;
             Class c = kInterior;
             const long ii = static_cast<long>(i);
-            if (ii - chain_first[i] <= 1 || chain_last[i] - ii <= 1) c = kChainEnd;
+            if (ii == chain_first[i] || ii == chain_last[i]) c = kChainEndBeam;
+            else if (ii - chain_first[i] <= 1 || chain_last[i] - ii <= 1) c = kChainEnd;
             else if (polyline_end[i]) c = kPolylineEnd;
             else if (corner[i]) c = kCorner;
             else if (seg_of[i] < 0) c = kSpill;
@@ -98,7 +103,13 @@ namespace
             }
             t.sum[c] += e2;
             ++t.beams[c];
-            if (std::abs(e) > 0.1) ++t.large[c];
+            if (std::abs(e) > 0.1)
+            {
+                ++t.large[c];
+                const long sf = seg_of[i] >= 0 ? static_cast<long>(segs[static_cast<std::size_t>(seg_of[i])].beams.first) : -1;
+                const long sl = seg_of[i] >= 0 ? static_cast<long>(segs[static_cast<std::size_t>(seg_of[i])].beams.second) : -1;
+                t.worst.push_back({e, scan_index, i, static_cast<std::size_t>(chain_first[i]), static_cast<std::size_t>(chain_last[i]), c, sf, sl});
+            }
             t.errors.push_back(e2);
         }
     }
@@ -117,9 +128,19 @@ namespace
                     log, J, variant, t.errors.size(), total, half, large, total > 0 ? 100 * large_sum / total : 0.0,
                     t.unexplained_left_out, t.unexplained_inside);
         for (int c = 0; c < kClasses; ++c)
-            std::printf("      %-13s beams %5zu (%5.1f %%)  share of e^2 %5.1f %%  |e|>0.1 %4zu\n", kNames[c], t.beams[c],
+            std::printf("      %-14s beams %5zu (%5.1f %%)  share of e^2 %5.1f %%  |e|>0.1 %4zu\n", kNames[c], t.beams[c],
                         t.errors.empty() ? 0.0 : 100.0 * static_cast<double>(t.beams[c]) / static_cast<double>(t.errors.size()),
                         total > 0 ? 100 * t.sum[c] / total : 0.0, t.large[c]);
+        if (g_top)
+        {
+            std::sort(t.worst.begin(), t.worst.end(), [](const auto &a, const auto &b) { return std::abs(a.e) > std::abs(b.e); });
+            for (std::size_t q = 0; q < t.worst.size() && q < g_top; ++q)
+            {
+                const auto &w = t.worst[q];
+                std::printf("      e %+7.3f  scan %2zu beam %3zu  %-14s chain %zu..%zu  segment %ld..%ld\n", w.e, w.scan, w.beam, kNames[w.cls],
+                            w.chain_first, w.chain_last, w.seg_first, w.seg_last);
+            }
+        }
     }
 }
 
@@ -134,7 +155,8 @@ int main(int argc, char **argv)
         if (std::strcmp(argv[i], "--smoke") == 0) smoke = true;
         else if (std::strncmp(argv[i], "--data=", 7) == 0) dir = argv[i] + 7;
         else if (std::strncmp(argv[i], "--points=", 9) == 0) points = std::atoi(argv[i] + 9);
-        else { std::fprintf(stderr, "usage: %s [--data=DIR] [--points=0|1] [--smoke]\n", argv[0]); return 2; }
+        else if (std::strncmp(argv[i], "--top=", 6) == 0) g_top = static_cast<std::size_t>(std::atoi(argv[i] + 6));
+        else { std::fprintf(stderr, "usage: %s [--data=DIR] [--points=0|1] [--top=N] [--smoke]\n", argv[0]); return 2; }
     }
     if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";
     struct LogCase { const char *name, *full, *excerpt; std::vector<std::size_t> lines; };
@@ -167,10 +189,11 @@ int main(int argc, char **argv)
                 ex.setMaxVertices(J);
                 if (v == 1) ex.setPointCandidates(true, 5);
                 Tally t;
-                for (const auto &scan : scans)
+                for (std::size_t q = 0; q < scans.size(); ++q)
                 {
+                    const auto &scan = scans[q];
                     ex(scan.points);
-                    classify(scan, ex, static_cast<double>(ex.maxGap()), t);
+                    classify(scan, q, ex, static_cast<double>(ex.maxGap()), t);
                 }
                 report(c.name, J, v == 1 ? "points" : "default", t);
             }

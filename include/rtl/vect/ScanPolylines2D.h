@@ -125,6 +125,12 @@ namespace rtl
         {
             point_candidates_ = on; point_iterations_ = iterations; point_window_ = window; point_chord_ = maxChord;
         }
+        //! Chains of at most this many beams also offer the point-vertex family (see setPointCandidates; built in full
+        //! before the allocation, not refined until a plan chooses them; O(n^3) per such chain at most). A TLS range
+        //! needs two beams, so a chain of n beams has at most n / 2 ranges: a 3-beam clutter cluster whose middle
+        //! point is off its line can only be one segment, while the polyline through its 3 points explains it exactly
+        //! (default 32; 0: off).
+        void setShortChainPoints(std::size_t maxBeams) { short_points_ = maxBeams; }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
         //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
@@ -379,6 +385,7 @@ namespace rtl
                 }
             }
             if (point_candidates_ && point_window_ < 0) buildPointCandidates(c, opts, max_vertices_ - 1, 0, max_vertices_);
+            else if (n <= short_points_) buildPointCandidates(c, opts, max_vertices_ - 1, 1, 0);   // unrefined here
         }
 
         //! Sum of squared radial errors of chain-local beams a..b predicted by their own TLS line (part_ loaded with the
@@ -553,7 +560,8 @@ namespace rtl
                 }
             // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
             const scan_polylines::BudgetTable table(options, max_vertices_);
-            std::vector<std::size_t> best_plan, prev;
+            std::vector<std::size_t> prev;
+            improving_.clear();   // the plans that lowered the best sum, in budget order
             double best = std::numeric_limits<double>::infinity();
             for (std::size_t b = 0; b <= max_vertices_; ++b)
             {
@@ -572,21 +580,39 @@ namespace rtl
                     }
                     sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
                 }
-                if (sum < best) { best = sum; best_plan = plan; }
+                if (sum < best) { best = sum; improving_.push_back({sum, plan}); }
                 prev.swap(plan);
             }
             std::vector<double> rhat = expected(fallback);
             scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
-            std::vector<Polyline> map;
-            for (std::size_t c = 0; c < C; ++c)
-                if (best_plan[c] > 0)
-                {
-                    const Candidate &cand = candidates_[c][best_plan[c] - 1];
-                    map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
-                }
-            std::vector<double> rhat2 = expected(map);
-            const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
-            if (score2.score(cost_) < score.score(cost_)) publish(map, rhat2, score2);
+            // The chain costs leave out where one chain's segments hit another chain's beams (a refined inner vertex
+            // may carry a segment's span over a neighbouring chain). The last improving plan is hit-tested as a whole
+            // map; where that scores clearly worse than its sum, the earlier improving plans are tried, latest first,
+            // until one scores as its sum says; the best hit-tested of those visited is kept. A larger budget's
+            // improving plans extend the smaller budget's (same table rows), and it visits the smaller budget's
+            // visited plans too unless it stops earlier at a plan that scores as its (lower) sum: monotone in J.
+            std::vector<Polyline> map, best_map;
+            std::vector<double> rhat2, best_rhat;
+            scan_polylines::RayScore best_score;
+            double best_value = std::numeric_limits<double>::infinity();
+            const double returned = static_cast<double>(std::max<std::size_t>(1, score.returned));
+            for (std::size_t q = improving_.size(); q-- > 0;)
+            {
+                const std::vector<std::size_t> &plan = improving_[q].second;
+                map.clear();
+                for (std::size_t c = 0; c < C; ++c)
+                    if (plan[c] > 0)
+                    {
+                        const Candidate &cand = candidates_[c][plan[c] - 1];
+                        map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                    }
+                rhat2 = expected(map);
+                const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
+                const double value = score2.score(cost_);
+                if (value < best_value) { best_value = value; best_map.swap(map); best_rhat.swap(rhat2); best_score = score2; }
+                if (value <= improving_[q].first / returned * (1 + kInteractionTolerance)) break;
+            }
+            if (best_value < score.score(cost_)) publish(best_map, best_rhat, best_score);
             else publish(fallback, rhat, score);
         }
 
@@ -803,7 +829,10 @@ namespace rtl
         Candidate repart_;
         bool point_candidates_ = false;
         int point_iterations_ = 20, point_window_ = 2;
-        std::size_t point_chord_ = 0;
+        std::size_t point_chord_ = 0, short_points_ = 32;
+        std::vector<std::pair<double, std::vector<std::size_t>>> improving_;
+        //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
+        static constexpr double kInteractionTolerance = 1e-3;
         scan_polylines::PointPolylines points_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
