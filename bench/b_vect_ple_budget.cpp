@@ -46,7 +46,7 @@ namespace
     struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
-    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2, g_point_chord = 0;
+    int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
     int g_radial = -1, g_short = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
@@ -60,7 +60,7 @@ namespace
         if (g_exact_breaks >= 0) ex.setExactBreakCosts(g_exact_breaks > 0);
         if (g_window >= 0) ex.setNeighbourRefinement(static_cast<std::size_t>(g_window));
         if (g_trim >= 0) ex.setEndTrimming(g_trim > 0);
-        if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window, static_cast<std::size_t>(g_point_chord));
+        if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window);
         if (g_cost > 0) ex.setUnexplainedCost(g_cost);
         if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
         if (g_short >= 0) ex.setShortChainPoints(static_cast<std::size_t>(g_short));
@@ -183,7 +183,6 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--radial=", 9) == 0) g_radial = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
         else if (std::strncmp(argv[i], "--log=", 6) == 0) only_log = argv[i] + 6;
-        else if (std::strncmp(argv[i], "--point-chord=", 14) == 0) g_point_chord = std::atoi(argv[i] + 14);
         else if (std::strncmp(argv[i], "--short=", 8) == 0) g_short = std::atoi(argv[i] + 8);
         else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
         else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;

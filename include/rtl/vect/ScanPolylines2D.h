@@ -20,8 +20,10 @@
 //     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
 //     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
 //     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
-//     optionally (setPointCandidates) a second family: polylines whose vertices are measured points, the optimal
-//     polygonal approximation per k (scan_polylines/PointPolylines.h), radially refined; they never break;
+//     a second family, polylines whose vertices are measured points, the optimal polygonal approximation per k
+//     (scan_polylines/PointPolylines.h), for chains of at most setShortChainPoints() beams (default 32: clutter
+//     clusters, whose points a 2-beam-per-range partition cannot all reach), optionally (setPointCandidates) for all
+//     chains, radially refined; they never break;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
 //     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement; optionally
@@ -30,7 +32,9 @@
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
 //     so refinement never raises the score. The plans of every budget J' <= J are refined and the best returned, so
-//     that the score never rises with J (setRefineEveryBudget, default on; off refines J's own plan only).
+//     that the score never rises with J (setRefineEveryBudget, default on; off refines J's own plan only); where
+//     the best plan's whole map scores clearly worse than its chain costs say (a refined segment over another chain's
+//     beams), the earlier improving plans are hit-tested in turn.
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
 // n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
 // O(chains x J) more for the plans' backtracks and one refinement per distinct (chain, candidate) of the plans.
@@ -118,12 +122,10 @@ namespace rtl
         //! candidates, for each chain only up to `window` vertices beyond its choice there, and the budget allocated
         //! again; with `window` < 0, in full before the only allocation. With refinement on, the polylines within
         //! `window` vertices of the first choice (all, when `window` < 0) are refined radially (at most `iterations`
-        //! LM iterations; 0: none) before they are offered. `maxChord` > 0 limits a segment of the family to that many
-        //! beams (PointPolylines::setMaxChord: O(K n maxChord) instead of O(K n^2) per chain, the optimum among such
-        //! polylines only; 0: no limit).
-        void setPointCandidates(bool on, int iterations = 20, int window = 2, std::size_t maxChord = 0)
+        //! LM iterations; 0: none) before they are offered.
+        void setPointCandidates(bool on, int iterations = 20, int window = 2)
         {
-            point_candidates_ = on; point_iterations_ = iterations; point_window_ = window; point_chord_ = maxChord;
+            point_candidates_ = on; point_iterations_ = iterations; point_window_ = window;
         }
         //! Chains of at most this many beams also offer the point-vertex family (see setPointCandidates; built in full
         //! before the allocation, not refined until a plan chooses them; O(n^3) per such chain at most). A TLS range
@@ -481,11 +483,9 @@ namespace rtl
             if (n < 2 || maxSegments == 0) return;
             points_.load(&px_[cf], &py_[cf], n);
             points_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
-            points_.setMaxChord(point_chord_);
             points_.solve(std::min(maxSegments, max_vertices_ - 1));
             for (std::size_t k = 1; k <= points_.maxSegments(); ++k)
             {
-                if (!(points_.cost(k) < std::numeric_limits<double>::infinity())) continue;   // no k chords short enough
                 points_.vertices(k, vertex_index_);
                 Candidate &cand = newCandidate(c);
                 Polyline &p = cand.next();
@@ -829,7 +829,7 @@ namespace rtl
         Candidate repart_;
         bool point_candidates_ = false;
         int point_iterations_ = 20, point_window_ = 2;
-        std::size_t point_chord_ = 0, short_points_ = 32;
+        std::size_t short_points_ = 32;
         std::vector<std::pair<double, std::vector<std::size_t>>> improving_;
         //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
         static constexpr double kInteractionTolerance = 1e-3;

@@ -51,11 +51,6 @@ namespace rtl::scan_polylines
         //! polyline runs from the chain's first point to its last). Takes effect at the next solve.
         void setEndSkipCost(double s) { skip_ = s; }
 
-        //! Longest chord, in points spanned (j - i; 0, the default: no limit). A limit L makes the programme O(K n L)
-        //! and its result the optimum among polylines whose chords span at most L points (no longer exact for the
-        //! unlimited problem where a longer chord would win). Takes effect at the next solve.
-        void setMaxChord(std::size_t L) { max_chord_ = L; }
-
         //! Sum of squared orthogonal distances of points i+1..j-1 to the line through points i and j (i < j); where
         //! points i and j coincide, the squared distances to that point.
         [[nodiscard]] double chordCost(std::size_t i, std::size_t j) const
@@ -114,20 +109,15 @@ namespace rtl::scan_polylines
                 const double *prev = &best_[(k - 1) * n];
                 double *cur = &best_[k * n];
                 std::uint32_t *arg = &from_[k * n];
-                const std::size_t lo0 = k - 1;   // row k - 1 is finite from index k - 1 on
+                const std::size_t lo = k - 1;   // row k - 1 is finite from index k - 1 on
                 if (k == 1 && !(skip_ > 0))
                 {
                     // from the chain's first point only
-                    for (std::size_t j = 1; j < n; ++j)
-                    {
-                        cur[j] = max_chord_ == 0 || j <= max_chord_ ? chordCost(0, j) : kInf;
-                        arg[j] = 0;
-                    }
+                    for (std::size_t j = 1; j < n; ++j) { cur[j] = chordCost(0, j); arg[j] = 0; }
                     continue;
                 }
                 for (std::size_t j = k; j < n; ++j)
                 {
-                    const std::size_t lo = max_chord_ > 0 && j > lo0 + max_chord_ ? j - max_chord_ : lo0;
                     double *c = &costs_[j * n];
                     std::size_t &filled = low_[j];
                     double m = kInf;
@@ -184,7 +174,6 @@ namespace rtl::scan_polylines
 
         std::size_t n_ = 0, K_ = 0;
         double x0_ = 0, y0_ = 0, skip_ = 0;
-        std::size_t max_chord_ = 0;
         std::vector<double> ax_, ay_, sums_, costs_, best_, total_;
         std::vector<std::size_t> end_, low_;
         std::vector<std::uint32_t> from_;
