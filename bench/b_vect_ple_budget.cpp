@@ -167,6 +167,7 @@ int main(int argc, char **argv)
     int reps = 5;
     std::string dir, only_log, methods = "0123";   // --log=NAME and --J=N restrict the run; --methods= the rows (0 baseline, 1 DP, 2 DP+LM, 3 DP+LM all)
     std::size_t only_j = 0;
+    std::string dump;   // --dump=DIR: write each scan's beams to DIR/<log>_<line>.f64 (interleaved x, y; NaN: no return) and stop
     if (const char *e = std::getenv("RTL_FULL_DATA_DIR")) dir = e;
     for (int i = 1; i < argc; ++i)
     {
@@ -183,6 +184,7 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--radial=", 9) == 0) g_radial = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
         else if (std::strncmp(argv[i], "--log=", 6) == 0) only_log = argv[i] + 6;
+        else if (std::strncmp(argv[i], "--dump=", 7) == 0) dump = argv[i] + 7;
         else if (std::strncmp(argv[i], "--short=", 8) == 0) g_short = std::atoi(argv[i] + 8);
         else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
         else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;
@@ -225,6 +227,22 @@ int main(int argc, char **argv)
         {
             std::fprintf(stderr, "%s: %s (give --data=DIR or RTL_FULL_DATA_DIR)\n", c.name, e.what());
             return 1;
+        }
+        if (!dump.empty())
+        {
+            for (std::size_t q = 0; q < scans.size(); ++q)
+            {
+                const std::string file = dump + "/" + c.name + "_" + std::to_string(smoke ? q : c.lines[q]) + ".f64";
+                std::ofstream out(file, std::ios::binary);
+                for (const auto &p : scans[q].points)
+                {
+                    const double xy[2] = {p[0], p[1]};
+                    out.write(reinterpret_cast<const char *>(xy), sizeof xy);
+                }
+                if (!out) { std::fprintf(stderr, "cannot write %s\n", file.c_str()); return 1; }
+            }
+            std::printf("%s: %zu scans written to %s\n", c.name, scans.size(), dump.c_str());
+            continue;
         }
         if (frontier)
         {

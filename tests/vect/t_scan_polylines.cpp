@@ -623,6 +623,8 @@ TEST(ScanPolylines2D, ShortChainPointsExplainAThreeBeamClusterExactly)
     EXPECT_NEAR(ex.explainedFraction(), 1.0, 1e-12);
     EXPECT_LT(ex.score(), 1e-20);
     EXPECT_NEAR(ex.expectedRanges()[22], 1.8, 1e-9);
+    // a segment of the point family can own one beam (21 here): its covariance is still finite
+    for (const auto &seg : ex.segments()) EXPECT_TRUE(seg.covariance.allFinite()) << "segment over beams " << seg.beams.first;
     // the partition family alone: one segment over the cluster (or none), never exact
     ex.setShortChainPoints(0);
     ASSERT_TRUE(ex(scan));

@@ -782,7 +782,8 @@ namespace rtl
 
         //! Line of segment s through its two vertices, and the covariance of (r, theta) of a line fitted to the
         //! segment's points with noise sigma^2 = max(point sigma^2, residual variance): the inverse normal matrix
-        //! sigma^2 [[m, -sum s_i], [-sum s_i, sum s_i^2]]^-1, s_i the points' coordinates along the line.
+        //! sigma^2 [[m, -sum s_i], [-sum s_i, sum s_i^2]]^-1, s_i the points' coordinates along the line (a segment
+        //! that owns one beam: that point and the next beam's).
         Segment segmentOf(std::size_t p, const Polyline &pl, std::size_t s) const
         {
             Segment seg;
@@ -795,7 +796,11 @@ namespace rtl
             if (r < 0) { r = -r; nx = -nx; ny = -ny; }
             const double tx = -ny, ty = nx;
             double m = 0, ss = 0, ss2 = 0, res2 = 0;
-            for (std::size_t i = seg.beams.first; i <= seg.beams.second; ++i)
+            // A segment of the point-vertex family may own a single beam (its first vertex's): its line is then fitted
+            // to that point and the next beam's, the segment's other vertex, so the covariance stays finite.
+            std::size_t last = seg.beams.second;
+            if (last == seg.beams.first && last + 1 < returned_.size() && returned_[last + 1]) ++last;
+            for (std::size_t i = seg.beams.first; i <= last; ++i)
             {
                 const double si = px_[i] * tx + py_[i] * ty, di = px_[i] * nx + py_[i] * ny - r;
                 m += 1; ss += si; ss2 += si * si; res2 += di * di;
