@@ -561,7 +561,8 @@ namespace rtl
             // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
             const scan_polylines::BudgetTable table(options, max_vertices_);
             std::vector<std::size_t> prev;
-            improving_.clear();   // the plans that lowered the best sum, in budget order
+            improving_plans_.clear();   // the plans that lowered the best sum, in budget order, C entries each
+            improving_sums_.clear();
             double best = std::numeric_limits<double>::infinity();
             for (std::size_t b = 0; b <= max_vertices_; ++b)
             {
@@ -580,7 +581,14 @@ namespace rtl
                     }
                     sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
                 }
-                if (sum < best) { best = sum; improving_.push_back({sum, plan}); }
+                if (sum < best)
+                {
+                    best = sum;
+                    improving_sums_.push_back(sum);
+                    const std::size_t at = improving_plans_.size();
+                    improving_plans_.resize(at + C);
+                    std::copy(plan.begin(), plan.end(), improving_plans_.begin() + static_cast<long>(at));
+                }
                 prev.swap(plan);
             }
             std::vector<double> rhat = expected(fallback);
@@ -596,9 +604,9 @@ namespace rtl
             scan_polylines::RayScore best_score;
             double best_value = std::numeric_limits<double>::infinity();
             const double returned = static_cast<double>(std::max<std::size_t>(1, score.returned));
-            for (std::size_t q = improving_.size(); q-- > 0;)
+            for (std::size_t q = improving_sums_.size(); q-- > 0;)
             {
-                const std::vector<std::size_t> &plan = improving_[q].second;
+                const std::size_t *plan = &improving_plans_[q * C];
                 map.clear();
                 for (std::size_t c = 0; c < C; ++c)
                     if (plan[c] > 0)
@@ -610,7 +618,7 @@ namespace rtl
                 const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
                 const double value = score2.score(cost_);
                 if (value < best_value) { best_value = value; best_map.swap(map); best_rhat.swap(rhat2); best_score = score2; }
-                if (value <= improving_[q].first / returned * (1 + kInteractionTolerance)) break;
+                if (value <= improving_sums_[q] / returned * (1 + kInteractionTolerance)) break;
             }
             if (best_value < score.score(cost_)) publish(best_map, best_rhat, best_score);
             else publish(fallback, rhat, score);
@@ -835,7 +843,8 @@ namespace rtl
         bool point_candidates_ = false;
         int point_iterations_ = 20, point_window_ = 2;
         std::size_t short_points_ = 32;
-        std::vector<std::pair<double, std::vector<std::size_t>>> improving_;
+        std::vector<std::size_t> improving_plans_;
+        std::vector<double> improving_sums_;
         //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
         static constexpr double kInteractionTolerance = 1e-3;
         scan_polylines::PointPolylines points_;
