@@ -47,7 +47,7 @@ namespace
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
-    int g_radial = -1;
+    int g_radial = -1, g_short = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
@@ -63,6 +63,7 @@ namespace
         if (g_points >= 0) ex.setPointCandidates(g_points > 0, g_point_iterations, g_point_window);
         if (g_cost > 0) ex.setUnexplainedCost(g_cost);
         if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
+        if (g_short >= 0) ex.setShortChainPoints(static_cast<std::size_t>(g_short));
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -164,7 +165,9 @@ int main(int argc, char **argv)
 {
     bool smoke = false, frontier = false;
     int reps = 5;
-    std::string dir;
+    std::string dir, only_log, methods = "0123";   // --log=NAME and --J=N restrict the run; --methods= the rows (0 baseline, 1 DP, 2 DP+LM, 3 DP+LM all)
+    std::size_t only_j = 0;
+    std::string dump;   // --dump=DIR: write each scan's beams to DIR/<log>_<line>.f64 (interleaved x, y; NaN: no return) and stop
     if (const char *e = std::getenv("RTL_FULL_DATA_DIR")) dir = e;
     for (int i = 1; i < argc; ++i)
     {
@@ -180,6 +183,11 @@ int main(int argc, char **argv)
         else if (std::strcmp(argv[i], "--frontier") == 0) frontier = true;
         else if (std::strncmp(argv[i], "--radial=", 9) == 0) g_radial = std::atoi(argv[i] + 9);
         else if (std::strncmp(argv[i], "--exact-breaks=", 15) == 0) g_exact_breaks = std::atoi(argv[i] + 15);
+        else if (std::strncmp(argv[i], "--log=", 6) == 0) only_log = argv[i] + 6;
+        else if (std::strncmp(argv[i], "--dump=", 7) == 0) dump = argv[i] + 7;
+        else if (std::strncmp(argv[i], "--short=", 8) == 0) g_short = std::atoi(argv[i] + 8);
+        else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
+        else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;
     }
     if (dir.empty()) dir = std::string(RTL_TEST_DATA_DIR) + "/../../../shared/data";
 
@@ -196,6 +204,7 @@ int main(int argc, char **argv)
                 "med us", "max us", "maxV", "PLE", "PLE+", "PLE+score");
     for (const auto &c : cases)
     {
+        if (!only_log.empty() && only_log != c.name) continue;
         std::vector<rtl::ple::Scan> scans;
         try
         {
@@ -218,6 +227,22 @@ int main(int argc, char **argv)
         {
             std::fprintf(stderr, "%s: %s (give --data=DIR or RTL_FULL_DATA_DIR)\n", c.name, e.what());
             return 1;
+        }
+        if (!dump.empty())
+        {
+            for (std::size_t q = 0; q < scans.size(); ++q)
+            {
+                const std::string file = dump + "/" + c.name + "_" + std::to_string(smoke ? q : c.lines[q]) + ".f64";
+                std::ofstream out(file, std::ios::binary);
+                for (const auto &p : scans[q].points)
+                {
+                    const double xy[2] = {p[0], p[1]};
+                    out.write(reinterpret_cast<const char *>(xy), sizeof xy);
+                }
+                if (!out) { std::fprintf(stderr, "cannot write %s\n", file.c_str()); return 1; }
+            }
+            std::printf("%s: %zu scans written to %s\n", c.name, scans.size(), dump.c_str());
+            continue;
         }
         if (frontier)
         {
@@ -256,6 +281,7 @@ int main(int argc, char **argv)
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
             for (int method = 0; method < 4; ++method)
             {
+                if ((only_j && J != only_j) || methods.find(static_cast<char>('0' + method)) == std::string::npos) continue;
                 const Row r = method == 0 ? evaluateBaseline(scans, J) : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
                 std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,

@@ -464,8 +464,10 @@ TEST(ScanPolylines2D, ADepthStepInsideAChainBecomesABreakWhenTheBudgetAllows)
 TEST(ScanPolylines2D, BreakCostsFromLocalGainsChooseAsWellAsHitTestedOnes)
 {
     // Break candidates are priced as the partition's cost minus the local gains; hit-testing each instead must not
-    // find better maps (on average over the real excerpt), and both must beat no break candidates at J = 50.
+    // find better maps (on average over the real excerpt), and both must beat no break candidates at J = 50. Measured
+    // on the partition family alone: short-chain point candidates (default) reach the same maps without breaks.
     rtl::ScanPolylines2D<double> local, exact, none;
+    for (auto *ex : {&local, &exact, &none}) ex->setShortChainPoints(0);
     exact.setExactBreakCosts(true);
     none.setBreakCandidates(0);
     double s_local = 0, s_exact = 0, s_none = 0;
@@ -594,4 +596,38 @@ TEST(ScanPolylines2D, RadialRepartitionKeepsTheBudgetAndLowersTheMeanScore)
             }
     EXPECT_LT(s_with, s_without);
     EXPECT_GT(changed, 10u);   // it does something on many scans
+}
+
+TEST(ScanPolylines2D, ShortChainPointsExplainAThreeBeamClusterExactly)
+{
+    // Two walls (y = 5 over beams 60..69.5 degrees, y = 4 over 72.5..80 degrees, 0.5-degree steps) and between them,
+    // after a beam without a return, a clutter cluster of three beams at 2.0, 1.8 and 2.0 m (a chair leg seen edge on:
+    // its own chain). A TLS range needs two beams, so the partition family can give the cluster one segment at most,
+    // which misses its middle beam by ~0.1 m; the polyline through its three points explains it exactly. With J = 7
+    // (2 + 3 + 2 vertices) the default map explains every beam exactly; without short-chain points it cannot.
+    std::vector<rtl::Vector2d> scan;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto beam = [&](int step, double r) {
+        const double a = (60.0 + 0.5 * step) * M_PI / 180;
+        scan.emplace_back(r * std::cos(a), r * std::sin(a));
+    };
+    for (int s = 0; s < 20; ++s) beam(s, 5.0 / std::sin((60.0 + 0.5 * s) * M_PI / 180));
+    scan.emplace_back(nan, nan);
+    beam(21, 2.0); beam(22, 1.8); beam(23, 2.0);
+    scan.emplace_back(nan, nan);
+    for (int s = 25; s <= 40; ++s) beam(s, 4.0 / std::sin((60.0 + 0.5 * s) * M_PI / 180));
+    rtl::ScanPolylines2D<double> ex;
+    ex.setMaxVertices(7);
+    ASSERT_TRUE(ex(scan));
+    EXPECT_EQ(ex.vertexCount(), 7u);
+    EXPECT_NEAR(ex.explainedFraction(), 1.0, 1e-12);
+    EXPECT_LT(ex.score(), 1e-20);
+    EXPECT_NEAR(ex.expectedRanges()[22], 1.8, 1e-9);
+    // a segment of the point family can own one beam (21 here): its covariance is still finite
+    for (const auto &seg : ex.segments()) EXPECT_TRUE(seg.covariance.allFinite()) << "segment over beams " << seg.beams.first;
+    // the partition family alone: one segment over the cluster (or none), never exact
+    ex.setShortChainPoints(0);
+    ASSERT_TRUE(ex(scan));
+    EXPECT_GT(ex.score(), 1e-4);
+    EXPECT_GT(std::abs(ex.expectedRanges()[22] - 1.8), 0.02);
 }

@@ -20,8 +20,10 @@
 //     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
 //     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
 //     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
-//     optionally (setPointCandidates) a second family: polylines whose vertices are measured points, the optimal
-//     polygonal approximation per k (scan_polylines/PointPolylines.h), radially refined; they never break;
+//     a second family, polylines whose vertices are measured points, the optimal polygonal approximation per k
+//     (scan_polylines/PointPolylines.h), for chains of at most setShortChainPoints() beams (default 32: clutter
+//     clusters, whose points a 2-beam-per-range partition cannot all reach), optionally (setPointCandidates) for all
+//     chains, radially refined; they never break;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
 //     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement; optionally
@@ -30,7 +32,9 @@
 //  4. radial refinement: Levenberg-Marquardt on each chosen polyline's vertices, minimising the radial error of the
 //     beams it explains (scan_polylines/RadialRefinement.h); a refined scan whose score is not lower is discarded,
 //     so refinement never raises the score. The plans of every budget J' <= J are refined and the best returned, so
-//     that the score never rises with J (setRefineEveryBudget, default on; off refines J's own plan only).
+//     that the score never rises with J (setRefineEveryBudget, default on; off refines J's own plan only); where
+//     the best plan's whole map scores clearly worse than its chain costs say (a refined segment over another chain's
+//     beams), the earlier improving plans are hit-tested in turn.
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
 // n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
 // O(chains x J) more for the plans' backtracks and one refinement per distinct (chain, candidate) of the plans.
@@ -123,6 +127,12 @@ namespace rtl
         {
             point_candidates_ = on; point_iterations_ = iterations; point_window_ = window;
         }
+        //! Chains of at most this many beams also offer the point-vertex family (see setPointCandidates; built in full
+        //! before the allocation, not refined until a plan chooses them; O(n^3) per such chain at most). A TLS range
+        //! needs two beams, so a chain of n beams has at most n / 2 ranges: a 3-beam clutter cluster whose middle
+        //! point is off its line can only be one segment, while the polyline through its 3 points explains it exactly
+        //! (default 32; 0: off).
+        void setShortChainPoints(std::size_t maxBeams) { short_points_ = maxBeams; }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
         //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
@@ -315,6 +325,16 @@ namespace rtl
             x = r * ux_[i]; y = r * uy_[i];
         }
 
+        //! The angular span from beam a's direction to beam b's (both returned): AngularSpan::of their points, from
+        //! the directions computed once per scan (the same atan2 of the same coordinates, so the same numbers).
+        scan_polylines::AngularSpan wedge(std::size_t a, std::size_t b) const
+        {
+            scan_polylines::AngularSpan s;
+            s.start = angle_[a];
+            s.width = scan_polylines::wrapAngle(angle_[b] - angle_[a]);
+            return s;
+        }
+
         //! Crossing of lines f and g when it is well defined and within `reach` of both boundary points a and b.
         static bool corner(const scan_polylines::TlsFit &f, const scan_polylines::TlsFit &g, double ax, double ay, double bx, double by,
                            double reach, double &x, double &y)
@@ -367,6 +387,7 @@ namespace rtl
                 }
             }
             if (point_candidates_ && point_window_ < 0) buildPointCandidates(c, opts, max_vertices_ - 1, 0, max_vertices_);
+            else if (n <= short_points_) buildPointCandidates(c, opts, max_vertices_ - 1, 1, 0);   // unrefined here
         }
 
         //! Sum of squared radial errors of chain-local beams a..b predicted by their own TLS line (part_ loaded with the
@@ -539,7 +560,9 @@ namespace rtl
                 }
             // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
             const scan_polylines::BudgetTable table(options, max_vertices_);
-            std::vector<std::size_t> best_plan, prev;
+            std::vector<std::size_t> prev;
+            improving_plans_.clear();   // the plans that lowered the best sum, in budget order, C entries each
+            improving_sums_.clear();
             double best = std::numeric_limits<double>::infinity();
             for (std::size_t b = 0; b <= max_vertices_; ++b)
             {
@@ -558,21 +581,46 @@ namespace rtl
                     }
                     sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
                 }
-                if (sum < best) { best = sum; best_plan = plan; }
+                if (sum < best)
+                {
+                    best = sum;
+                    improving_sums_.push_back(sum);
+                    const std::size_t at = improving_plans_.size();
+                    improving_plans_.resize(at + C);
+                    std::copy(plan.begin(), plan.end(), improving_plans_.begin() + static_cast<long>(at));
+                }
                 prev.swap(plan);
             }
             std::vector<double> rhat = expected(fallback);
             scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
-            std::vector<Polyline> map;
-            for (std::size_t c = 0; c < C; ++c)
-                if (best_plan[c] > 0)
-                {
-                    const Candidate &cand = candidates_[c][best_plan[c] - 1];
-                    map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
-                }
-            std::vector<double> rhat2 = expected(map);
-            const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
-            if (score2.score(cost_) < score.score(cost_)) publish(map, rhat2, score2);
+            // The chain costs leave out where one chain's segments hit another chain's beams (a refined inner vertex
+            // may carry a segment's span over a neighbouring chain). The last improving plan is hit-tested as a whole
+            // map; where that scores clearly worse than its sum, the earlier improving plans are tried, latest first,
+            // until one scores as its sum says; the best hit-tested of those visited is kept. A larger budget's
+            // improving plans extend the smaller budget's (same table rows), and it visits the smaller budget's
+            // visited plans too unless it stops earlier at a plan that scores as its (lower) sum: monotone in J.
+            std::vector<Polyline> map, best_map;
+            std::vector<double> rhat2, best_rhat;
+            scan_polylines::RayScore best_score;
+            double best_value = std::numeric_limits<double>::infinity();
+            const double returned = static_cast<double>(std::max<std::size_t>(1, score.returned));
+            for (std::size_t q = improving_sums_.size(); q-- > 0;)
+            {
+                const std::size_t *plan = &improving_plans_[q * C];
+                map.clear();
+                for (std::size_t c = 0; c < C; ++c)
+                    if (plan[c] > 0)
+                    {
+                        const Candidate &cand = candidates_[c][plan[c] - 1];
+                        map.insert(map.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
+                    }
+                rhat2 = expected(map);
+                const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
+                const double value = score2.score(cost_);
+                if (value < best_value) { best_value = value; best_map.swap(map); best_rhat.swap(rhat2); best_score = score2; }
+                if (value <= improving_sums_[q] / returned * (1 + kInteractionTolerance)) break;
+            }
+            if (best_value < score.score(cost_)) publish(best_map, best_rhat, best_score);
             else publish(fallback, rhat, score);
         }
 
@@ -653,7 +701,7 @@ namespace rtl
                 // farther round, it would fold its segments over other beams, or hide beams of other chains.
                 const std::size_t wa = a > cf ? a - 1 : a, wb = b < cl ? b + 1 : b;
                 if (!forced_[s] && corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y)
-                    && scan_polylines::AngularSpan::of(px_[wa], py_[wa], px_[wb], py_[wb]).contains(std::atan2(y, x), 0))
+                    && wedge(wa, wb).contains(std::atan2(y, x), 0))
                 {
                     if (corners) corners->push_back({s, breakGain(fits[s], fits[s + 1], a, b, cf, cl, x, y)});
                     cur->x.push_back(x); cur->y.push_back(y); ++vertices;
@@ -742,7 +790,8 @@ namespace rtl
 
         //! Line of segment s through its two vertices, and the covariance of (r, theta) of a line fitted to the
         //! segment's points with noise sigma^2 = max(point sigma^2, residual variance): the inverse normal matrix
-        //! sigma^2 [[m, -sum s_i], [-sum s_i, sum s_i^2]]^-1, s_i the points' coordinates along the line.
+        //! sigma^2 [[m, -sum s_i], [-sum s_i, sum s_i^2]]^-1, s_i the points' coordinates along the line (a segment
+        //! that owns one beam: that point and the next beam's).
         Segment segmentOf(std::size_t p, const Polyline &pl, std::size_t s) const
         {
             Segment seg;
@@ -755,7 +804,11 @@ namespace rtl
             if (r < 0) { r = -r; nx = -nx; ny = -ny; }
             const double tx = -ny, ty = nx;
             double m = 0, ss = 0, ss2 = 0, res2 = 0;
-            for (std::size_t i = seg.beams.first; i <= seg.beams.second; ++i)
+            // A segment of the point-vertex family may own a single beam (its first vertex's): its line is then fitted
+            // to that point and the next beam's, the segment's other vertex, so the covariance stays finite.
+            std::size_t last = seg.beams.second;
+            if (last == seg.beams.first && last + 1 < returned_.size() && returned_[last + 1]) ++last;
+            for (std::size_t i = seg.beams.first; i <= last; ++i)
             {
                 const double si = px_[i] * tx + py_[i] * ty, di = px_[i] * nx + py_[i] * ny - r;
                 m += 1; ss += si; ss2 += si * si; res2 += di * di;
@@ -789,6 +842,11 @@ namespace rtl
         Candidate repart_;
         bool point_candidates_ = false;
         int point_iterations_ = 20, point_window_ = 2;
+        std::size_t short_points_ = 32;
+        std::vector<std::size_t> improving_plans_;
+        std::vector<double> improving_sums_;
+        //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
+        static constexpr double kInteractionTolerance = 1e-3;
         scan_polylines::PointPolylines points_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;

@@ -4,8 +4,9 @@
 // Range costs come in O(1) from prefix sums of x, y, x^2, xy, y^2 (taken about the chain's first point, so that a
 // chain far from the origin keeps its precision), all in double. The dynamic programme over prefix lengths,
 //   F[k][j] = min over i of F[k-1][i] + cost(points i..j-1),
-// gives every k's optimum in one pass: O(n^2) range costs, then at most O(K n^2) additions (the scan over the last
-// range stops as soon as that range's own error reaches the best total, see solve); O(n^2 + K n) memory.
+// gives every k's optimum in one pass: at most O(n^2) range costs (each computed once, when first needed), then at
+// most O(K n^2) additions (the scan over the last range stops as soon as that range's own error reaches the best total,
+// see solve); O(n^2 + K n) memory.
 //
 // Optionally (setEndSkipCost) the ranges need not reach the chain's ends: points before the first range and after the
 // last are left out at a fixed cost each, so a chain's clutter or curved ends are dropped when a line fits them worse
@@ -95,11 +96,12 @@ namespace rtl::scan_polylines
             const std::size_t n = n_;
             K_ = std::min(maxK, n / 2);
             const std::size_t w = n + 1;
-            costs_.assign(w * w, kInf);
-            // costs_[j * w + i] = cost of points i..j-1, contiguous in i for the inner loop below.
-            for (std::size_t j = 2; j <= n; ++j)
-                for (std::size_t i = 0; i + 2 <= j; ++i)
-                    costs_[j * w + i] = rangeCost(i, j - 1);
+            // costs_[j * w + i] = cost of points i..j-1, contiguous in i for the inner loop below, filled on first use:
+            // column j holds the ranges from low_[j] up to j - 2 (the scans run downward from j - 2 and stop early, so
+            // most of the table is never needed; neither filled nor cleared in advance).
+            costs_.resize(w * w);
+            low_.resize(w);
+            for (std::size_t j = 0; j <= n; ++j) low_[j] = j >= 1 ? j - 1 : 0;
             best_.assign((K_ + 1) * w, kInf);
             from_.assign((K_ + 1) * w, 0);
             best_[0] = 0;
@@ -110,9 +112,16 @@ namespace rtl::scan_polylines
                 const double *prev = &best_[(k - 1) * w];
                 double *cur = &best_[k * w];
                 std::uint32_t *arg = &from_[k * w];
+                if (k == 1 && !(skip_ > 0))
+                {
+                    // one range from the chain's first point (the only finite entry of row 0)
+                    for (std::size_t j = 2; j <= n; ++j) { cur[j] = rangeCost(0, j - 1); arg[j] = 0; }
+                    continue;
+                }
                 for (std::size_t j = 2 * k; j <= n; ++j)
                 {
-                    const double *c = &costs_[j * w];
+                    double *c = &costs_[j * w];
+                    std::size_t &filled = low_[j];
                     // Last range i..j-1, scanned from the shortest: a longer last range contains a shorter one, so
                     // its TLS error is no smaller (c[i] grows as i falls), and once c[i] alone reaches the best total
                     // no longer range can win. Exact, and it cuts most of the work where the optimum is small.
@@ -121,6 +130,7 @@ namespace rtl::scan_polylines
                     std::size_t at = hi - 1;
                     for (std::size_t i = hi; i-- > lo;)
                     {
+                        while (filled > i) { --filled; c[filled] = rangeCost(filled, j - 1); }   // keeps the column contiguous
                         if (c[i] >= m) break;
                         const double v = prev[i] + c[i];
                         if (v < m) { m = v; at = i; }
@@ -185,7 +195,7 @@ namespace rtl::scan_polylines
 
         std::size_t n_ = 0, K_ = 0;
         double x0_ = 0, y0_ = 0, skip_ = 0;
-        std::vector<std::size_t> end_;
+        std::vector<std::size_t> end_, low_;
         std::vector<double> total_;
         std::vector<double> sums_, costs_, best_;
         std::vector<std::uint32_t> from_;

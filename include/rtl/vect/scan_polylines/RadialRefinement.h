@@ -40,7 +40,9 @@ namespace rtl::scan_polylines
             const std::size_t P = 2 * k;
             const std::size_t bf = segs.front().first, bl = segs.back().second;
             const double ufx = beams.ux[bf], ufy = beams.uy[bf], ulx = beams.ux[bl], uly = beams.uy[bl];
-            std::vector<double> p(P), trial(P);
+            // work vectors are members, so that repeated calls do not allocate once they have grown
+            std::vector<double> &p = p_, &trial = trial_;
+            p.resize(P); trial.resize(P);
             p[0] = vx[0] * ufx + vy[0] * ufy;
             for (std::size_t v = 1; v < k; ++v) { p[2 * v - 1] = vx[v]; p[2 * v] = vy[v]; }
             p[P - 1] = vx[k] * ulx + vy[k] * uly;
@@ -168,6 +170,6 @@ namespace rtl::scan_polylines
         }
 
         int max_iter_ = 20;
-        std::vector<double> band_, chol_, grad_, step_;
+        std::vector<double> band_, chol_, grad_, step_, p_, trial_;
     };
 }

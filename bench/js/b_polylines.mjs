@@ -1,0 +1,74 @@
+#!/usr/bin/env node
+// extractPolylines() in Node (the package's wasm) against rtl::ScanPolylines2D natively on PLE's benchmark scans, same
+// inputs, same J, outputs checked equal (figures, not pass/fail):
+//   node bench/js/b_polylines.mjs [--data=DIR] [--rounds=N] [--J=10,50] [--smoke]
+// Inputs: b_vect_ple_budget --dump writes PLE's 20 intel and 20 csail scans (its protocol, bench/ple/README.md) as
+// interleaved x, y doubles into a temporary folder; --smoke uses the tests/data excerpts (first 30 scans each).
+// Native: tests/tools/polylines_native (in $RTL_NATIVE_BUILD_DIR/tools, default build/native) with a repetition count:
+// the median thread CPU and wall-clock times of N + 1 calls on one object. Wasm: the library's time of the call
+// (lastComputeMs: wall clock inside the module) and the whole JS call, each the median of N calls in a row on the same
+// module after one call that grows its buffers. Per log and J: the medians over the scans, and the ratios of the wasm
+// times to native wall clock (like for like; goal: wasm library / native <= 1.5),
+// and the partition (offsets, vertex and explained-beam counts) checked identical, the score to 1e-7 relative (the
+// package's test explains why not bit-identical). Both sides run on a shared machine: the load average is printed.
+// RTL_PACKAGE=dir: a package folder built by wasm/build.mjs, instead of dist/.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
+import { loadavg, tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { performance } from 'node:perf_hooks';
+
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const PKG = resolve(ROOT, process.env.RTL_PACKAGE || 'dist');
+const BUILD = resolve(ROOT, process.env.RTL_NATIVE_BUILD_DIR || 'build/native');
+const TOOL = join(BUILD, 'tools', 'polylines_native');
+const DUMP = join(BUILD, 'bench', 'b_vect_ple_budget');
+const arg = (name, fallback) => {
+  const a = process.argv.find((s) => s.startsWith(`--${name}=`));
+  return a ? a.slice(name.length + 3) : fallback;
+};
+const smoke = process.argv.includes('--smoke');
+const rounds = Number(arg('rounds', smoke ? 1 : 5));
+const budgets = arg('J', smoke ? '10,50' : '10,30,50').split(',').map(Number);
+const dataArgs = arg('data') ? [`--data=${arg('data')}`] : [];
+
+const { default: init } = await import(pathToFileURL(join(PKG, 'index.node.mjs')).href);
+const rtl = await init();
+const dir = mkdtempSync(join(tmpdir(), 'rtl-b-polylines-'));
+process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
+execFileSync(DUMP, [...(smoke ? ['--smoke'] : dataArgs), `--dump=${dir}`], { stdio: ['ignore', 'ignore', 'inherit'] });
+
+const median = (v) => { const s = [...v].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
+const files = readdirSync(dir).filter((f) => f.endsWith('.f64')).sort();
+console.log(`extractPolylines (wasm, ${PKG}) vs native; ${files.length} scans, ${rounds} calls each; load average ${loadavg().map((v) => v.toFixed(1)).join(' ')}`);
+console.log('log    J   scans  native cpu / wall med us  wasm lib med us  wasm call med us  lib/native  call/native  partitions equal  max score diff');
+for (const log of ['intel', 'csail']) {
+  const mine = files.filter((f) => f.startsWith(`${log}_`));
+  for (const J of budgets) {
+    const nat = [], natCpu = [], lib = [], call = [];
+    let equal = 0, maxDiff = 0;
+    for (const f of mine) {
+      const file = join(dir, f);
+      const bytes = readFileSync(file);
+      const points = new Float64Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 8);
+      const n = JSON.parse(execFileSync(TOOL, [file, J, 1, 0.5, rounds + 1].map(String), { encoding: 'utf8', maxBuffer: 1 << 26 }));
+      let w;
+      const libMs = [], callMs = [];
+      rtl.extractPolylines(points, { maxVertices: J });   // first call: the module's buffers grow
+      for (let k = 0; k < rounds; k++) {
+        const t0 = performance.now();
+        w = rtl.extractPolylines(points, { maxVertices: J });
+        callMs.push(performance.now() - t0);
+        libMs.push(rtl.lastComputeMs);
+      }
+      nat.push(n.wallUs); natCpu.push(n.timeUs); lib.push(1000 * median(libMs)); call.push(1000 * median(callMs));
+      const same = JSON.stringify([...w.offsets]) === JSON.stringify(n.offsets) && w.vertexCount === n.vertexCount
+        && w.explainedBeams === n.explainedBeams;
+      equal += same ? 1 : 0;
+      maxDiff = Math.max(maxDiff, Math.abs(w.score - n.score) / Math.max(1e-300, Math.abs(n.score)));
+    }
+    const mn = median(nat), ml = median(lib), mc = median(call);
+    console.log(`${log.padEnd(6)} ${String(J).padStart(2)}  ${String(mine.length).padStart(5)}  ${`${median(natCpu).toFixed(1)} / ${mn.toFixed(1)}`.padStart(24)}  ${ml.toFixed(1).padStart(15)}  ${mc.toFixed(1).padStart(16)}  ${(ml / mn).toFixed(2).padStart(10)}  ${(mc / mn).toFixed(2).padStart(11)}  ${`${equal} of ${mine.length}`.padStart(16)}  ${maxDiff.toExponential(1).padStart(14)}`);
+  }
+}
