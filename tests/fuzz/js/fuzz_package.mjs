@@ -144,6 +144,13 @@ export async function fuzzPackage({ seed = 1, iterations = Infinity, seconds = I
       // An alias (readCarmen = readCarmenLog) reports under the function's own name.
       const own = functions.find((k) => rtl[k] === rtl[name]);
       const r = attempt(name, rtl[name], args, own);
+      // An async call (load) rejects instead of throwing: its rejection obeys the same rule.
+      if (r.value instanceof Promise) {
+        await r.value.catch((e) => {
+          if (!allowed(e, name, own)) throw new Finding(`${describeCall(name, args)} rejected with ${e && e.constructor && e.constructor.name}: ${e && e.message}`);
+        });
+        continue;
+      }
       // Objects returned with methods (e.g. an organised cloud) get their methods fuzzed too.
       if (r.value && typeof r.value === 'object')
         for (const [k, f] of Object.entries(r.value)) if (typeof f === 'function') attempt(`${name}.${k}`, f.bind(r.value), [randomValue(g, names)], k);
