@@ -278,6 +278,72 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
   });
 
+  test('the curve read aloud: the knee (dashed) and the text\'s figures are the package\'s scores', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.goto('about:blank');   // a fresh page: the link before chose another scan as the source
+    await page.goto(`${server.origin}/web/#budget?scan=intel%3A21&J=20`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
+    const points = scans.intel[21].points, scores = [];
+    for (let J = 2; J <= 60; J++) scores.push(rtl.extractPolylines(points, { maxVertices: J }).score);
+    const best = Math.min(...scores), bound = best + 0.1 * (scores[0] - best);
+    const knee = 2 + scores.findIndex((v) => v <= bound);
+    assert.ok(knee > 20 && knee < 60, `knee at J = ${knee}: J = 20 lies before it`);
+    assert.equal(await page.textContent('.budget-chart .knee-j'), `J = ${knee}`);
+    assert.equal(await page.textContent('.budget-chart .knee-first'), `${scores[0].toFixed(4)} m²`);
+    assert.equal(await page.textContent('.budget-chart .knee-best'), `${best.toFixed(4)} m²`);
+    assert.equal(await page.textContent('.budget-chart .knee-label'), `90 % by J = ${knee}`);
+    // the dashed line stands on the knee's column of the score panel
+    const [line, col] = await page.evaluate((k) => {
+      const svg = document.querySelector('.budget-chart svg'), l = svg.querySelector('.knee').getBoundingClientRect(), c = svg.querySelector(`.pick[data-k="${k - 2}"]`).getBoundingClientRect();
+      return [l.x + l.width / 2, c.x + c.width / 2];
+    }, knee);
+    assert.ok(Math.abs(line - col) < 1, `knee line at ${line}, column at ${col}`);
+    const why = await page.textContent('#lesson-text .budget-why');
+    assert.match(why, /^Why a budget\?/);
+    assert.ok(why.includes(`J = 20 is before the bend of the curve below (J = ${knee},`), why);
+    await setJ(page, knee + 3);
+    assert.ok((await page.textContent('#lesson-text .budget-why')).includes(`J = ${knee + 3} is past the bend of the curve below (J = ${knee}): the 3 vertices beyond it`));
+  });
+
+  test('the chart reads from the back of a room: lecture mode at 1920x1080 draws its text as large as the explanation\'s, none covering another, all on screen', async () => {
+    // every text of the chart as drawn: font size times the panel's scale on screen, and its box
+    const texts = () => page.evaluate(() => [...document.querySelectorAll('.budget-chart svg')].map((svg) => [...svg.querySelectorAll('text')].map((t) => {
+      const b = t.getBoundingClientRect();
+      return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
+    })));
+    const check = (panels, minPx, what) => {
+      for (const list of panels) {
+        assert.ok(list.length >= 10, `${what}: ${list.length} texts`);
+        for (const t of list) assert.ok(t.px >= minPx, `${what}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
+        for (let i = 0; i < list.length; i++) for (let j = 0; j < i; j++) {
+          const a = list[i], b = list[j];
+          assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${what}: "${a.text}" covers "${b.text}"`);
+        }
+      }
+    };
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.goto(`${server.origin}/web/#budget`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
+    check(await texts(), 11, '1280x800');
+    await page.setViewportSize({ width: 1920, height: 1080 });
+    await page.evaluate(() => window.__rtl.lecture.set(true));
+    await page.waitForFunction(() => document.documentElement.classList.contains('lecture'), null, { timeout: PAGE_TIMEOUT });
+    await page.waitForTimeout(200);
+    const explainPx = await page.evaluate(() => parseFloat(getComputedStyle(document.querySelector('#lesson-text')).fontSize));
+    // the figure draws its labels at 12 px × 1.8 in lecture mode; the chart's smallest text (its ticks) at least
+    // 18 px, its titles larger
+    check(await texts(), 18, '1920x1080 lecture');
+    const titles = (await texts()).flat().filter((t) => /score|RMSE/.test(t.text));
+    assert.ok(titles.length === 2 && titles.every((t) => t.px >= 0.95 * explainPx), `titles ${titles.map((t) => t.px.toFixed(1))} against the explanation's ${explainPx} px`);
+    // the chart and its reading whole on the projector, no scrolling inside its box
+    const stage = await page.evaluate(() => { const s = document.querySelector('.lesson-stage'), b = s.getBoundingClientRect(); return { bottom: b.bottom, scroll: s.scrollHeight, client: s.clientHeight }; });
+    assert.ok(stage.scroll <= stage.client + 1 && stage.bottom <= 1080, JSON.stringify(stage));
+    assert.ok(await page.isVisible('.budget-chart .knee-j'), 'the reading of the curve stays in lecture mode');
+    await page.screenshot({ path: join(SCREENSHOTS, 'lecture-budget-1920x1080.png') });
+    await page.evaluate(() => window.__rtl.lecture.set(false));
+    await page.setViewportSize({ width: 1280, height: 800 });
+  });
+
   test('no console errors', async () => {
     assert.deepEqual(await page.evaluate(() => window.__rtl.errors), []);
     assert.deepEqual(problems, []);

@@ -4,7 +4,7 @@
 // grazing incidence in a magnifier with its radial and orthogonal errors; the stage shows score, RMSE and f against J.
 import { INK, Scene } from '../figure.js';
 import { numberField, selectField, note, m, num } from './ui.js';
-import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam, newlyExplained, runsText } from './budget-run.js';
+import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam, newlyExplained, runsText, curveKnee } from './budget-run.js';
 import { budgetChart } from './budget-chart.js';
 import { budgetQuestions } from './predict-questions.js';
 import { readParams, positive, explainNoSteps } from './common.js';
@@ -168,6 +168,13 @@ export default {
           `<span data-q="explained">${snap.explainedBeams} of the ${snap.returned} returned beams (f = ${num(snap.explained)})</span> with ` +
           `<span data-q="residuals">RMSE ${m(snap.rmse)}</span> along the beams; <span data-q="unexplained">${unexplained} beam${unexplained === 1 ? ' is' : 's are'} unexplained</span> ` +
           `and count as c = ${m(run.cost, 2)} each. Score f·RMSE² + (1 − f)·c² = <b>${num(snap.score, 4)} m²</b>.</p>`;
+        // why a budget at all, and where this J sits on the curve under the figure (the package's scores)
+        const knee = curveKnee(run.snaps);
+        const side = !knee ? '' : snap.J < knee.J ? ` J = ${snap.J} is before the bend of the curve below (<span class="knee-j">J = ${knee.J}</span>, 90 % of the possible fall in score): vertices still pay here.`
+          : snap.J === knee.J ? ` J = ${snap.J} is the bend of the curve below: 90 % of the possible fall in score is made, later vertices buy little.`
+            : ` J = ${snap.J} is past the bend of the curve below (<span class="knee-j">J = ${knee.J}</span>): the ${snap.J - knee.J} vertices beyond it buy the last few per cent.`;
+        html += `<p class="budget-why"><b>Why a budget?</b> A map is what a robot stores, sends and matches every scan against, and its size is its vertex count. ` +
+          `Fixing J asks a fair question, the same for every method: with this many vertices, how well can the scan be explained?${side}</p>`;
         if (prev) {
           const d = snap.score - prev.score;
           const gained = run.gained.length ? ` <span data-q="gained">${run.gained.length} beam${run.gained.length === 1 ? '' : 's'} newly explained</span> (${runsText(run.gained)}, green rings).` : '';
