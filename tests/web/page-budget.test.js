@@ -177,7 +177,18 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     await waitStep(page, q);
     verdict = await page.textContent('#predict');
     assert.match(verdict, /^Not quite\./);
-    assert.ok(verdict.includes(`You picked beam ${wrong}: it stays unexplained at J = ${q + 2}`), verdict);
+    // how far the pick was from the nearest beam the budget explains, in metres
+    const gap = (i, j) => Math.hypot(points[2 * i] - points[2 * j], points[2 * i + 1] - points[2 * j + 1]);
+    const nearest = c.gained.reduce((b, i) => (gap(wrong, i) < gap(wrong, b) ? i : b), c.gained[0]);
+    assert.ok(gap(wrong, nearest) > 0.01);
+    const away = `${gap(wrong, nearest).toFixed(3)} m from beam ${nearest}`;
+    assert.ok(verdict.includes(`You picked beam ${wrong}, ${away} (the nearest it explains): it stays unexplained at J = ${q + 2}`), verdict);
+    const pickLabel = (await page.evaluate(() => window.__rtl.figureOverlay())).find((m) => m.verdict === 'pick' && m.type === 'label');
+    assert.equal(pickLabel.text, `your pick: ${wrong} (unexplained), ${away}`);
+    // drawn whole, inside the figure (it sat at the right edge, cut)
+    const drawn = (await page.evaluate(() => window.__rtl.figureLabels())).find((l) => l.text === pickLabel.text);
+    const canvasWidth = await page.evaluate(() => document.querySelector('#canvas').clientWidth);
+    assert.ok(drawn && drawn.x0 >= 0 && drawn.x1 <= canvasWidth, `pick label at ${drawn?.x0}..${drawn?.x1} of ${canvasWidth}`);
     const r0 = rtl.extractPolylines(points, { maxVertices: q + 1 }), r1 = rtl.extractPolylines(points, { maxVertices: q + 2 });
     assert.ok(verdict.includes(`from ${r0.score.toFixed(4)} to ${r1.score.toFixed(4)} m²`), verdict);
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 2 });

@@ -84,7 +84,10 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     await page.waitForFunction((k) => window.__rtl.lessons.find((l) => l.id === 'dp').step === k, q, { timeout: PAGE_TIMEOUT });
     verdict = await page.textContent('#predict');
     assert.match(verdict, /^Not quite\./);
-    assert.ok(verdict.includes(`You picked point ${wrong}.`), verdict);
+    // how far the pick was from the answer, in metres (the chain's own coordinates)
+    const off = Math.hypot(s.chain[2 * wrong] - s.chain[2 * e.farthest], s.chain[2 * wrong + 1] - s.chain[2 * e.farthest + 1]);
+    assert.ok(off > 0.01, `the wrong pick is a distinct point (${off} m away)`);
+    assert.ok(verdict.includes(`You picked point ${wrong}, ${off.toFixed(3)} m from point ${e.farthest}.`), verdict);
     assert.ok(verdict.includes(`point ${e.farthest} farthest from the chord ${e.first}–${e.last}, at ${e.distance.toFixed(3)} m`), verdict);
     // the figure marks the pick (a cross) and the right answer (a ring) apart, the answer with the trace's distance
     const marks = await page.evaluate(() => window.__rtl.figureOverlay());
@@ -95,10 +98,10 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     assert.equal(of('answer', 'marker').length, 1);
     assert.notEqual(of('answer', 'marker')[0].shape, 'x');
     assert.deepEqual([of('answer', 'marker')[0].x, of('answer', 'marker')[0].y], [s.chain[2 * e.farthest], s.chain[2 * e.farthest + 1]]);
-    assert.equal(of('pick', 'label')[0].text, `your pick: ${wrong}`);
+    assert.equal(of('pick', 'label')[0].text, `your pick: ${wrong}, ${off.toFixed(3)} m from point ${e.farthest}`);
     assert.equal(of('answer', 'label')[0].text, `farthest: ${e.farthest}, ${e.distance.toFixed(3)} m > ε`);
     const labels = await page.evaluate(() => window.__rtl.figureLabels());
-    assert.ok(labels.some((l) => l.text === `your pick: ${wrong}`) && labels.some((l) => l.text.startsWith(`farthest: ${e.farthest}`)), 'both drawn');
+    assert.ok(labels.some((l) => l.text === `your pick: ${wrong}, ${off.toFixed(3)} m from point ${e.farthest}`) && labels.some((l) => l.text.startsWith(`farthest: ${e.farthest}`)), 'both drawn');
     await page.screenshot({ path: join(SCREENSHOTS, 'predict-dp-wrong-1280x800.png') });
     // the next step's drawing clears them
     await page.click('#player [data-act="forward"]');
