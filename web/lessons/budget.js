@@ -108,10 +108,12 @@ export default {
           (Number.isFinite(res[i]) ? explained : unexplained).push(points[2 * i], points[2 * i + 1]);
         }
         const D = run.size;
-        // residuals enlarged so that the larger ones are a few percent of the view
+        // residuals enlarged so that a typical one (the median) shows as a stub while the large ones (the 95th
+        // percentile) stay within a few per cent of the view; most radial errors are centimetres on a scan of metres
         const sorted = Array.from(res).filter(Number.isFinite).map(Math.abs).sort((a, b) => a - b);
-        const p95 = sorted.length ? sorted[Math.floor(0.95 * (sorted.length - 1))] : 0;
-        const gain = p95 > 0 ? niceFloor((0.025 * D) / p95) : 1;
+        const at = (q) => (sorted.length ? sorted[Math.floor(q * (sorted.length - 1))] : 0);
+        const p50 = at(0.5), p95 = at(0.95);
+        const gain = p95 > 0 ? niceFloor(Math.min(p50 > 0 ? (0.008 * D) / p50 : Infinity, (0.08 * D) / p95)) : 1;
         const resXY = [];
         for (let i = 0; i < beams.n; i++) {
           if (!Number.isFinite(res[i])) continue;
@@ -199,7 +201,7 @@ export default {
           J: snap?.J, vertexCount: snap?.vertexCount, polylines: snap?.polylines, rmse: snap?.rmse, explained: snap?.explained, score: snap?.score,
           expected: snap && Array.from(snap.expected),
           curve: run.snaps.map(({ J, vertexCount, rmse, explained, score }) => ({ J, vertexCount, rmse, explained, score })),
-          lens: run.lens, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
+          lens: run.lens, gain: run.gain, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
       },
       dispose() {},
     };
