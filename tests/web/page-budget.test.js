@@ -61,6 +61,14 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
       await page.reload();
       await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
       await page.waitForTimeout(200);
+      // the figure's title (16 px a line: two on a phone, where it wraps, else one) covers no beam
+      const top = await page.evaluate((xy) => {
+        const c = document.querySelector('#canvas').getBoundingClientRect();
+        let min = Infinity;
+        for (let i = 0; i < xy.length; i += 2) if (xy[i] !== null) min = Math.min(min, window.__rtl.clientPoint(xy[i], xy[i + 1]).y - c.top);
+        return min;
+      }, s.points.map((v) => (Number.isFinite(v) ? v : null)));
+      assert.ok(top >= (w === 390 ? 2 : 1) * 16 + 5, `${w}x${h}: a beam ${top.toFixed(1)} px below the figure's top, under its title`);
       await page.screenshot({ path: join(SCREENSHOTS, `page-budget-${w}x${h}.png`), fullPage: w === 390 });
     }
     await page.setViewportSize({ width: 1280, height: 800 });

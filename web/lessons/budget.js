@@ -82,7 +82,16 @@ export default {
         const c = host.figure.canvas, wide = !(c.clientHeight > 0) || c.clientWidth / c.clientHeight >= 1.2;
         run.lensAt = wide ? { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 } : { R, x: (box.minX + box.maxX) / 2, y: box.minY - 1.2 * R };
         const L = run.lensAt;
-        host.figure.setExtent(Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R));
+        const ext = [Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R)];
+        // room above the scan for the figure's title (one line of 16 CSS px on a wide canvas, two on a phone's, times the
+        // type scale of lecture mode), so that it covers no beam
+        if (c.clientWidth > 0 && c.clientHeight > 0) {
+          const textScale = Number(getComputedStyle(c).getPropertyValue('--figure-text-scale')) || 1;
+          const titlePx = ((wide ? 1 : 2) * 16 + 8) * textScale;
+          const scale = Math.min(c.clientWidth / (ext[2] - ext[0]), (c.clientHeight - titlePx) / (ext[3] - ext[1]));
+          if (scale > 0) ext[3] += titlePx / scale;
+        }
+        host.figure.setExtent(...ext);
         // the J slider holds the budget shown (show() keeps it current), so a new scan or c keeps J, also after a
         // parameter error emptied the player
         const J = jField.read(), k = Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN;
