@@ -59,6 +59,7 @@
 #include "rtl/core/VectorND.h"
 #include "rtl/vect/scan_polylines/BudgetAllocation.h"
 #include "rtl/vect/scan_polylines/ChainPartition.h"
+#include "rtl/vect/scan_polylines/GreedyPolylines.h"
 #include "rtl/vect/scan_polylines/PointPolylines.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
@@ -133,6 +134,14 @@ namespace rtl
         //! point is off its line can only be one segment, while the polyline through its 3 points explains it exactly
         //! (default 32; 0: off).
         void setShortChainPoints(std::size_t maxBeams) { short_points_ = maxBeams; }
+        //! A third candidate family per chain (default off): the states of greedy vertex removal by the radial error
+        //! (scan_polylines/GreedyPolylines.h: from the polyline through all the chain's points, the vertex whose removal
+        //! raises the chain's hit-tested cost least goes first, as probabilistic line extraction builds its map), each
+        //! state of at most maxVertices() vertices offered with its hit-tested chain cost, beside the TLS partitions;
+        //! its vertices are measured points on their own beams, so it never breaks. Built in full before the only
+        //! allocation (so plans of every budget stay comparable) and refined only when a plan chooses it. O(n log n)
+        //! plus the recomputed segments' lengths per chain of n beams, O(n) per offered state.
+        void setGreedyCandidates(bool on) { greedy_candidates_ = on; }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
         //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
@@ -388,6 +397,33 @@ namespace rtl
             }
             if (point_candidates_ && point_window_ < 0) buildPointCandidates(c, opts, max_vertices_ - 1, 0, max_vertices_);
             else if (n <= short_points_) buildPointCandidates(c, opts, max_vertices_ - 1, 1, 0);   // unrefined here
+            if (greedy_candidates_) buildGreedyCandidates(c, opts);
+        }
+
+        //! The greedy-removal family of chain c (see setGreedyCandidates): every state of at most max_vertices_
+        //! vertices, hit-tested and offered unrefined.
+        void buildGreedyCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts)
+        {
+            const auto [cf, cl] = chains_[c];
+            greedy_.run(&px_[cf], &py_[cf], cl - cf + 1, cost_ * cost_);
+            for (std::size_t s = 0; s < greedy_.states(); ++s)
+            {
+                const std::size_t k1 = greedy_.vertexCount(s);   // vertices, falling with s
+                if (k1 > max_vertices_) continue;
+                if (k1 < 2) break;
+                greedy_.vertices(s, vertex_index_);
+                Candidate &cand = newCandidate(c);
+                Polyline &p = cand.next();
+                for (std::size_t v = 0; v < k1; ++v)
+                {
+                    const std::size_t i = cf + vertex_index_[v];
+                    p.x.push_back(px_[i]); p.y.push_back(py_[i]);
+                }
+                // Segment s explains the beams from its first vertex's up to the next vertex's (the last one both).
+                for (std::size_t v = 0; v + 1 < k1; ++v)
+                    p.segs.push_back({cf + vertex_index_[v], cf + vertex_index_[v + 1] - (v + 2 < k1 ? 1 : 0)});
+                offerCandidate(c, k1, opts, scan_polylines::kNaN);
+            }
         }
 
         //! Sum of squared radial errors of chain-local beams a..b predicted by their own TLS line (part_ loaded with the
@@ -848,6 +884,8 @@ namespace rtl
         //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
         static constexpr double kInteractionTolerance = 1e-3;
         scan_polylines::PointPolylines points_;
+        bool greedy_candidates_ = false;
+        detail::GreedyPolylines greedy_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
         std::vector<std::pair<std::size_t, double>> corners_;
