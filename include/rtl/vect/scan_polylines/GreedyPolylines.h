@@ -105,6 +105,7 @@ namespace rtl::detail
         void vertices(std::size_t s, std::vector<std::size_t> &out) const
         {
             out.clear();
+            if (count_[s] == 0) return;
             for (std::size_t i = 0; i < n_; ++i)
                 if (removed_at_[i] == kNone || removed_at_[i] >= s) out.push_back(i);
         }
