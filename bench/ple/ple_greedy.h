@@ -18,12 +18,17 @@
 #include "ple/ple_protocol.h"
 #include "rtl/vect/scan_polylines/GreedyPolylines.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
+#include "rtl/vect/scan_polylines/ReassigningRefinement.h"
 
 namespace rtl::ple
 {
     class GreedyExtractor
     {
     public:
+        //! PLE+ (ours) refined by rounds of single LM iterations with the beams re-assigned by the hit test after each
+        //! (detail::ReassigningRefinement; 0: RadialRefinement's fixed assignment, 20 iterations).
+        void setReassignRounds(int rounds) { reassign_rounds_ = rounds; }
+
         typedef std::vector<std::vector<VectorND<2, double>>> Map;
 
         //! PLE's map of `scan` within J vertices (unexplained cost c, chains split at gaps over maxGap); with `refine`,
@@ -31,7 +36,7 @@ namespace rtl::ple
         Map operator()(const Scan &scan, std::size_t J, bool refine, double c = 0.5, double maxGap = 1.0)
         {
             const std::size_t n = scan.points.size();
-            ux_.assign(n, 0); uy_.assign(n, 0); r_.assign(n, 0);
+            ux_.assign(n, 0); uy_.assign(n, 0); r_.assign(n, 0); angle_.assign(n, 0);
             std::vector<std::pair<std::size_t, std::size_t>> chains;
             for (std::size_t i = 0; i < n;)
             {
@@ -47,6 +52,7 @@ namespace rtl::ple
                 {
                     r_[i] = std::hypot(scan.points[i][0], scan.points[i][1]);
                     ux_[i] = scan.points[i][0] / r_[i]; uy_[i] = scan.points[i][1] / r_[i];
+                    angle_[i] = std::atan2(scan.points[i][1], scan.points[i][0]);
                 }
             if (greedy_.size() < chains.size()) greedy_.resize(chains.size());
             std::vector<std::size_t> step(chains.size(), 0);
@@ -89,7 +95,11 @@ namespace rtl::ple
             map = toMap(pieces);
             if (!refine || pieces.empty()) return map;
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), r_.data()};
-            for (auto &p : pieces) lm_(p.x, p.y, p.segs, arrays, c * c);
+            for (auto &p : pieces)
+            {
+                if (reassign_rounds_ > 0) rlm_(p.x, p.y, p.segs, arrays, angle_.data(), c * c, reassign_rounds_);
+                else lm_(p.x, p.y, p.segs, arrays, c * c);
+            }
             Map refined = toMap(pieces);
             return score(scan, refined).score(c) < score(scan, map).score(c) ? refined : map;
         }
@@ -119,8 +129,10 @@ namespace rtl::ple
         }
 
         std::vector<detail::GreedyPolylines> greedy_;
+        detail::ReassigningRefinement rlm_;
         scan_polylines::RadialRefinement lm_;
-        std::vector<double> ux_, uy_, r_, xs_, ys_;
+        std::vector<double> ux_, uy_, r_, angle_, xs_, ys_;
         std::vector<std::size_t> index_;
+        int reassign_rounds_ = 0;
     };
 }

@@ -63,6 +63,7 @@
 #include "rtl/vect/scan_polylines/PointPolylines.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
+#include "rtl/vect/scan_polylines/ReassigningRefinement.h"
 
 namespace rtl
 {
@@ -144,7 +145,10 @@ namespace rtl
         //! `iterations`: at most this many LM iterations when a plan of the every-budget refinement chooses one
         //! (default 1: its vertices start on measured points, near the radial optimum; on the benchmark 1 scored
         //! better than 2, 3 and 20, and costs least).
-        void setGreedyCandidates(bool on, int iterations = 1) { greedy_candidates_ = on; greedy_iterations_ = iterations; }
+        void setGreedyCandidates(bool on, int iterations = 1, bool reassign = false)
+        {
+            greedy_candidates_ = on; greedy_iterations_ = iterations; greedy_reassign_ = reassign;
+        }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
         //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
@@ -271,6 +275,7 @@ namespace rtl
             bool partition = false;             // a plain TLS partition (no forced breaks) of `ranges`
             bool stale_cost = false;            // its offered cost is an estimate, or from before a re-partition
             int iterations = 20;                // LM iterations when a plan of the every-budget refinement chooses it
+            bool reassign = false;              // refined with its beams re-assigned by the hit test (greedy family)
             std::vector<BeamRange> ranges;      // its ranges, chain-local
 
             Polyline &next()
@@ -418,6 +423,7 @@ namespace rtl
                 greedy_.vertices(s, vertex_index_);
                 Candidate &cand = newCandidate(c);
                 cand.iterations = greedy_iterations_;
+                cand.reassign = greedy_reassign_;
                 Polyline &p = cand.next();
                 for (std::size_t v = 0; v < k1; ++v)
                 {
@@ -555,6 +561,7 @@ namespace rtl
             cand.partition = false;
             cand.stale_cost = false;
             cand.iterations = 20;
+            cand.reassign = false;
             return cand;
         }
 
@@ -681,10 +688,15 @@ namespace rtl
             refined.ranges = cand.ranges;
             refined.stale_cost = false;
             refined.iterations = cand.iterations;
+            refined.reassign = cand.reassign;
             lm_.setMaxIterations(iterations);
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
             for (std::size_t p = 0; p < refined.used; ++p)
-                lm_(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+            {
+                Polyline &pl = refined.polylines[p];
+                if (cand.reassign) reassigning_(pl.x, pl.y, pl.segs, arrays, angle_.data(), cost_ * cost_, iterations, kSpanWiden);
+                else lm_(pl.x, pl.y, pl.segs, arrays, cost_ * cost_);
+            }
             const double c2 = chainCost(refined, cf, cl);
             if (c2 < cost) { cost = c2; std::swap(cand, refined); }
             return cost;
@@ -895,6 +907,8 @@ namespace rtl
         scan_polylines::PointPolylines points_;
         bool greedy_candidates_ = false;
         int greedy_iterations_ = 1;
+        bool greedy_reassign_ = false;
+        detail::ReassigningRefinement reassigning_;
         detail::GreedyPolylines greedy_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
