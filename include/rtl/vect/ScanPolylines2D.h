@@ -23,7 +23,9 @@
 //     a second family, polylines whose vertices are measured points, the optimal polygonal approximation per k
 //     (scan_polylines/PointPolylines.h), for chains of at most setShortChainPoints() beams (default 32: clutter
 //     clusters, whose points a 2-beam-per-range partition cannot all reach), optionally (setPointCandidates) for all
-//     chains, radially refined; they never break;
+//     chains, radially refined; they never break; optionally (setGreedyCandidates) a third family, the states of
+//     greedy vertex removal by the radial error from the polyline through all the chain's points
+//     (scan_polylines/GreedyPolylines.h), the candidates probabilistic line extraction builds;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
 //     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement; optionally
