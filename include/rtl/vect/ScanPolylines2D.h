@@ -417,16 +417,21 @@ namespace rtl
         {
             const auto [cf, cl] = chains_[c];
             greedy_.run(&px_[cf], &py_[cf], cl - cf + 1, cost_ * cost_);
+            bool listed = false;
             for (std::size_t s = 0; s < greedy_.states(); ++s)
             {
                 const std::size_t k1 = greedy_.vertexCount(s);   // vertices, falling with s
                 if (k1 > max_vertices_) continue;
                 if (k1 < 2) break;
-                greedy_.vertices(s, vertex_index_);
+                // the first state within the budget listed in full, each later one by its removal (O(J) each)
+                if (!listed) { greedy_.vertices(s, vertex_index_); listed = true; }
+                else
+                    vertex_index_.erase(std::find(vertex_index_.begin(), vertex_index_.end(), greedy_.removals()[s - 1].vertex));
                 Candidate &cand = newCandidate(c);
                 cand.iterations = greedy_iterations_;
                 cand.reassign = greedy_reassign_;
                 Polyline &p = cand.next();
+                p.x.reserve(k1); p.y.reserve(k1); p.segs.reserve(k1);   // one allocation at most, not a growth series
                 for (std::size_t v = 0; v < k1; ++v)
                 {
                     const std::size_t i = cf + vertex_index_[v];

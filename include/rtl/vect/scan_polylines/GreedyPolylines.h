@@ -24,13 +24,11 @@
 // O(n) memory for a chain of n points.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <queue>
-#include <tuple>
 #include <vector>
 
 #include "rtl/vect/scan_polylines/RayGeometry.h"
@@ -81,14 +79,15 @@ namespace rtl::detail
             count_.assign(1, n);
             version_.assign(n, 0);
             merged_.assign(n, 0.0);
-            heap_ = Heap();
+            heap_.clear();   // keeps its memory from call to call
             for (std::size_t i = 0; i < n; ++i) push(i);
             while (alive_ > 0)
             {
-                const auto [delta, v, stamp] = heap_.top();
-                heap_.pop();
-                if (stamp != version_[v] || removed_at_[v] != kNone) continue;   // stale entry
-                remove(v, delta);
+                std::pop_heap(heap_.begin(), heap_.end(), later);
+                const Entry e = heap_.back();
+                heap_.pop_back();
+                if (e.version != version_[e.vertex] || removed_at_[e.vertex] != kNone) continue;   // stale entry
+                remove(e.vertex, e.cost);
             }
         }
 
@@ -112,9 +111,17 @@ namespace rtl::detail
 
     private:
         static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-        // (removal cost, vertex, version): the least cost first, then the lowest vertex (a deterministic order)
-        typedef std::tuple<double, std::size_t, std::uint32_t> Entry;
-        typedef std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> Heap;
+        struct Entry
+        {
+            double cost;
+            std::size_t vertex;
+            std::uint32_t version;
+        };
+        //! Heap order: the least cost on top, then the lowest vertex (a deterministic order among equal costs).
+        static bool later(const Entry &a, const Entry &b)
+        {
+            return a.cost != b.cost ? a.cost > b.cost : a.vertex > b.vertex;
+        }
 
         //! Sum over the beams strictly between points a < b of the squared radial error of the line through them.
         double segmentCost(std::size_t a, std::size_t b) const
@@ -143,7 +150,8 @@ namespace rtl::detail
         void push(std::size_t v)
         {
             ++version_[v];
-            heap_.emplace(removalCost(v), v, version_[v]);
+            heap_.push_back({removalCost(v), v, version_[v]});
+            std::push_heap(heap_.begin(), heap_.end(), later);
         }
 
         void remove(std::size_t v, double delta)
@@ -181,6 +189,6 @@ namespace rtl::detail
         std::vector<std::size_t> prev_, next_, removed_at_, count_;
         std::vector<std::uint32_t> version_;
         std::vector<Removal> removals_;
-        Heap heap_;
+        std::vector<Entry> heap_;
     };
 }
