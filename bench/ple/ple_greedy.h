@@ -17,6 +17,7 @@
 
 #include "ple/ple_protocol.h"
 #include "rtl/vect/scan_polylines/GreedyPolylines.h"
+#include "rtl/vect/scan_polylines/BeamRangeRefinement.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
 #include "rtl/vect/scan_polylines/ReassigningRefinement.h"
 
@@ -28,6 +29,8 @@ namespace rtl::ple
         //! PLE+ (ours) refined by rounds of single LM iterations with the beams re-assigned by the hit test after each
         //! (detail::ReassigningRefinement; 0: RadialRefinement's fixed assignment, 20 iterations).
         void setReassignRounds(int rounds) { reassign_rounds_ = rounds; }
+        //! PLE+ (ours) refined with every vertex moved along its own beam (detail::BeamRangeRefinement, 20 iterations).
+        void setBeamRangeRefinement(bool on) { beam_range_ = on; }
 
         typedef std::vector<std::vector<VectorND<2, double>>> Map;
 
@@ -97,7 +100,18 @@ namespace rtl::ple
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), r_.data()};
             for (auto &p : pieces)
             {
-                if (reassign_rounds_ > 0) rlm_(p.x, p.y, p.segs, arrays, angle_.data(), c * c, reassign_rounds_);
+                if (beam_range_)
+                {
+                    rho_.clear(); vb_.clear();
+                    for (std::size_t v = 0; v < p.x.size(); ++v)
+                    {
+                        const std::size_t b = v < p.segs.size() ? p.segs[v].first : p.segs.back().second;
+                        vb_.push_back(b); rho_.push_back(std::hypot(p.x[v], p.y[v]));
+                    }
+                    blm_(rho_, vb_, arrays, c * c);
+                    for (std::size_t v = 0; v < p.x.size(); ++v) { p.x[v] = rho_[v] * ux_[vb_[v]]; p.y[v] = rho_[v] * uy_[vb_[v]]; }
+                }
+                else if (reassign_rounds_ > 0) rlm_(p.x, p.y, p.segs, arrays, angle_.data(), c * c, reassign_rounds_);
                 else lm_(p.x, p.y, p.segs, arrays, c * c);
             }
             Map refined = toMap(pieces);
@@ -134,5 +148,9 @@ namespace rtl::ple
         std::vector<double> ux_, uy_, r_, angle_, xs_, ys_;
         std::vector<std::size_t> index_;
         int reassign_rounds_ = 0;
+        bool beam_range_ = false;
+        detail::BeamRangeRefinement blm_;
+        std::vector<double> rho_;
+        std::vector<std::size_t> vb_;
     };
 }

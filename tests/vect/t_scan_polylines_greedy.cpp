@@ -245,13 +245,13 @@ TEST(ScanPolylinesGreedy, GreedyCandidatesKeepTheBudgetAndLowerTheScore)
 TEST(ScanPolylinesGreedy, ALargerBudgetNeverGivesAWorseMapWithGreedyCandidates)
 {
     // As ScanPolylines2D.ALargerBudgetNeverGivesAWorseMap, with the greedy family on: it is built in full before the
-    // only allocation, so every budget's plans stay comparable. Also without break candidates and with the greedy
-    // candidates refined by 5 re-assigning rounds.
+    // only allocation, so every budget's plans stay comparable. Also in the setting proposed as the default: no break
+    // candidates, greedy candidates refined along their beams and then one free iteration.
     for (int setting = 0; setting < 2; ++setting)
     {
         rtl::ScanPolylines2D<double> ex;
         if (setting == 0) ex.setGreedyCandidates(true);
-        else { ex.setGreedyCandidates(true, 5, true); ex.setBreakCandidates(0); }
+        else { ex.setGreedyCandidates(true, 20, rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree); ex.setBreakCandidates(0); }
         for (const char *file : {"intel.log", "csail.log"})
         {
             const auto scans = excerptScans(file);

@@ -1,6 +1,8 @@
-// Radial refinement with beams re-assigned by the hit test (scan_polylines/ReassigningRefinement.h): its cost is the
-// ray model's, it never rises, and it recovers a corner that the fixed assignment cannot.
+// Refinements that follow the hit test: beams re-assigned after each LM iteration (scan_polylines/
+// ReassigningRefinement.h) and vertices moved along their own beams (scan_polylines/BeamRangeRefinement.h). Their
+// costs are the ray model's, they never rise, and they recover what the fixed assignment cannot.
 #include "rtl/vect/scan_polylines/ReassigningRefinement.h"   // first: the header compiles on its own
+#include "rtl/vect/scan_polylines/BeamRangeRefinement.h"
 
 #include <gtest/gtest.h>
 
@@ -115,5 +117,53 @@ TEST(ScanPolylinesReassign, NeverRaisesTheCostAndKeepsTheEndsOnTheirBeams)
         // the end vertices stay on their own beams
         EXPECT_NEAR(vx.front() * c.uy[0] - vy.front() * c.ux[0], 0.0, 1e-12);
         EXPECT_NEAR(vx.back() * c.uy[last] - vy.back() * c.ux[last], 0.0, 1e-12);
+    }
+}
+
+TEST(ScanPolylinesAlongBeams, FindsTheCornerRangeOnItsBeamAndNeverRaisesTheCost)
+{
+    // Noise-free corner, the middle vertex on the corner's nearest beam but at the wrong range: moving it along that
+    // beam alone explains the two walls up to the one-beam wedge around the corner (its cost falls by > 100x), and
+    // the cost returned is the hit test's. With noise: never above the start, the hit test's cost, and the vertex
+    // directions (so the beams each segment explains) unchanged.
+    const Corner c = cornerScan(0, 1);
+    const rtl::scan_polylines::BeamArrays beams{c.ux.data(), c.uy.data(), c.r.data()};
+    const std::size_t last = c.n - 1;
+    std::size_t m = 0;
+    while (c.angle[m] < std::atan2(2.0, 1.0)) ++m;
+    std::vector<std::size_t> vb{0, m, last};
+    std::vector<double> rho{c.r[0], c.r[m] + 0.3, c.r[last]};
+    auto points = [&](const std::vector<double> &q, std::vector<double> &vx, std::vector<double> &vy) {
+        vx.clear(); vy.clear();
+        for (std::size_t j = 0; j < q.size(); ++j) { vx.push_back(q[j] * c.ux[vb[j]]); vy.push_back(q[j] * c.uy[vb[j]]); }
+    };
+    std::vector<double> vx, vy;
+    points(rho, vx, vy);
+    const double before = hitTested(c, vx, vy, 0, last);
+    rtl::detail::BeamRangeRefinement refine;
+    const double cost = refine(rho, vb, beams, 0.25);
+    points(rho, vx, vy);
+    EXPECT_NEAR(cost, hitTested(c, vx, vy, 0, last), 1e-12);
+    EXPECT_LT(cost, before / 100);
+    EXPECT_NEAR(rho[1], c.r[m], 0.05);   // the corner beam's own range, within the wedge's compromise
+
+    for (unsigned seed = 0; seed < 20; ++seed)
+    {
+        const Corner n = cornerScan(0.02, seed);
+        const rtl::scan_polylines::BeamArrays nb{n.ux.data(), n.uy.data(), n.r.data()};
+        const std::size_t nl = n.n - 1;
+        std::vector<std::size_t> idx{0, 10 + seed, 60 + seed, nl};
+        std::vector<double> q;
+        for (std::size_t i : idx) q.push_back(n.r[i]);
+        auto hit = [&](const std::vector<double> &qq) {
+            std::vector<double> x, y;
+            for (std::size_t j = 0; j < qq.size(); ++j) { x.push_back(qq[j] * n.ux[idx[j]]); y.push_back(qq[j] * n.uy[idx[j]]); }
+            return hitTested(n, x, y, 0, nl);
+        };
+        const double start = hit(q);
+        const double got = refine(q, idx, nb, 0.25);
+        EXPECT_LE(got, start) << "seed " << seed;
+        EXPECT_NEAR(got, hit(q), 1e-9 * (1 + got)) << "seed " << seed;
+        for (double v : q) EXPECT_GT(v, 0.0);
     }
 }

@@ -59,6 +59,7 @@
 #include <Eigen/Core>
 
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/scan_polylines/BeamRangeRefinement.h"
 #include "rtl/vect/scan_polylines/BudgetAllocation.h"
 #include "rtl/vect/scan_polylines/ChainPartition.h"
 #include "rtl/vect/scan_polylines/GreedyPolylines.h"
@@ -90,6 +91,14 @@ namespace rtl
             T r{}, theta{};
             Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Zero();
         };
+
+        //! How a chosen candidate of the greedy family (setGreedyCandidates) is refined: inner vertices moved freely with
+        //! each beam kept on its first segment (RadialRefinement), the same in single iterations with the beams
+        //! re-assigned by the hit test after each (scan_polylines/ReassigningRefinement.h), or every vertex moved along
+        //! its own beam (scan_polylines/BeamRangeRefinement.h: the beams each segment explains never change, so the
+        //! cost minimised is the hit-tested one).
+        //! AlongBeamsThenFree: along the beams, then one free iteration (each kept only where it lowers the cost).
+        enum class GreedyRefinement { FreeVertices = 0, Reassigning = 1, AlongBeams = 2, AlongBeamsThenFree = 3 };
 
         //! Vertices over the whole scan (>= 2; default 50). std::invalid_argument below 2.
         void setMaxVertices(std::size_t j)
@@ -147,9 +156,10 @@ namespace rtl
         //! `iterations`: at most this many LM iterations when a plan of the every-budget refinement chooses one
         //! (default 1: its vertices start on measured points, near the radial optimum; on the benchmark 1 scored
         //! better than 2, 3 and 20, and costs least).
-        void setGreedyCandidates(bool on, int iterations = 1, bool reassign = false)
+        //! `refinement`: how a chosen greedy candidate is refined (see GreedyRefinement).
+        void setGreedyCandidates(bool on, int iterations = 1, GreedyRefinement refinement = GreedyRefinement::FreeVertices)
         {
-            greedy_candidates_ = on; greedy_iterations_ = iterations; greedy_reassign_ = reassign;
+            greedy_candidates_ = on; greedy_iterations_ = iterations; greedy_refinement_ = refinement;
         }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
@@ -277,7 +287,8 @@ namespace rtl
             bool partition = false;             // a plain TLS partition (no forced breaks) of `ranges`
             bool stale_cost = false;            // its offered cost is an estimate, or from before a re-partition
             int iterations = 20;                // LM iterations when a plan of the every-budget refinement chooses it
-            bool reassign = false;              // refined with its beams re-assigned by the hit test (greedy family)
+            int refiner = 0;                    // 0: RadialRefinement; 1: re-assigning rounds; 2: along the vertices' beams;
+                                                // 3: 2, then one iteration of 0
             std::vector<BeamRange> ranges;      // its ranges, chain-local
 
             Polyline &next()
@@ -429,7 +440,7 @@ namespace rtl
                     vertex_index_.erase(std::find(vertex_index_.begin(), vertex_index_.end(), greedy_.removals()[s - 1].vertex));
                 Candidate &cand = newCandidate(c);
                 cand.iterations = greedy_iterations_;
-                cand.reassign = greedy_reassign_;
+                cand.refiner = static_cast<int>(greedy_refinement_);
                 Polyline &p = cand.next();
                 p.x.reserve(k1); p.y.reserve(k1); p.segs.reserve(k1);   // one allocation at most, not a growth series
                 for (std::size_t v = 0; v < k1; ++v)
@@ -568,7 +579,7 @@ namespace rtl
             cand.partition = false;
             cand.stale_cost = false;
             cand.iterations = 20;
-            cand.reassign = false;
+            cand.refiner = 0;
             return cand;
         }
 
@@ -686,6 +697,16 @@ namespace rtl
         //! result when its hit-tested cost is below `cost`; returns the candidate's cost.
         double refineCandidate(std::size_t c, std::size_t index, int iterations, double cost)
         {
+            const int refiner = candidates_[c][index].refiner;
+            if (refiner != 3) return refineWith(c, index, iterations, cost, refiner);
+            // along the beams first, then one free iteration from the better of the start and that
+            cost = refineWith(c, index, iterations, cost, 2);
+            return refineWith(c, index, 1, cost, 0);
+        }
+
+        //! refineCandidate with refiner `mode` (see Candidate::refiner; 0-2).
+        double refineWith(std::size_t c, std::size_t index, int iterations, double cost, int mode)
+        {
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][index];
             Candidate &refined = refine_scratch_;   // a member: its buffers are reused from call to call
@@ -695,13 +716,29 @@ namespace rtl
             refined.ranges = cand.ranges;
             refined.stale_cost = false;
             refined.iterations = cand.iterations;
-            refined.reassign = cand.reassign;
+            refined.refiner = cand.refiner;
             lm_.setMaxIterations(iterations);
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
             for (std::size_t p = 0; p < refined.used; ++p)
             {
                 Polyline &pl = refined.polylines[p];
-                if (cand.reassign) reassigning_(pl.x, pl.y, pl.segs, arrays, angle_.data(), cost_ * cost_, iterations, kSpanWiden);
+                if (mode == 1) reassigning_(pl.x, pl.y, pl.segs, arrays, angle_.data(), cost_ * cost_, iterations, kSpanWiden);
+                else if (mode == 2)
+                {
+                    // vertex v on the first beam of segment v (the last vertex: the last segment's last beam)
+                    beam_rho_.clear(); beam_index_.clear();
+                    for (std::size_t v = 0; v < pl.x.size(); ++v)
+                    {
+                        beam_index_.push_back(v < pl.segs.size() ? pl.segs[v].first : pl.segs.back().second);
+                        beam_rho_.push_back(std::hypot(pl.x[v], pl.y[v]));
+                    }
+                    along_beams_.setMaxIterations(iterations);
+                    along_beams_(beam_rho_, beam_index_, arrays, cost_ * cost_);
+                    for (std::size_t v = 0; v < pl.x.size(); ++v)
+                    {
+                        pl.x[v] = beam_rho_[v] * ux_[beam_index_[v]]; pl.y[v] = beam_rho_[v] * uy_[beam_index_[v]];
+                    }
+                }
                 else lm_(pl.x, pl.y, pl.segs, arrays, cost_ * cost_);
             }
             const double c2 = chainCost(refined, cf, cl);
@@ -914,8 +951,11 @@ namespace rtl
         scan_polylines::PointPolylines points_;
         bool greedy_candidates_ = false;
         int greedy_iterations_ = 1;
-        bool greedy_reassign_ = false;
+        GreedyRefinement greedy_refinement_ = GreedyRefinement::FreeVertices;
         detail::ReassigningRefinement reassigning_;
+        detail::BeamRangeRefinement along_beams_;
+        std::vector<double> beam_rho_;
+        std::vector<std::size_t> beam_index_;
         detail::GreedyPolylines greedy_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
