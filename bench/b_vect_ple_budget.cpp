@@ -48,7 +48,7 @@ namespace
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
-    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 1, g_reassign = 0, g_beam_lm = 0, g_partition_k = -1;
+    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 1, g_reassign = 0, g_beam_lm = 0, g_partition_k = -1, g_realloc = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
@@ -65,6 +65,7 @@ namespace
         if (g_cost > 0) ex.setUnexplainedCost(g_cost);
         if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
         if (g_short >= 0) ex.setShortChainPoints(static_cast<std::size_t>(g_short));
+        if (g_realloc >= 0) ex.setRefinedReallocation(g_realloc > 0);
         if (g_partition_k >= 0) ex.setPartitionSegments(static_cast<std::size_t>(g_partition_k));
         if (g_greedy >= 0) ex.setGreedyCandidates(g_greedy > 0, g_greedy_iterations,
                                                   g_beam_lm > 1 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree
@@ -232,6 +233,7 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--reassign=", 11) == 0) g_reassign = std::atoi(argv[i] + 11);
         else if (std::strncmp(argv[i], "--beam-lm=", 10) == 0) g_beam_lm = std::atoi(argv[i] + 10);
         else if (std::strncmp(argv[i], "--partition-k=", 14) == 0) g_partition_k = std::atoi(argv[i] + 14);
+        else if (std::strncmp(argv[i], "--realloc=", 10) == 0) g_realloc = std::atoi(argv[i] + 10);
         else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
         else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;
     }

@@ -165,6 +165,10 @@ namespace rtl
         //! greedy family on, the partitions matter for few-segment chains only: on the benchmark, a cap of 10 left every
         //! mean unchanged to 4 digits and took a third off the time (the partition DP is O(n^2 K) per chain).
         void setPartitionSegments(std::size_t k) { partition_segments_ = k; }
+        //! With the every-budget refinement: a second walk over the plans of every budget, allocated on the refined
+        //! chain costs of the candidates the first walk refined (the offered costs elsewhere), its new candidates
+        //! refined in turn (default off).
+        void setRefinedReallocation(bool on) { refined_reallocation_ = on; }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
         //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
@@ -632,37 +636,50 @@ namespace rtl
                     fallback.insert(fallback.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
                 }
             // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
-            const scan_polylines::BudgetTable table(options, max_vertices_);
-            std::vector<std::size_t> prev;
             improving_plans_.clear();   // the plans that lowered the best sum, in budget order, C entries each
             improving_sums_.clear();
             double best = std::numeric_limits<double>::infinity();
-            for (std::size_t b = 0; b <= max_vertices_; ++b)
+            // Pass 1 walks the plans of every budget on the offered costs; pass 2 (setRefinedReallocation) the plans
+            // of a table on the refined costs where pass 1 refined a candidate, the offered ones elsewhere.
+            std::vector<std::vector<scan_polylines::BudgetOption>> reoptions;
+            for (int pass = 0; pass < (refined_reallocation_ ? 2 : 1); ++pass)
             {
-                std::vector<std::size_t> plan = table.plan(b);
-                if (plan.empty() || plan == prev) continue;
-                double sum = 0;
-                for (std::size_t c = 0; c < C; ++c)
+                if (pass == 1)
                 {
-                    const std::size_t o = plan[c];
-                    if (o > 0 && std::isnan(refined_cost_[c][o]))
+                    reoptions = options;
+                    for (std::size_t c = 0; c < C; ++c)
+                        for (std::size_t o = 1; o < reoptions[c].size(); ++o)
+                            if (!std::isnan(refined_cost_[c][o])) reoptions[c][o].cost = refined_cost_[c][o];
+                }
+                const scan_polylines::BudgetTable table(pass == 0 ? options : reoptions, max_vertices_);
+                std::vector<std::size_t> prev;
+                for (std::size_t b = 0; b <= max_vertices_; ++b)
+                {
+                    std::vector<std::size_t> plan = table.plan(b);
+                    if (plan.empty() || plan == prev) continue;
+                    double sum = 0;
+                    for (std::size_t c = 0; c < C; ++c)
                     {
-                        // hit-tested before refinement where the option's cost is not (a break candidate's estimate)
-                        Candidate &cand = prepare(c, o);
-                        const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
-                        refined_cost_[c][o] = refineCandidate(c, o - 1, cand.iterations, before);
+                        const std::size_t o = plan[c];
+                        if (o > 0 && std::isnan(refined_cost_[c][o]))
+                        {
+                            // hit-tested before refinement where the option's cost is not (a break candidate's estimate)
+                            Candidate &cand = prepare(c, o);
+                            const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
+                            refined_cost_[c][o] = refineCandidate(c, o - 1, cand.iterations, before);
+                        }
+                        sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
                     }
-                    sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
+                    if (sum < best)
+                    {
+                        best = sum;
+                        improving_sums_.push_back(sum);
+                        const std::size_t at = improving_plans_.size();
+                        improving_plans_.resize(at + C);
+                        std::copy(plan.begin(), plan.end(), improving_plans_.begin() + static_cast<long>(at));
+                    }
+                    prev.swap(plan);
                 }
-                if (sum < best)
-                {
-                    best = sum;
-                    improving_sums_.push_back(sum);
-                    const std::size_t at = improving_plans_.size();
-                    improving_plans_.resize(at + C);
-                    std::copy(plan.begin(), plan.end(), improving_plans_.begin() + static_cast<long>(at));
-                }
-                prev.swap(plan);
             }
             std::vector<double> rhat = expected(fallback);
             scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
@@ -957,6 +974,7 @@ namespace rtl
         int greedy_iterations_ = 1;
         GreedyRefinement greedy_refinement_ = GreedyRefinement::FreeVertices;
         std::size_t partition_segments_ = 0;
+        bool refined_reallocation_ = false;
         detail::ReassigningRefinement reassigning_;
         detail::BeamRangeRefinement along_beams_;
         std::vector<double> beam_rho_;
