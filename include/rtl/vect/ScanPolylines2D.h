@@ -156,7 +156,7 @@ namespace rtl
         //! `iterations`: at most this many LM iterations (or rounds) when a plan of the every-budget refinement chooses
         //! one; `refinement`: how (see GreedyRefinement). With the default free-vertex LM, 1 iteration scored better on
         //! the benchmark than 2, 3 and 20 (the fixed beam assignment drifts from the hit test); AlongBeamsThenFree with
-        //! 20 scored best.
+        //! 20 scored best. (With setRefineEveryBudget(false), J's own plan is refined by the free LM as before.)
         void setGreedyCandidates(bool on, int iterations = 1, GreedyRefinement refinement = GreedyRefinement::FreeVertices)
         {
             greedy_candidates_ = on; greedy_iterations_ = iterations; greedy_refinement_ = refinement;
