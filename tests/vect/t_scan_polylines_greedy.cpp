@@ -274,6 +274,40 @@ TEST(ScanPolylinesGreedy, ProposedSettingScoresLowerThanTheDefaultOnTheExcerpts)
     EXPECT_GT(lower, 3 * higher);
 }
 
+TEST(ScanPolylinesGreedy, EveryRefinementSurvivesRepeatedPointsAndHoles)
+{
+    // Runs of points that coincide in float (60 beams 1e-9 rad apart at one range: zero-length segments, beams closer
+    // than the hit test's widening), single returns between holes, a float instantiation, every refinement of the
+    // family: every budget is kept and the score stays finite and below the all-unexplained cost.
+    constexpr double kPi = 3.14159265358979323846;
+    std::vector<rtl::Vector2f> scan;
+    for (int d = 0; d < 180; ++d)
+    {
+        const double a = d < 60 ? 0.5 + d * 1e-9 : d < 120 ? 1.0 + (d - 60) * 1e-9 : 1.2 + (d - 120) * kPi / 180;
+        const double r = d % 37 == 5 ? std::nan("") : d < 120 ? 2.0 : 2.0 + 0.3 * std::sin(0.2 * d);
+        scan.emplace_back(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)));
+    }
+    ASSERT_EQ(scan[10][0], scan[11][0]);   // the runs really coincide
+    using R = rtl::ScanPolylines2D<float>::GreedyRefinement;
+    for (R mode : {R::FreeVertices, R::Reassigning, R::AlongBeams, R::AlongBeamsThenFree})
+    {
+        rtl::ScanPolylines2D<float> ex;
+        ex.setGreedyCandidates(true, 20, mode);
+        ex.setBreakCandidates(0);
+        ex.setPartitionSegments(10);
+        ex.setRefinedReallocation(true);
+        for (std::size_t J : {2u, 3u, 5u, 10u, 50u})
+        {
+            ex.setMaxVertices(J);
+            ASSERT_TRUE(ex(scan));
+            EXPECT_LE(ex.vertexCount(), J);
+            EXPECT_TRUE(std::isfinite(ex.score())) << static_cast<int>(mode) << " J " << J;
+            EXPECT_GE(ex.score(), 0.0);
+            EXPECT_LE(ex.score(), 0.25);   // never worse than leaving every beam unexplained
+        }
+    }
+}
+
 TEST(ScanPolylinesGreedy, ALargerBudgetNeverGivesAWorseMapWithGreedyCandidates)
 {
     // As ScanPolylines2D.ALargerBudgetNeverGivesAWorseMap, with the greedy family on: it is built in full before the
