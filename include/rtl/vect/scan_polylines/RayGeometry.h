@@ -151,20 +151,7 @@ namespace rtl::scan_polylines
         }
     };
 
-    //! Expected ranges of beams (directions `angles`, radians) under polylines (each a vertex list; segment j joins
-    //! vertices j and j + 1): a segment hits a beam whose direction lies in its angular span widened by `widen`, and
-    //! gives r-hat = the distance along the beam to the segment's line when that is finite and > 0. Where several
-    //! segments hit a beam, the later one (polyline after polyline, segment after segment) counts. NaN where none hits
-    //! (and for a NaN angle). Complexity O(beams x segments).
-    template<class Polylines>
-    std::vector<double> expectedRangesOf(const std::vector<double> &angles, const Polylines &polylines, double widen)
-    {
-        std::vector<double> ux(angles.size()), uy(angles.size());
-        for (std::size_t i = 0; i < angles.size(); ++i) { ux[i] = std::cos(angles[i]); uy[i] = std::sin(angles[i]); }
-        return expectedRangesOf(angles, ux.data(), uy.data(), polylines, widen);
-    }
-
-    //! expectedRangesOf(angles, polylines, widen) given the beams' unit directions (ux[i], uy[i]) = (cos, sin) of
+    //! expectedRangesOf(angles, polylines, widen) (below) given the beams' unit directions (ux[i], uy[i]) = (cos, sin) of
     //! angles[i] (the caller's, so that they are not computed again).
     template<class Polylines>
     std::vector<double> expectedRangesOf(const std::vector<double> &angles, const double *ux, const double *uy,
@@ -186,6 +173,19 @@ namespace rtl::scan_polylines
                     }
             }
         return rhat;
+    }
+
+    //! Expected ranges of beams (directions `angles`, radians) under polylines (each a vertex list; segment j joins
+    //! vertices j and j + 1): a segment hits a beam whose direction lies in its angular span widened by `widen`, and
+    //! gives r-hat = the distance along the beam to the segment's line when that is finite and > 0. Where several
+    //! segments hit a beam, the later one (polyline after polyline, segment after segment) counts. NaN where none hits
+    //! (and for a NaN angle). Complexity O(beams x segments).
+    template<class Polylines>
+    std::vector<double> expectedRangesOf(const std::vector<double> &angles, const Polylines &polylines, double widen)
+    {
+        std::vector<double> ux(angles.size()), uy(angles.size());
+        for (std::size_t i = 0; i < angles.size(); ++i) { ux[i] = std::cos(angles[i]); uy[i] = std::sin(angles[i]); }
+        return expectedRangesOf(angles, ux.data(), uy.data(), polylines, widen);
     }
 
     //! Scores measured ranges against expected ones: returned beams are those with returned[i]; a returned beam is hit
