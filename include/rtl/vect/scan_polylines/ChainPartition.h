@@ -110,11 +110,12 @@ namespace rtl::scan_polylines
             costs_.resize(w * w);
             low_.resize(w);
             for (std::size_t j = 0; j <= n; ++j) low_[j] = j >= 1 ? j - 1 : 0;
-            best_.assign((K_ + 1) * w, kInf);
-            from_.assign((K_ + 1) * w, 0);
+            // Row k >= 1 is read only where it is written below (j >= 2k: a row-k prefix needs 2k points), so only
+            // row 0 is initialised: no fill of the whole (K + 1) x (n + 1) tables per chain.
+            best_.resize((K_ + 1) * w);
+            from_.resize((K_ + 1) * w);
             best_[0] = 0;
-            if (skip_ > 0)
-                for (std::size_t i = 1; i <= n; ++i) best_[i] = static_cast<double>(i) * skip_;
+            for (std::size_t i = 1; i <= n; ++i) best_[i] = skip_ > 0 ? static_cast<double>(i) * skip_ : kInf;
             for (std::size_t k = 1; k <= K_; ++k)
             {
                 const double *prev = &best_[(k - 1) * w];
