@@ -111,9 +111,9 @@ namespace rtl::scan_polylines
             low_.resize(w);
             for (std::size_t j = 0; j <= n; ++j) low_[j] = j >= 1 ? j - 1 : 0;
             // Row k >= 1 is read only where it is written below (j >= 2k: a row-k prefix needs 2k points), so only
-            // row 0 is initialised: no fill of the whole (K + 1) x (n + 1) tables per chain.
-            best_.resize((K_ + 1) * w);
-            from_.resize((K_ + 1) * w);
+            // row 0 is initialised: no fill of the whole (K + 1) x (n + 1) tables per chain (they only grow: resizing
+            // a shorter chain's tables back up would fill them again).
+            if (best_.size() < (K_ + 1) * w) { best_.resize((K_ + 1) * w); from_.resize((K_ + 1) * w); }   // grow only
             best_[0] = 0;
             for (std::size_t i = 1; i <= n; ++i) best_[i] = skip_ > 0 ? static_cast<double>(i) * skip_ : kInf;
             for (std::size_t k = 1; k <= K_; ++k)
