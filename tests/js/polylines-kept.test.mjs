@@ -65,3 +65,13 @@ test('extractPolylines: results are copies: later calls (which reuse the result 
   // the polylines are views on the result's own vertices
   for (const r of results) assert.ok(r.polylines.every((p) => p.buffer === r.vertices.buffer));
 });
+
+test('extractPolylines: calls above the kept limit (their own extractor) leave the heap as it was', () => {
+  const big = ring(3000);
+  const round = () => { for (const [p, o] of cases) used.extractPolylines(p, o); used.extractPolylines(big, { maxVertices: 60 }); };
+  round();  // warm-up: the kept extractor, input buffer and result block grow once
+  const heap = used.heapInUse(), mem = used.memoryBytes();
+  for (let k = 0; k < 3; k++) round();
+  assert.equal(used.heapInUse(), heap, 'malloc heap in use');
+  assert.equal(used.memoryBytes(), mem, 'wasm memory');
+});

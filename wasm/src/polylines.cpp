@@ -55,7 +55,8 @@ struct PolylinesResults {
 // Scans of up to this many beams run on the extractor kept between calls (kept.h): a fresh extractor per call
 // allocated and zero-filled its work buffers every time (the partition DP's table alone holds (n + 1)^2 doubles for
 // a chain of n beams), 1.2x the time of a repeated call in wasm, 2x natively. Above it (at most 33.6 MB of table
-// kept: 2048 beams exceed every 2D scanner's revolution the package is used with), a call gets its own extractor.
+// kept: 2048 beams exceed every 2D scanner's revolution the package is used with), a call gets its own extractor,
+// and the kept per-beam vectors (input, expected ranges) are given back after it.
 constexpr std::size_t kKeptBeams = 2048;
 
 val extractPolylines(std::uintptr_t ptr, std::size_t len, std::uintptr_t options) {
@@ -99,7 +100,12 @@ val extractPolylines(std::uintptr_t ptr, std::size_t len, std::uintptr_t options
     res.rmse = extract.rmse();
     res.explained = extract.explainedFraction();
     res.score = extract.score();
-    return val(writeResults(results(), res));
+    const double block = writeResults(results(), res);  // copies the arrays into the result block
+    if (beams.size() > kKeptBeams) {  // a one-off large scan does not pin its per-beam vectors either
+      std::vector<rtl::VectorND<2, double>>().swap(beams);
+      std::vector<double>().swap(res.expectedRanges);
+    }
+    return val(block);
   });
 }
 
