@@ -1,5 +1,5 @@
 // extractPolylines(): whole-scan polyline extraction at a vertex budget (rtl::ScanPolylines2D, wasm/src/polylines.cpp);
-// argument checks and the result's typed arrays only.
+// argument checks and the result object, from the typed arrays the call lays out by name (schema.js).
 import { num, options, toF64 } from './checks.js';
 import { defaults } from './defaults.js';
 
@@ -24,16 +24,17 @@ export function polylinesApi({ m, withInput, boundary, setComputeMs }) {
     const unexplainedCost = num(o, 'unexplainedCost', fn, d.unexplainedCost, { min: 0, exclusiveMin: true });
     if (xy.length % 2 !== 0)
       throw new RangeError(`${fn}: points has ${xy.length} numbers, not a multiple of 2 (interleaved x, y expected)`);
-    const r = withInput(fn, xy, (p, n) => m.extractPolylines(p, n,
-      call.writeOptions({ maxVertices, maxGap, unexplainedCost })));
-    setComputeMs(r.computeMs);
-    const { vertices, offsets } = r;
+    const { scalars: s, arrays: a } = call.readResults(withInput(fn, xy, (p, n) => m.extractPolylines(p, n,
+      call.writeOptions({ maxVertices, maxGap, unexplainedCost }))));
+    setComputeMs(s.computeMs);
+    const { vertices, offsets } = a;
     const polylines = [];
     for (let k = 0; k + 1 < offsets.length; k++) polylines.push(vertices.subarray(2 * offsets[k], 2 * offsets[k + 1]));
     return {
-      polylines, vertices, offsets, expectedRanges: r.expectedRanges, segments: r.segments,
-      vertexCount: r.vertexCount, returned: r.returned, explainedBeams: r.explainedBeams,
-      rmse: r.rmse, explained: r.explained, score: r.score,
+      polylines, vertices, offsets, expectedRanges: a.expectedRanges,
+      segments: { polyline: a.polyline, firstBeam: a.firstBeam, lastBeam: a.lastBeam, r: a.r, theta: a.theta, covariance: a.covariance },
+      vertexCount: s.vertexCount, returned: s.returned, explainedBeams: s.explainedBeams,
+      rmse: s.rmse, explained: s.explained, score: s.score,
     };
   }
   return { extractPolylines };

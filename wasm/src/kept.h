@@ -1,6 +1,7 @@
 // Objects kept alive between calls of the wasm bindings (and of the native twin, tests/tools/rtl_native.cpp): the
-// vectorizers, the segmenter and their point vectors hold grow-only buffers (prefix sums, DP's stacks, CAR's
-// flags), so keeping one object per type means a repeated call neither allocates nor zero-fills them. Inputs above
+// vectorizers, the segmenter, the polyline extractor and their point vectors hold grow-only buffers (prefix sums,
+// DP's stacks and tables, CAR's flags), so keeping one object per type means a repeated call neither allocates nor
+// zero-fills them. Inputs above
 // kKeptPoints points are served too, but their buffers are released after the call (releaseKeptAbove): a one-off
 // huge scan should not pin hundreds of MB of the heap for good. No emscripten here.
 #pragma once

@@ -328,6 +328,7 @@ namespace rtl
             const std::size_t n = beams.size();
             px_.assign(n, 0); py_.assign(n, 0); ux_.assign(n, 0); uy_.assign(n, 0); range_.assign(n, 0);
             angle_.assign(n, scan_polylines::kNaN); returned_.assign(n, false);
+            cos_angle_.assign(n, scan_polylines::kNaN); sin_angle_.assign(n, scan_polylines::kNaN);
             returned_count_ = 0;
             for (std::size_t i = 0; i < n; ++i)
             {
@@ -336,6 +337,7 @@ namespace rtl
                 if (!std::isfinite(r) || !(r > 0)) continue;
                 px_[i] = x; py_[i] = y; range_[i] = r; ux_[i] = x / r; uy_[i] = y / r;
                 angle_[i] = std::atan2(y, x);
+                cos_angle_[i] = std::cos(angle_[i]); sin_angle_[i] = std::sin(angle_[i]);
                 returned_[i] = true;
                 ++returned_count_;
             }
@@ -349,7 +351,7 @@ namespace rtl
             {
                 if (!returned_[i]) { ++i; continue; }
                 std::size_t j = i;
-                while (j + 1 < n && returned_[j + 1] && std::hypot(px_[j + 1] - px_[j], py_[j + 1] - py_[j]) <= max_gap_) ++j;
+                while (j + 1 < n && returned_[j + 1] && scan_polylines::withinDistance(px_[j + 1] - px_[j], py_[j + 1] - py_[j], max_gap_)) ++j;
                 chains_.push_back({i, j});
                 i = j + 1;
             }
@@ -374,6 +376,18 @@ namespace rtl
             return s;
         }
 
+        //! Whether the direction of (x, y) lies in wedge(a, b), by cross products (scan_polylines::DirectionSpan: the
+        //! same test up to rounding, without an atan2 per corner); a wedge wider than pi / 2 by wedge() itself.
+        bool inWedge(std::size_t a, std::size_t b, double x, double y) const
+        {
+            static const scan_polylines::Widening none(0.0);
+            const auto span = scan_polylines::DirectionSpan::of(ux_[a], uy_[a], ux_[b], uy_[b], none);
+            const double c2 = x * x + y * y;
+            if (span.by_angle || !(c2 > scan_polylines::kPlainSquaredMin && c2 < scan_polylines::kPlainSquaredMax))
+                return wedge(a, b).contains(std::atan2(y, x), 0);
+            return span.contains(x, y, 0.0, none);
+        }
+
         //! Crossing of lines f and g when it is well defined and within `reach` of both boundary points a and b.
         static bool corner(const scan_polylines::TlsFit &f, const scan_polylines::TlsFit &g, double ax, double ay, double bx, double by,
                            double reach, double &x, double &y)
@@ -382,7 +396,7 @@ namespace rtl
             if (std::abs(det) < 1e-6) return false;
             x = (f.d * g.ny - g.d * f.ny) / det;
             y = (f.nx * g.d - g.nx * f.d) / det;
-            return std::hypot(x - ax, y - ay) <= reach && std::hypot(x - bx, y - by) <= reach;
+            return scan_polylines::withinDistance(x - ax, y - ay, reach) && scan_polylines::withinDistance(x - bx, y - by, reach);
         }
 
         void buildCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts)
@@ -818,12 +832,12 @@ namespace rtl
                     break;
                 }
                 const std::size_t a = cf + ranges[s].second, b = cf + ranges[s + 1].first;
-                const double reach = cost_ + std::hypot(px_[b] - px_[a], py_[b] - py_[a]);
+                const double reach = cost_ + scan_polylines::distance(px_[b] - px_[a], py_[b] - py_[a]);
                 // A corner stays in the wedge of the boundary beams and their outer neighbours (within the chain):
                 // farther round, it would fold its segments over other beams, or hide beams of other chains.
                 const std::size_t wa = a > cf ? a - 1 : a, wb = b < cl ? b + 1 : b;
                 if (!forced_[s] && corner(fits[s], fits[s + 1], px_[a], py_[a], px_[b], py_[b], reach, x, y)
-                    && wedge(wa, wb).contains(std::atan2(y, x), 0))
+                    && inWedge(wa, wb, x, y))
                 {
                     if (corners) corners->push_back({s, breakGain(fits[s], fits[s + 1], a, b, cf, cl, x, y)});
                     cur->x.push_back(x); cur->y.push_back(y); ++vertices;
@@ -860,15 +874,16 @@ namespace rtl
         double chainCost(const Candidate &cand, std::size_t cf, std::size_t cl)
         {
             local_.assign(cl - cf + 1, scan_polylines::kNaN);
+            static const scan_polylines::Widening widening(kSpanWiden);
             for (std::size_t q = 0; q < cand.used; ++q)
             {
                 const Polyline &p = cand.polylines[q];
                 for (std::size_t s = 0; s < p.segs.size(); ++s)
                 {
                     const double ax = p.x[s], ay = p.y[s], bx = p.x[s + 1], by = p.y[s + 1];
-                    const auto span = scan_polylines::AngularSpan::of(ax, ay, bx, by);
+                    const auto span = scan_polylines::DirectionSpan::of(ax, ay, bx, by, widening);
                     auto test = [&](std::size_t i) {
-                        if (!span.contains(angle_[i], kSpanWiden)) return false;
+                        if (!span.contains(ux_[i], uy_[i], angle_[i], widening)) return false;
                         const double t = scan_polylines::rangeAlongRay(ux_[i], uy_[i], ax, ay, bx, by);
                         if (!std::isnan(t)) local_[i - cf] = t;
                         return true;
@@ -892,7 +907,7 @@ namespace rtl
             std::vector<std::vector<Eigen::Vector2d>> verts(map.size());
             for (std::size_t p = 0; p < map.size(); ++p)
                 for (std::size_t v = 0; v < map[p].x.size(); ++v) verts[p].emplace_back(map[p].x[v], map[p].y[v]);
-            return scan_polylines::expectedRangesOf(angle_, verts, kSpanWiden);
+            return scan_polylines::expectedRangesOf(angle_, cos_angle_.data(), sin_angle_.data(), verts, kSpanWiden);
         }
 
         void publish(const std::vector<Polyline> &map, const std::vector<double> &rhat, const scan_polylines::RayScore &score)
@@ -985,6 +1000,7 @@ namespace rtl
         std::vector<std::pair<std::size_t, double>> corners_;
 
         std::vector<double> px_, py_, ux_, uy_, range_, angle_, local_, weight_;
+        std::vector<double> cos_angle_, sin_angle_;   // of angle_, for the hit test's rays (NaN without a return)
         std::vector<bool> returned_;
         std::size_t returned_count_ = 0;
         std::vector<BeamRange> chains_;
