@@ -4,6 +4,15 @@
 // vertices freely (two each), so a polyline of k segments has 2k parameters. A beam's error depends on the two
 // vertices of its segment only, so the normal equations are banded (half bandwidth 3) and one iteration costs
 // O(beams + k). Only steps that lower the cost are taken, so the result is never worse than the start.
+//
+// Hit-consistent refinement (setWedges): with a fixed assignment, an inner vertex may drift past a beam, and the hit
+// test then predicts that beam by the other segment, so the cost the LM lowers is not the one the scan is scored by
+// (more iterations can raise the hit-tested error). With wedges on, every inner vertex whose two segments meet between
+// beams b and b + 1 is kept in the wedge between beam b (turned by kWedgeMargin towards b + 1) and beam b + 1: a
+// trial step that leaves it is projected back onto the wedge's nearer edge. Then the hit test (spans widened by less
+// than kWedgeMargin) assigns every beam as the refinement does and the refined cost is the polyline's hit-tested one.
+// refineConsistent adds boundary shifts: a vertex resting on its wedge's edge hands that edge's beam to the other
+// segment and the polyline is refined again, kept when its cost falls (a local search over the assignment).
 #pragma once
 
 #include <algorithm>
@@ -35,6 +44,98 @@ namespace rtl::scan_polylines
         double operator()(std::vector<double> &vx, std::vector<double> &vy, const std::vector<std::pair<std::size_t, std::size_t>> &segs,
                           const BeamArrays &beams, double invalid_cost)
         {
+            return refine(vx, vy, segs, beams, invalid_cost);
+        }
+
+        //! Keeps every inner vertex in the wedge of its boundary beams (see the file comment; default off). Needs beams
+        //! more than 2 kWedgeMargin apart at the boundary; a vertex whose boundary beams are closer stays free.
+        void setWedges(bool on) { wedges_ = on; }
+
+        //! The refinement with wedges, then up to `rounds` passes of boundary shifts (see the file comment). `segs` is
+        //! updated to the final assignment (every segment keeps at least one beam; the end beams do not change).
+        //! Returns the final cost, which equals the polyline's hit-tested cost on its beams and is never above the cost
+        //! of the start with its inner vertices projected into their wedges (the start itself where they lie inside,
+        //! e.g. vertices on measured points). Each pass costs one refinement per vertex on a wedge edge.
+        double refineConsistent(std::vector<double> &vx, std::vector<double> &vy, std::vector<std::pair<std::size_t, std::size_t>> &segs,
+                                const BeamArrays &beams, double invalid_cost, int rounds)
+        {
+            const bool was = wedges_;
+            wedges_ = true;
+            double best = refine(vx, vy, segs, beams, invalid_cost);
+            const std::size_t k = segs.size();
+            for (int round = 0; round < rounds && k >= 2 && !std::isnan(best); ++round)
+            {
+                bool shifted = false;
+                for (std::size_t v = 1; v < k; ++v)
+                {
+                    const int side = wedgeEdge(vx[v], vy[v], segs[v - 1].second, segs[v].first, beams);
+                    if (side == 0) continue;
+                    trial_segs_ = segs;
+                    if (side < 0)   // on beam b's edge: beam b goes to the later segment
+                    {
+                        if (segs[v - 1].second <= segs[v - 1].first) continue;
+                        --trial_segs_[v - 1].second; --trial_segs_[v].first;
+                    }
+                    else            // on beam b + 1's edge: it goes to the earlier segment
+                    {
+                        if (segs[v].second <= segs[v].first) continue;
+                        ++trial_segs_[v - 1].second; ++trial_segs_[v].first;
+                    }
+                    trial_x_ = vx; trial_y_ = vy;
+                    const double c = refine(trial_x_, trial_y_, trial_segs_, beams, invalid_cost);
+                    if (c < best - 1e-12 * best)
+                    {
+                        best = c;
+                        vx.swap(trial_x_); vy.swap(trial_y_); segs.swap(trial_segs_);
+                        shifted = true;
+                    }
+                }
+                if (!shifted) break;
+            }
+            wedges_ = was;
+            return best;
+        }
+
+        //! The angle (radians) by which a wedge's lower edge is turned from its beam: larger than the hit test's span
+        //! widening (1e-3 rad in PLE's metric), so that a vertex on that edge leaves the beam to its own segment.
+        static constexpr double kWedgeMargin = 1.5e-3;
+
+    private:
+        //! -1 when (x, y) lies on the lower edge of the wedge between beams b and a = b + 1 (beam b turned by
+        //! kWedgeMargin), +1 on the upper edge (beam a), 0 inside or when there is no wedge.
+        int wedgeEdge(double x, double y, std::size_t b, std::size_t a, const BeamArrays &beams) const
+        {
+            Wedge w;
+            if (a != b + 1 || !wedgeOf(b, a, beams, w)) return 0;
+            const double norm = std::hypot(x, y);
+            if (!(norm > 0)) return 0;
+            const double tol = 1e-9 * norm;
+            if (w.sign * (w.lx * y - w.ly * x) <= tol) return -1;
+            if (w.sign * (x * w.uy - y * w.ux) <= tol) return +1;
+            return 0;
+        }
+
+        struct Wedge
+        {
+            double lx = 0, ly = 0, ux = 0, uy = 0, sign = 0;
+        };
+
+        //! The wedge of the corner between beams b and a: false when they are not more than 2 kWedgeMargin apart.
+        static bool wedgeOf(std::size_t b, std::size_t a, const BeamArrays &beams, Wedge &w)
+        {
+            const double bx = beams.ux[b], by = beams.uy[b], ax = beams.ux[a], ay = beams.uy[a];
+            const double cross = bx * ay - by * ax, dot = bx * ax + by * ay;
+            if (!(std::abs(std::atan2(cross, dot)) > 2 * kWedgeMargin)) return false;
+            w.sign = cross >= 0 ? 1.0 : -1.0;
+            const double th = w.sign * kWedgeMargin, c = std::cos(th), s = std::sin(th);
+            w.lx = bx * c - by * s; w.ly = bx * s + by * c;
+            w.ux = ax; w.uy = ay;
+            return true;
+        }
+
+        double refine(std::vector<double> &vx, std::vector<double> &vy, const std::vector<std::pair<std::size_t, std::size_t>> &segs,
+                      const BeamArrays &beams, double invalid_cost)
+        {
             const std::size_t k = segs.size();
             if (k == 0 || vx.size() != k + 1) return kNaN;
             const std::size_t P = 2 * k;
@@ -47,6 +148,23 @@ namespace rtl::scan_polylines
             for (std::size_t v = 1; v < k; ++v) { p[2 * v - 1] = vx[v]; p[2 * v] = vy[v]; }
             p[P - 1] = vx[k] * ulx + vy[k] * uly;
 
+            // the wedge of every inner vertex (with setWedges), and the projection of a trial's inner vertices into them
+            wedge_.assign(k + 1, Wedge{});
+            if (wedges_)
+                for (std::size_t v = 1; v < k; ++v)
+                    if (segs[v].first == segs[v - 1].second + 1) wedgeOf(segs[v - 1].second, segs[v].first, beams, wedge_[v]);
+            auto project = [&](std::vector<double> &q) {
+                if (!wedges_) return;
+                for (std::size_t v = 1; v < k; ++v)
+                {
+                    const Wedge &w = wedge_[v];
+                    if (w.sign == 0) continue;
+                    double &x = q[2 * v - 1], &y = q[2 * v];
+                    if (w.sign * (w.lx * y - w.ly * x) < 0) { const double t = std::max(0.0, x * w.lx + y * w.ly); x = t * w.lx; y = t * w.ly; }
+                    else if (w.sign * (x * w.uy - y * w.ux) < 0) { const double t = std::max(0.0, x * w.ux + y * w.uy); x = t * w.ux; y = t * w.uy; }
+                }
+            };
+            project(p);
             auto vertex = [&](const std::vector<double> &q, std::size_t v, double &x, double &y) {
                 if (v == 0) { x = q[0] * ufx; y = q[0] * ufy; }
                 else if (v == k) { x = q[P - 1] * ulx; y = q[P - 1] * uly; }
@@ -110,6 +228,7 @@ namespace rtl::scan_polylines
                     if (solveDamped(P, lambda))
                     {
                         for (std::size_t i = 0; i < P; ++i) trial[i] = p[i] + step_[i];
+                        project(trial);
                         const double c = cost(trial);
                         if (c < current)
                         {
@@ -170,6 +289,9 @@ namespace rtl::scan_polylines
         }
 
         int max_iter_ = 20;
-        std::vector<double> band_, chol_, grad_, step_, p_, trial_;
+        bool wedges_ = false;
+        std::vector<Wedge> wedge_;
+        std::vector<double> band_, chol_, grad_, step_, p_, trial_, trial_x_, trial_y_;
+        std::vector<std::pair<std::size_t, std::size_t>> trial_segs_;
     };
 }
