@@ -12,7 +12,8 @@
 // trial step that leaves it is projected back onto the wedge's nearer edge. Then the hit test (spans widened by less
 // than kWedgeMargin) assigns every beam as the refinement does and the refined cost is the polyline's hit-tested one.
 // refineConsistent adds boundary shifts: a vertex resting on its wedge's edge hands that edge's beam to the other
-// segment and the polyline is refined again, kept when its cost falls (a local search over the assignment).
+// segment, the vertex alone is refined in its new wedge and the shift kept when its two segments' cost falls; after a
+// pass with kept shifts the whole polyline is refined again (a local search over the assignment).
 #pragma once
 
 #include <algorithm>
@@ -55,7 +56,8 @@ namespace rtl::scan_polylines
         //! updated to the final assignment (every segment keeps at least one beam; the end beams do not change).
         //! Returns the final cost, which equals the polyline's hit-tested cost on its beams and is never above the cost
         //! of the start with its inner vertices projected into their wedges (the start itself where they lie inside,
-        //! e.g. vertices on measured points). Each pass costs one refinement per vertex on a wedge edge.
+        //! e.g. vertices on measured points). Each pass costs a refinement of one vertex (its two segments' beams) per
+        //! vertex on a wedge edge, and one refinement of the whole polyline if a shift was kept.
         double refineConsistent(std::vector<double> &vx, std::vector<double> &vy, std::vector<std::pair<std::size_t, std::size_t>> &segs,
                                 const BeamArrays &beams, double invalid_cost, int rounds)
         {
@@ -65,32 +67,35 @@ namespace rtl::scan_polylines
             const std::size_t k = segs.size();
             for (int round = 0; round < rounds && k >= 2 && !std::isnan(best); ++round)
             {
+                // Each shift is first tried with its vertex alone moving (its neighbours fixed: two segments' beams),
+                // kept when that lowers the two segments' cost; then the whole polyline is refined again.
                 bool shifted = false;
                 for (std::size_t v = 1; v < k; ++v)
                 {
                     const int side = wedgeEdge(vx[v], vy[v], segs[v - 1].second, segs[v].first, beams);
                     if (side == 0) continue;
-                    trial_segs_ = segs;
+                    std::pair<std::size_t, std::size_t> left = segs[v - 1], right = segs[v];
                     if (side < 0)   // on beam b's edge: beam b goes to the later segment
                     {
-                        if (segs[v - 1].second <= segs[v - 1].first) continue;
-                        --trial_segs_[v - 1].second; --trial_segs_[v].first;
+                        if (left.second <= left.first) continue;
+                        --left.second; --right.first;
                     }
                     else            // on beam b + 1's edge: it goes to the earlier segment
                     {
-                        if (segs[v].second <= segs[v].first) continue;
-                        ++trial_segs_[v - 1].second; ++trial_segs_[v].first;
+                        if (right.second <= right.first) continue;
+                        ++left.second; ++right.first;
                     }
-                    trial_x_ = vx; trial_y_ = vy;
-                    const double c = refine(trial_x_, trial_y_, trial_segs_, beams, invalid_cost);
-                    if (c < best - 1e-12 * best)
+                    const double before = pairCost(vx[v - 1], vy[v - 1], vx[v], vy[v], vx[v + 1], vy[v + 1], segs[v - 1], segs[v], beams, invalid_cost);
+                    double x = vx[v], y = vy[v];
+                    const double after = refineVertex(vx[v - 1], vy[v - 1], x, y, vx[v + 1], vy[v + 1], left, right, beams, invalid_cost);
+                    if (after < before - 1e-12 * before)
                     {
-                        best = c;
-                        vx.swap(trial_x_); vy.swap(trial_y_); segs.swap(trial_segs_);
+                        vx[v] = x; vy[v] = y; segs[v - 1] = left; segs[v] = right;
                         shifted = true;
                     }
                 }
                 if (!shifted) break;
+                best = refine(vx, vy, segs, beams, invalid_cost);
             }
             wedges_ = was;
             return best;
@@ -101,6 +106,79 @@ namespace rtl::scan_polylines
         static constexpr double kWedgeMargin = 1.5e-3;
 
     private:
+        //! Squared radial errors of the beams of segments (a, v) (beams `left`) and (v, b) (beams `right`).
+        static double pairCost(double ax, double ay, double vx, double vy, double bx, double by, std::pair<std::size_t, std::size_t> left,
+                               std::pair<std::size_t, std::size_t> right, const BeamArrays &beams, double invalid_cost)
+        {
+            double c = 0;
+            for (std::size_t i = left.first; i <= left.second; ++i)
+            {
+                const double t = rangeAlongRay(beams.ux[i], beams.uy[i], ax, ay, vx, vy), e = beams.r[i] - t;
+                c += std::isnan(t) ? invalid_cost : e * e;
+            }
+            for (std::size_t i = right.first; i <= right.second; ++i)
+            {
+                const double t = rangeAlongRay(beams.ux[i], beams.uy[i], vx, vy, bx, by), e = beams.r[i] - t;
+                c += std::isnan(t) ? invalid_cost : e * e;
+            }
+            return c;
+        }
+
+        //! LM on one inner vertex (x, y) between fixed neighbours a and b, its segments explaining beams `left` and
+        //! `right`, kept in the wedge between left.second and right.first. Returns the two segments' final cost.
+        static double refineVertex(double ax, double ay, double &x, double &y, double bx, double by, std::pair<std::size_t, std::size_t> left,
+                                   std::pair<std::size_t, std::size_t> right, const BeamArrays &beams, double invalid_cost)
+        {
+            Wedge w;
+            const bool wedged = wedgeOf(left.second, right.first, beams, w);
+            auto project = [&](double &px, double &py) {
+                if (!wedged) return;
+                if (w.sign * (w.lx * py - w.ly * px) < 0) { const double t = std::max(0.0, px * w.lx + py * w.ly); px = t * w.lx; py = t * w.ly; }
+                else if (w.sign * (px * w.uy - py * w.ux) < 0) { const double t = std::max(0.0, px * w.ux + py * w.uy); px = t * w.ux; py = t * w.uy; }
+            };
+            project(x, y);
+            double current = pairCost(ax, ay, x, y, bx, by, left, right, beams, invalid_cost), lambda = 1e-3;
+            for (int it = 0; it < 10; ++it)
+            {
+                double h00 = 0, h01 = 0, h11 = 0, g0 = 0, g1 = 0;
+                auto add = [&](std::size_t i, double sx, double sy, double ex, double ey, bool vertexIsEnd) {
+                    // segment from s to e; the vertex is e (vertexIsEnd) or s
+                    const double ux = beams.ux[i], uy = beams.uy[i];
+                    const double N = ex * sy - ey * sx, D = (ex - sx) * uy - (ey - sy) * ux, t = N / D;
+                    if (!(std::isfinite(t) && t > 0)) return;
+                    double jx, jy;
+                    if (vertexIsEnd) { jx = (sy - t * uy) / D; jy = (-sx + t * ux) / D; }
+                    else { jx = (-ey + t * uy) / D; jy = (ex - t * ux) / D; }
+                    const double e = beams.r[i] - t;
+                    h00 += jx * jx; h01 += jx * jy; h11 += jy * jy; g0 += jx * e; g1 += jy * e;
+                };
+                for (std::size_t i = left.first; i <= left.second; ++i) add(i, ax, ay, x, y, true);
+                for (std::size_t i = right.first; i <= right.second; ++i) add(i, x, y, bx, by, false);
+                bool improved = false;
+                while (lambda < 1e10)
+                {
+                    const double a00 = h00 + lambda * std::max(h00, 1e-12), a11 = h11 + lambda * std::max(h11, 1e-12);
+                    const double det = a00 * a11 - h01 * h01;
+                    if (det > 0)
+                    {
+                        double tx = x + (a11 * g0 - h01 * g1) / det, ty = y + (a00 * g1 - h01 * g0) / det;
+                        project(tx, ty);
+                        const double c = pairCost(ax, ay, tx, ty, bx, by, left, right, beams, invalid_cost);
+                        if (c < current)
+                        {
+                            improved = current - c > 1e-12 * (c + 1e-30);
+                            x = tx; y = ty; current = c;
+                            lambda = std::max(lambda / 3, 1e-9);
+                            break;
+                        }
+                    }
+                    lambda *= 4;
+                }
+                if (!improved) break;
+            }
+            return current;
+        }
+
         //! -1 when (x, y) lies on the lower edge of the wedge between beams b and a = b + 1 (beam b turned by
         //! kWedgeMargin), +1 on the upper edge (beam a), 0 inside or when there is no wedge.
         int wedgeEdge(double x, double y, std::size_t b, std::size_t a, const BeamArrays &beams) const
@@ -291,7 +369,6 @@ namespace rtl::scan_polylines
         int max_iter_ = 20;
         bool wedges_ = false;
         std::vector<Wedge> wedge_;
-        std::vector<double> band_, chol_, grad_, step_, p_, trial_, trial_x_, trial_y_;
-        std::vector<std::pair<std::size_t, std::size_t>> trial_segs_;
+        std::vector<double> band_, chol_, grad_, step_, p_, trial_;
     };
 }
