@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "ple/ple_greedy.h"
 #include "ple/ple_protocol.h"
 #include "rtl/Segmentation.h"
 #include "rtl/Vectorization.h"
@@ -47,7 +48,7 @@ namespace
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
-    int g_radial = -1, g_short = -1;
+    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 1, g_reassign = 0, g_beam_lm = 0, g_partition_k = -1, g_realloc = -1;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
@@ -64,6 +65,13 @@ namespace
         if (g_cost > 0) ex.setUnexplainedCost(g_cost);
         if (g_radial >= 0) ex.setRadialRepartition(static_cast<std::size_t>(g_radial));
         if (g_short >= 0) ex.setShortChainPoints(static_cast<std::size_t>(g_short));
+        if (g_realloc >= 0) ex.setRefinedReallocation(g_realloc > 0);
+        if (g_partition_k >= 0) ex.setPartitionSegments(static_cast<std::size_t>(g_partition_k));
+        if (g_greedy >= 0) ex.setGreedyCandidates(g_greedy > 0, g_greedy_iterations,
+                                                  g_beam_lm > 1 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree
+                                                  : g_beam_lm > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeams
+                                                  : g_reassign > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Reassigning
+                                                                   : rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices);
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -158,6 +166,40 @@ namespace
         return row;
     }
 
+    //! PLE replicated (rtl::ple::GreedyExtractor): its greedy removal, and with `refine` our LM on its map (PLE+ ours).
+    Row evaluateGreedy(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps)
+    {
+        rtl::ple::GreedyExtractor ex;
+        ex.setReassignRounds(g_reassign);
+        ex.setBeamRangeRefinement(g_beam_lm > 0);
+        Row row;
+        std::vector<double> times;
+        for (const auto &scan : scans)
+        {
+            double best = 1e300;
+            rtl::ple::GreedyExtractor::Map map;
+            for (int r = 0; r < reps; ++r)
+            {
+                const double t0 = threadMicroseconds();
+                map = ex(scan, J, refine);
+                best = std::min(best, threadMicroseconds() - t0);
+            }
+            times.push_back(best);
+            std::size_t v = 0;
+            for (const auto &p : map) v += p.size();
+            row.max_vertices = std::max(row.max_vertices, v);
+            const rtl::ple::Metric m = rtl::ple::score(scan, map);
+            if (m.hit == 0) continue;
+            ++row.scored;
+            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+        }
+        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
+        std::sort(times.begin(), times.end());
+        row.median_us = times.empty() ? 0 : times[times.size() / 2];
+        row.max_us = times.empty() ? 0 : times.back();
+        return row;
+    }
+
     double plePlusScore(const Published &p) { return p.f * p.rmse * p.rmse + (1 - p.f) * 0.25; }
 }
 
@@ -165,7 +207,7 @@ int main(int argc, char **argv)
 {
     bool smoke = false, frontier = false;
     int reps = 5;
-    std::string dir, only_log, methods = "0123";   // --log=NAME and --J=N restrict the run; --methods= the rows (0 baseline, 1 DP, 2 DP+LM, 3 DP+LM all)
+    std::string dir, only_log, methods = "0123";   // --log=NAME and --J=N restrict the run; --methods= the rows (0 baseline, 1 DP, 2 DP+LM, 3 DP+LM all, 4 PLE (ours), 5 PLE+ (ours))
     std::size_t only_j = 0;
     std::string dump;   // --dump=DIR: write each scan's beams to DIR/<log>_<line>.f64 (interleaved x, y; NaN: no return) and stop
     if (const char *e = std::getenv("RTL_FULL_DATA_DIR")) dir = e;
@@ -186,6 +228,12 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--log=", 6) == 0) only_log = argv[i] + 6;
         else if (std::strncmp(argv[i], "--dump=", 7) == 0) dump = argv[i] + 7;
         else if (std::strncmp(argv[i], "--short=", 8) == 0) g_short = std::atoi(argv[i] + 8);
+        else if (std::strncmp(argv[i], "--greedy=", 9) == 0) g_greedy = std::atoi(argv[i] + 9);
+        else if (std::strncmp(argv[i], "--greedy-lm=", 12) == 0) g_greedy_iterations = std::atoi(argv[i] + 12);
+        else if (std::strncmp(argv[i], "--reassign=", 11) == 0) g_reassign = std::atoi(argv[i] + 11);
+        else if (std::strncmp(argv[i], "--beam-lm=", 10) == 0) g_beam_lm = std::atoi(argv[i] + 10);
+        else if (std::strncmp(argv[i], "--partition-k=", 14) == 0) g_partition_k = std::atoi(argv[i] + 14);
+        else if (std::strncmp(argv[i], "--realloc=", 10) == 0) g_realloc = std::atoi(argv[i] + 10);
         else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
         else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;
     }
@@ -279,13 +327,15 @@ int main(int argc, char **argv)
             continue;
         }
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
-            for (int method = 0; method < 4; ++method)
+            for (int method = 0; method < 6; ++method)
             {
                 if ((only_j && J != only_j) || methods.find(static_cast<char>('0' + method)) == std::string::npos) continue;
-                const Row r = method == 0 ? evaluateBaseline(scans, J) : evaluate(scans, J, method >= 2, reps, method == 3);
+                const Row r = method == 0 ? evaluateBaseline(scans, J)
+                              : method >= 4 ? evaluateGreedy(scans, J, method == 5, reps)
+                                            : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
                 std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,
-                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
+                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : method == 4 ? "PLE ours" : method == 5 ? "PLE+ ours" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
                             c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]));
             }
     }

@@ -231,11 +231,20 @@ export class Figure {
     const { ctx } = this, v = this.view, d = v.m, size = (it.bold ? 13 : 12) * v.t;
     ctx.font = `${it.bold ? '600 ' : ''}${size}px system-ui, sans-serif`;
     const w = ctx.measureText(it.text).width, line = 1.2 * size;
-    const x = v.X(it.x) + (it.offset?.[0] ?? 6) * d, y0 = v.Y(it.y) + (it.offset?.[1] ?? -6) * d;
+    const dx = (it.offset?.[0] ?? 6) * d, y0 = v.Y(it.y) + (it.offset?.[1] ?? -6) * d;
+    // a label that would run off the right edge goes to the left of its point instead (as far as the left edge allows)
+    let x = v.X(it.x) + dx;
+    if (x + w > v.W) x = Math.max(0, Math.min(v.X(it.x) - Math.abs(dx) - w, v.W - w));
     const box = (y) => ({ x0: x, x1: x + w, y0: y - 0.85 * size, y1: y + 0.25 * size });
-    // names on one line stay a clear gap apart, so that two never read as one ("map x robot = sensor")
+    // names on one line stay a clear gap apart, so that two never read as one ("map x robot = sensor"); so do names
+    // side by side half a line apart (the end of one beside the start of the other reads as one name too); names
+    // stacked in one column need only not overlap
     const gap = 1.5 * size;
-    const free = (b) => this.labels.every((o) => b.x1 + gap <= o.x0 || b.x0 >= o.x1 + gap || b.y1 <= o.y0 || b.y0 >= o.y1);
+    const free = (b) => this.labels.every((o) => {
+      if (b.x1 + gap <= o.x0 || b.x0 >= o.x1 + gap) return true;
+      const side = b.x1 <= o.x0 || b.x0 >= o.x1, clear = side ? 0.5 * size : 0;
+      return b.y1 + clear <= o.y0 || b.y0 >= o.y1 + clear;
+    });
     let y = y0;
     for (const k of [0, 1, -1, 2, -2, 3, -3]) if (free(box(y0 + k * line))) { y = y0 + k * line; break; }
     this.labels.push({ ...box(y), text: it.text });

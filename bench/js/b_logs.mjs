@@ -28,9 +28,9 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import init from 'rtl-wasm';
 import { openLog } from 'rtl-wasm/logs';
-import { McapIndexedReader, McapWriter } from '@mcap/core';
+import { McapIndexedReader } from '@mcap/core';
 import { loadDecompressHandlers } from '@mcap/support';
-import { COMPRESSIONS, cdr } from '../../tests/js/ros-fixtures.mjs';
+import { laserScanPayloads, writeLaserLog } from './laser_log.mjs';
 
 const arg = (name, def) => Number(process.argv.find((a) => a.startsWith(`--${name}=`))?.split('=')[1] ?? def);
 const N = arg('scans', 10000), BIG_MB = arg('big-mb', 1024), ROUNDS = arg('rounds', 3), LOGS = arg('logs', 2);
@@ -42,31 +42,8 @@ const dir = mkdtempSync(join(tmpdir(), 'rtl-bench-logs-'));
 process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
 
 // The CDR payloads of the 30 source scans (360 beams each), written once and repeated.
-const payloads = csail.map((s) => {
-  const n = 360, step = Math.PI / 360;
-  return cdr('sensor_msgs/msg/LaserScan', {
-    header: { stamp: { sec: 0, nanosec: 0 }, frame_id: 'laser' },
-    angle_min: -Math.PI / 2, angle_max: -Math.PI / 2 + (n - 1) * step, angle_increment: step, time_increment: 0, scan_time: 0,
-    range_min: 0, range_max: s.maxRange * (1 - 1e-6), ranges: Float32Array.from(s.ranges.subarray(0, n)), intensities: new Float32Array(0),
-  });
-});
-
-async function writeLog(path, count, compression) {
-  const fh = await open(path, 'w');
-  let pos = 0n;
-  const w = new McapWriter({ writable: { position: () => pos, write: async (b) => { await fh.write(b); pos += BigInt(b.byteLength); } },
-                             chunkSize: 1 << 20, compressChunk: COMPRESSIONS[compression] });
-  await w.start({ profile: 'ros2', library: 'rtl-wasm bench' });
-  const { LASER_SCAN_DEF } = await import('../../tests/js/ros-fixtures.mjs');
-  const schemaId = await w.registerSchema({ name: 'sensor_msgs/msg/LaserScan', encoding: 'ros2msg', data: new TextEncoder().encode(LASER_SCAN_DEF) });
-  const channelId = await w.registerChannel({ topic: '/scan', schemaId, messageEncoding: 'cdr', metadata: new Map() });
-  for (let i = 0; i < count; i++) {
-    const t = BigInt(i) * 25000000n + 1000000000n;   // 40 Hz
-    await w.addMessage({ channelId, sequence: i, logTime: t, publishTime: t, data: payloads[i % payloads.length] });
-  }
-  await w.end();
-  await fh.close();
-}
+const payloads = laserScanPayloads(csail);
+const writeLog = (path, count, compression) => writeLaserLog(path, payloads, count, compression);
 
 async function raw(path) {
   const fh = await open(path, 'r');

@@ -11,12 +11,10 @@
 // builds (every array of segmentAndVectorize's result, and the read scans' points and angles). The builds alternate
 // every 100 scans within a round (see paired()).
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { open } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { McapWriter } from '@mcap/core';
-import { cdr, LASER_SCAN_DEF } from '../../tests/js/ros-fixtures.mjs';
+import { laserScanPayloads, writeLaserLog } from './laser_log.mjs';
 
 const flag = (name, def) => process.argv.find((a) => a.startsWith(`--${name}=`))?.split('=')[1] ?? def;
 const N = Number(flag('scans', 10000)), ROUNDS = Number(flag('rounds', 5));
@@ -33,31 +31,10 @@ const builds = { before: await build(resolve(BEFORE)), after: await build(join(R
 
 // The bench's log (b_logs.mjs): N 360-beam LaserScans from the CSAIL excerpt, cycled, 1 MB uncompressed chunks.
 const csail = builds.after.rtl.readCarmenLog(readFileSync(join(ROOT, 'tests', 'data', 'csail.log')));
-const payloads = csail.map((s) => {
-  const n = 360, step = Math.PI / 360;
-  return cdr('sensor_msgs/msg/LaserScan', {
-    header: { stamp: { sec: 0, nanosec: 0 }, frame_id: 'laser' },
-    angle_min: -Math.PI / 2, angle_max: -Math.PI / 2 + (n - 1) * step, angle_increment: step, time_increment: 0, scan_time: 0,
-    range_min: 0, range_max: s.maxRange * (1 - 1e-6), ranges: Float32Array.from(s.ranges.subarray(0, n)), intensities: new Float32Array(0),
-  });
-});
 const dir = mkdtempSync(join(tmpdir(), 'rtl-bench-paired-'));
 process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
 const path = join(dir, 'scans.mcap');
-{
-  const fh = await open(path, 'w');
-  let pos = 0n;
-  const w = new McapWriter({ writable: { position: () => pos, write: async (b) => { await fh.write(b); pos += BigInt(b.byteLength); } }, chunkSize: 1 << 20 });
-  await w.start({ profile: 'ros2', library: 'rtl-wasm bench' });
-  const schemaId = await w.registerSchema({ name: 'sensor_msgs/msg/LaserScan', encoding: 'ros2msg', data: new TextEncoder().encode(LASER_SCAN_DEF) });
-  const channelId = await w.registerChannel({ topic: '/scan', schemaId, messageEncoding: 'cdr', metadata: new Map() });
-  for (let i = 0; i < N; i++) {
-    const t = BigInt(i) * 25000000n + 1000000000n;
-    await w.addMessage({ channelId, sequence: i, logTime: t, publishTime: t, data: payloads[i % payloads.length] });
-  }
-  await w.end();
-  await fh.close();
-}
+await writeLaserLog(path, laserScanPayloads(csail), N);
 
 const OPTIONS = { minPoints: 3, vectorize: { method: 'ftls' } };
 const cpuMs = () => { const u = process.cpuUsage(); return (u.user + u.system) / 1000; };

@@ -10,7 +10,7 @@ import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import init, { palette, unlabelledColour } from 'rtl-wasm';
-import { near, throwsWith } from './helpers.mjs';
+import { near, scanDrawing, throwsWith } from './helpers.mjs';
 
 const rtl = await init();
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
@@ -100,16 +100,7 @@ function realDrawings() {
   for (const name of ['intel.log', 'csail.log']) {
     const scans = rtl.readCarmenLog(readFileSync(new URL(name, DATA)));
     for (let k = 0; k < scans.length; k += Math.max(1, Math.ceil(scans.length / 4))) {
-      const pts = scans[k].points;
-      const seg = rtl.segment(pts);
-      const segments = [];
-      for (const c of seg.clusters) {
-        if (c.indices.length < 3) continue;
-        const xy = new Float64Array(2 * c.indices.length);
-        c.indices.forEach((i, j) => { xy[2 * j] = pts[2 * i]; xy[2 * j + 1] = pts[2 * i + 1]; });
-        segments.push(...rtl.vectorize(xy, { method: 'dp' }).segments);
-      }
-      out.push({ points: pts, labels: seg.labels, segments, title: `${name} scan ${k} _&%` });
+      out.push(scanDrawing(rtl, scans[k].points, `${name} scan ${k} _&%`));
     }
   }
   return out;

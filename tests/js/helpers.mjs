@@ -84,3 +84,17 @@ export function nativeTool(name) {
   };
   return (...args) => execFileSync(tool, args.map(arg), { encoding: 'utf8', maxBuffer: 1 << 28 });
 }
+
+// One scan as the CLI and the page draw it: segmented by the package (defaults), every cluster of at least 3 points
+// simplified by Douglas–Peucker; { points, labels, segments, title } for toSvg / toTikz.
+export function scanDrawing(rtl, points, title) {
+  const seg = rtl.segment(points);
+  const segments = [];
+  for (const c of seg.clusters) {
+    if (c.indices.length < 3) continue;
+    const xy = new Float64Array(2 * c.indices.length);
+    c.indices.forEach((i, j) => { xy[2 * j] = points[2 * i]; xy[2 * j + 1] = points[2 * i + 1]; });
+    segments.push(...rtl.vectorize(xy, { method: 'dp' }).segments);
+  }
+  return { points, labels: seg.labels, segments, title };
+}

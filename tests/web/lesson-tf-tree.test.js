@@ -146,6 +146,14 @@ describe('transformation-tree lesson in Chromium', { timeout: 180000 }, () => {
             const gap = 4;   // CSS px: a space between two names on one line, so they do not read as one
             const apart = a.x1 + gap <= b.x0 || a.x0 >= b.x1 + gap || a.y1 <= b.y0 || a.y0 >= b.y1;
             assert.ok(apart, `${width}x${height}${lecture ? ' lecture' : ''}, mount ${angle}°, step ${k + 1}: "${a.text}" covers "${b.text}"`);
+            // side by side (no column in common) and nearer than one and a half type sizes across: half a type size
+            // apart up or down, else the end of one reads on into the other ("map x" beside "robot = sensor" on a phone)
+            const size = (a.y1 - a.y0) / 1.1, side = a.x1 <= b.x0 || a.x0 >= b.x1;
+            const near = !(a.x1 + 1.5 * size <= b.x0 || a.x0 >= b.x1 + 1.5 * size);
+            if (side && near) {
+              const clear = Math.max(b.y0 - a.y1, a.y0 - b.y1);
+              assert.ok(clear >= 0.5 * size - 0.01, `${width}x${height}${lecture ? ' lecture' : ''}, mount ${angle}°, step ${k + 1}: "${a.text}" and "${b.text}" side by side ${clear.toFixed(1)} px apart`);
+            }
           }
           if (k >= 2) {
             // in the map frame the map's name sits under its origin, clear of its x axis (the line y = 0)

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import init from 'rtl-wasm';
 import { DATA } from './helpers.js';
-import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, lineOf, beamErrors, grazingBeam, newlyExplained, runsText } from '../../web/lessons/budget-run.js';
+import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, lineOf, beamErrors, grazingBeam, newlyExplained, runsText, curveKnee } from '../../web/lessons/budget-run.js';
 
 describe('budget-run.js', () => {
   let rtl, points, beams, snaps;
@@ -82,5 +82,22 @@ describe('budget-run.js', () => {
     }
     assert.equal(runsText([3, 4, 5, 9, 11, 12]), '3–5, 9, 11–12');
     assert.equal(runsText([]), '');
+  });
+
+  test('the knee of the score curve: the first J within 10 % of the way from J = 2\'s score to the best, from the package\'s scores', () => {
+    const scores = [];
+    for (let J = J_MIN; J <= J_MAX; J++) scores.push(rtl.extractPolylines(points, { maxVertices: J }).score);
+    const k = curveKnee(snaps);
+    const best = Math.min(...scores), bound = best + 0.1 * (scores[0] - best);
+    assert.equal(k.first.J, 2);
+    assert.equal(k.first.score, scores[0]);
+    assert.equal(k.best.score, best);
+    assert.ok(k.score <= bound && k.score === scores[k.J - J_MIN]);
+    for (let J = J_MIN; J < k.J; J++) assert.ok(scores[J - J_MIN] > bound, `J = ${J} is already within the bound`);
+    // on this scan the curve bends well inside the range offered, not at either end
+    assert.ok(k.J > 10 && k.J < 50, `knee at J = ${k.J}`);
+    assert.equal(curveKnee(snaps, 0.5).J <= k.J, true, 'half the way comes no later than 90 %');
+    assert.equal(curveKnee([]), null);
+    assert.equal(curveKnee([{ J: 2, score: NaN }]), null);
   });
 });

@@ -61,6 +61,14 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
       await page.reload();
       await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
       await page.waitForTimeout(200);
+      // the figure's title (16 px a line: two on a phone, where it wraps, else one) covers no beam
+      const top = await page.evaluate((xy) => {
+        const c = document.querySelector('#canvas').getBoundingClientRect();
+        let min = Infinity;
+        for (let i = 0; i < xy.length; i += 2) if (xy[i] !== null) min = Math.min(min, window.__rtl.clientPoint(xy[i], xy[i + 1]).y - c.top);
+        return min;
+      }, s.points.map((v) => (Number.isFinite(v) ? v : null)));
+      assert.ok(top >= (w === 390 ? 2 : 1) * 16 + 5, `${w}x${h}: a beam ${top.toFixed(1)} px below the figure's top, under its title`);
       await page.screenshot({ path: join(SCREENSHOTS, `page-budget-${w}x${h}.png`), fullPage: w === 390 });
     }
     await page.setViewportSize({ width: 1280, height: 800 });
@@ -105,6 +113,16 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.ok(Math.abs(g.orthogonal - g.radial * Math.cos((g.incidence * Math.PI) / 180)) < 1e-9);
     assert.equal(await page.textContent('#lesson-text [data-q="radial"]'), `${g.radial.toFixed(3)} m from it along the beam`);
     assert.equal(await page.textContent('#lesson-text [data-q="orthogonal"]'), `${g.orthogonal.toFixed(3)} m from the line`);
+    // every beam's residual is drawn along its ray, enlarged so that the typical one shows and the large ones stay
+    // short beside the map (drawn ×1 they were under half a pixel): the median at least 1.5 px, the 95th percentile
+    // at most 8 % of the figure's width
+    const sorted = s.points.flatMap((v, b) => (b % 2 || !Number.isFinite(r.expectedRanges[b / 2]) ? [] : [Math.abs(Math.hypot(v, s.points[b + 1]) - r.expectedRanges[b / 2])])).sort((a, b) => a - b);
+    const pxPerM = await page.evaluate(() => { const a = window.__rtl.clientPoint(0, 0), b = window.__rtl.clientPoint(1, 0); return b.x - a.x; });
+    const width = await page.evaluate(() => document.querySelector('#canvas').clientWidth);
+    const p50 = sorted[Math.floor(0.5 * (sorted.length - 1))], p95 = sorted[Math.floor(0.95 * (sorted.length - 1))];
+    assert.ok(p50 * s.gain * pxPerM >= 1.5, `median residual ${p50} m ×${s.gain} at ${pxPerM} px/m`);
+    assert.ok(p95 * s.gain * pxPerM <= 0.08 * width, `95th percentile ${p95} m ×${s.gain} at ${pxPerM} px/m, figure ${width} px`);
+    assert.match(await page.textContent('#lesson-text'), new RegExp(`orange, drawn ×${s.gain}\\)`));
     await page.hover('#lesson-text [data-q="radial"]');
     assert.equal(await page.evaluate(() => window.__rtl.highlighted()), 'radial');
     await page.hover('#lesson-text [data-q="unexplained"]');
@@ -177,7 +195,18 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     await waitStep(page, q);
     verdict = await page.textContent('#predict');
     assert.match(verdict, /^Not quite\./);
-    assert.ok(verdict.includes(`You picked beam ${wrong}: it stays unexplained at J = ${q + 2}`), verdict);
+    // how far the pick was from the nearest beam the budget explains, in metres
+    const gap = (i, j) => Math.hypot(points[2 * i] - points[2 * j], points[2 * i + 1] - points[2 * j + 1]);
+    const nearest = c.gained.reduce((b, i) => (gap(wrong, i) < gap(wrong, b) ? i : b), c.gained[0]);
+    assert.ok(gap(wrong, nearest) > 0.01);
+    const away = `${gap(wrong, nearest).toFixed(3)} m from beam ${nearest}`;
+    assert.ok(verdict.includes(`You picked beam ${wrong}, ${away} (the nearest it explains): it stays unexplained at J = ${q + 2}`), verdict);
+    const pickLabel = (await page.evaluate(() => window.__rtl.figureOverlay())).find((m) => m.verdict === 'pick' && m.type === 'label');
+    assert.equal(pickLabel.text, `your pick: ${wrong} (unexplained), ${away}`);
+    // drawn whole, inside the figure (it sat at the right edge, cut)
+    const drawn = (await page.evaluate(() => window.__rtl.figureLabels())).find((l) => l.text === pickLabel.text);
+    const canvasWidth = await page.evaluate(() => document.querySelector('#canvas').clientWidth);
+    assert.ok(drawn && drawn.x0 >= 0 && drawn.x1 <= canvasWidth, `pick label at ${drawn?.x0}..${drawn?.x1} of ${canvasWidth}`);
     const r0 = rtl.extractPolylines(points, { maxVertices: q + 1 }), r1 = rtl.extractPolylines(points, { maxVertices: q + 2 });
     assert.ok(verdict.includes(`from ${r0.score.toFixed(4)} to ${r1.score.toFixed(4)} m²`), verdict);
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 2 });
@@ -276,6 +305,72 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.ok(fig.width >= 600 && fig.height >= 380, `figure ${fig.width}x${fig.height}`);
     assert.ok(chart.y >= fig.y + fig.height, 'the curves under the figure');
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 1280);
+  });
+
+  test('the curve read aloud: the knee (dashed) and the text\'s figures are the package\'s scores', async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.goto('about:blank');   // a fresh page: the link before chose another scan as the source
+    await page.goto(`${server.origin}/web/#budget?scan=intel%3A21&J=20`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
+    const points = scans.intel[21].points, scores = [];
+    for (let J = 2; J <= 60; J++) scores.push(rtl.extractPolylines(points, { maxVertices: J }).score);
+    const best = Math.min(...scores), bound = best + 0.1 * (scores[0] - best);
+    const knee = 2 + scores.findIndex((v) => v <= bound);
+    assert.ok(knee > 20 && knee < 60, `knee at J = ${knee}: J = 20 lies before it`);
+    assert.equal(await page.textContent('.budget-chart .knee-j'), `J = ${knee}`);
+    assert.equal(await page.textContent('.budget-chart .knee-first'), `${scores[0].toFixed(4)} m²`);
+    assert.equal(await page.textContent('.budget-chart .knee-best'), `${best.toFixed(4)} m²`);
+    assert.equal(await page.textContent('.budget-chart .knee-label'), `90 % by J = ${knee}`);
+    // the dashed line stands on the knee's column of the score panel
+    const [line, col] = await page.evaluate((k) => {
+      const svg = document.querySelector('.budget-chart svg'), l = svg.querySelector('.knee').getBoundingClientRect(), c = svg.querySelector(`.pick[data-k="${k - 2}"]`).getBoundingClientRect();
+      return [l.x + l.width / 2, c.x + c.width / 2];
+    }, knee);
+    assert.ok(Math.abs(line - col) < 1, `knee line at ${line}, column at ${col}`);
+    const why = await page.textContent('#lesson-text .budget-why');
+    assert.match(why, /^Why a budget\?/);
+    assert.ok(why.includes(`J = 20 is before the bend of the curve below (J = ${knee},`), why);
+    await setJ(page, knee + 3);
+    assert.ok((await page.textContent('#lesson-text .budget-why')).includes(`J = ${knee + 3} is past the bend of the curve below (J = ${knee}): the 3 vertices beyond it`));
+  });
+
+  test('the chart reads from the back of a room: lecture mode at 1920x1080 draws its text as large as the explanation\'s, none covering another, all on screen', async () => {
+    // every text of the chart as drawn: font size times the panel's scale on screen, and its box
+    const texts = () => page.evaluate(() => [...document.querySelectorAll('.budget-chart svg')].map((svg) => [...svg.querySelectorAll('text')].map((t) => {
+      const b = t.getBoundingClientRect();
+      return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
+    })));
+    const check = (panels, minPx, what) => {
+      for (const list of panels) {
+        assert.ok(list.length >= 10, `${what}: ${list.length} texts`);
+        for (const t of list) assert.ok(t.px >= minPx, `${what}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
+        for (let i = 0; i < list.length; i++) for (let j = 0; j < i; j++) {
+          const a = list[i], b = list[j];
+          assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${what}: "${a.text}" covers "${b.text}"`);
+        }
+      }
+    };
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.goto(`${server.origin}/web/#budget`);
+    await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
+    check(await texts(), 11, '1280x800');
+    await page.setViewportSize({ width: 1920, height: 1080 });
+    await page.evaluate(() => window.__rtl.lecture.set(true));
+    await page.waitForFunction(() => document.documentElement.classList.contains('lecture'), null, { timeout: PAGE_TIMEOUT });
+    await page.waitForTimeout(200);
+    const explainPx = await page.evaluate(() => parseFloat(getComputedStyle(document.querySelector('#lesson-text')).fontSize));
+    // the figure draws its labels at 12 px × 1.8 in lecture mode; the chart's smallest text (its ticks) at least
+    // 18 px, its titles larger
+    check(await texts(), 18, '1920x1080 lecture');
+    const titles = (await texts()).flat().filter((t) => /score|RMSE/.test(t.text));
+    assert.ok(titles.length === 2 && titles.every((t) => t.px >= 0.95 * explainPx), `titles ${titles.map((t) => t.px.toFixed(1))} against the explanation's ${explainPx} px`);
+    // the chart and its reading whole on the projector, no scrolling inside its box
+    const stage = await page.evaluate(() => { const s = document.querySelector('.lesson-stage'), b = s.getBoundingClientRect(); return { bottom: b.bottom, scroll: s.scrollHeight, client: s.clientHeight }; });
+    assert.ok(stage.scroll <= stage.client + 1 && stage.bottom <= 1080, JSON.stringify(stage));
+    assert.ok(await page.isVisible('.budget-chart .knee-j'), 'the reading of the curve stays in lecture mode');
+    await page.screenshot({ path: join(SCREENSHOTS, 'lecture-budget-1920x1080.png') });
+    await page.evaluate(() => window.__rtl.lecture.set(false));
+    await page.setViewportSize({ width: 1280, height: 800 });
   });
 
   test('no console errors', async () => {

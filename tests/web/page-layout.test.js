@@ -88,6 +88,8 @@ describe('lesson page layout', { timeout: 240000 }, () => {
       await page.fill('#player [data-act="scrub"]', '5');
       await page.dispatchEvent('#player [data-act="scrub"]', 'input');
       await page.waitForFunction(() => window.__rtl.lessons.find((l) => l.id === 'compare').step === 4, null, { timeout: PAGE_TIMEOUT });
+      // the table is drawn with the step (under load it came a moment after the step's number)
+      await page.waitForSelector('#lesson-stage .table-wrap', { timeout: PAGE_TIMEOUT });
       const t = await page.$eval('#lesson-stage .table-wrap', (el) => {
         const ths = [...el.querySelectorAll('thead th')], r = el.getBoundingClientRect();
         return { sw: el.scrollWidth, cw: el.clientWidth, right: r.right, last: ths.at(-1).getBoundingClientRect().right, n: ths.length };

@@ -84,7 +84,10 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     await page.waitForFunction((k) => window.__rtl.lessons.find((l) => l.id === 'dp').step === k, q, { timeout: PAGE_TIMEOUT });
     verdict = await page.textContent('#predict');
     assert.match(verdict, /^Not quite\./);
-    assert.ok(verdict.includes(`You picked point ${wrong}.`), verdict);
+    // how far the pick was from the answer, in metres (the chain's own coordinates)
+    const off = Math.hypot(s.chain[2 * wrong] - s.chain[2 * e.farthest], s.chain[2 * wrong + 1] - s.chain[2 * e.farthest + 1]);
+    assert.ok(off > 0.01, `the wrong pick is a distinct point (${off} m away)`);
+    assert.ok(verdict.includes(`You picked point ${wrong}, ${off.toFixed(3)} m from point ${e.farthest}.`), verdict);
     assert.ok(verdict.includes(`point ${e.farthest} farthest from the chord ${e.first}–${e.last}, at ${e.distance.toFixed(3)} m`), verdict);
     // the figure marks the pick (a cross) and the right answer (a ring) apart, the answer with the trace's distance
     const marks = await page.evaluate(() => window.__rtl.figureOverlay());
@@ -95,15 +98,40 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     assert.equal(of('answer', 'marker').length, 1);
     assert.notEqual(of('answer', 'marker')[0].shape, 'x');
     assert.deepEqual([of('answer', 'marker')[0].x, of('answer', 'marker')[0].y], [s.chain[2 * e.farthest], s.chain[2 * e.farthest + 1]]);
-    assert.equal(of('pick', 'label')[0].text, `your pick: ${wrong}`);
+    assert.equal(of('pick', 'label')[0].text, `your pick: ${wrong}, ${off.toFixed(3)} m from point ${e.farthest}`);
     assert.equal(of('answer', 'label')[0].text, `farthest: ${e.farthest}, ${e.distance.toFixed(3)} m > ε`);
     const labels = await page.evaluate(() => window.__rtl.figureLabels());
-    assert.ok(labels.some((l) => l.text === `your pick: ${wrong}`) && labels.some((l) => l.text.startsWith(`farthest: ${e.farthest}`)), 'both drawn');
+    assert.ok(labels.some((l) => l.text === `your pick: ${wrong}, ${off.toFixed(3)} m from point ${e.farthest}`) && labels.some((l) => l.text.startsWith(`farthest: ${e.farthest}`)), 'both drawn');
     await page.screenshot({ path: join(SCREENSHOTS, 'predict-dp-wrong-1280x800.png') });
     // the next step's drawing clears them
     await page.click('#player [data-act="forward"]');
     await page.waitForFunction(() => !window.__rtl.figureOverlay().some((m) => m.verdict), null, { timeout: PAGE_TIMEOUT });
     assert.deepEqual((await predictState(page)).score, { right: 1, asked: 2 });
+  });
+
+  test('Reumann–Witkam: a wrong pick says how far it lies from the first point outside the strip', async () => {
+    await openLesson(page, 'rw');
+    await toFirst(page, 'rw');
+    const s = await page.evaluate(() => window.__rtl.finalState());
+    const { trace } = rtl.vectorize(new Float64Array(s.chain), { method: 'rw', epsilon: s.params.epsilon, trace: true });
+    const q = await forwardToQuestion(page);
+    const e = trace[q];
+    assert.equal(e.kind, 'exit');
+    const n = s.chain.length / 2;
+    // a point after the exit (else the one before it), clicked where it is drawn
+    const wrong = e.index + 2 < n ? e.index + 2 : e.index - 1;
+    const at = await page.evaluate(([x, y]) => window.__rtl.clientPoint(x, y), [s.chain[2 * wrong], s.chain[2 * wrong + 1]]);
+    await page.mouse.click(at.x, at.y);
+    await page.waitForFunction((k) => window.__rtl.lessons.find((l) => l.id === 'rw').step === k, q, { timeout: PAGE_TIMEOUT });
+    const verdict = await page.textContent('#predict');
+    assert.match(verdict, /^Not quite\./);
+    const off = Math.hypot(s.chain[2 * wrong] - s.chain[2 * e.index], s.chain[2 * wrong + 1] - s.chain[2 * e.index + 1]);
+    assert.ok(off > 0.01, `a distinct point (${off} m away)`);
+    assert.ok(verdict.includes(`You picked point ${wrong}, ${off.toFixed(3)} m from point ${e.index}.`), verdict);
+    const label = (await page.evaluate(() => window.__rtl.figureOverlay())).find((m) => m.verdict === 'pick' && m.type === 'label');
+    assert.equal(label.text, `your pick: ${wrong} (${wrong < e.index ? 'inside the strip' : 'after the exit'}), ${off.toFixed(3)} m from point ${e.index}`);
+    const score = (await predictState(page)).score;
+    assert.equal(score.asked - score.right, 2, 'two wrong answers so far (DP\'s and this one)');
   });
 
   test('CAR: "do these two points link?" answered wrong, with the distance and the threshold', async () => {
@@ -121,7 +149,7 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     assert.ok(verdict.includes(`${e.distance.toFixed(3)} m apart`) && verdict.includes(`threshold ${e.threshold.toFixed(3)} m`), verdict);
     const label = (await page.evaluate(() => window.__rtl.figureOverlay())).find((m) => m.verdict === 'answer' && m.type === 'label');
     assert.equal(label.text, `${e.linked ? 'link' : 'no link'}: ${e.distance.toFixed(3)} m ${e.linked ? '≤' : '>'} ${e.threshold.toFixed(3)} m`);
-    assert.deepEqual((await predictState(page)).score, { right: 1, asked: 3 });
+    assert.deepEqual((await predictState(page)).score, { right: 1, asked: 4 });
   });
 
   test('FTLS: "does this corner meet within δ?" answered right', async () => {
@@ -137,13 +165,13 @@ describe('your turn: predict, then reveal', { timeout: 240000 }, () => {
     const verdict = await page.textContent('#predict');
     assert.match(verdict, /^Right\./);
     assert.ok(verdict.includes(`δ = ${e.delta.toFixed(3)} m`), verdict);
-    assert.deepEqual((await predictState(page)).score, { right: 2, asked: 4 });
+    assert.deepEqual((await predictState(page)).score, { right: 2, asked: 5 });
   });
 
   test('the score lasts the session (a reload keeps it), the switch starts off again', async () => {
     await page.reload();
     await page.waitForFunction(() => window.__rtl?.ready, null, { timeout: PAGE_TIMEOUT });
-    assert.deepEqual((await predictState(page)).score, { right: 2, asked: 4 });
+    assert.deepEqual((await predictState(page)).score, { right: 2, asked: 5 });
     assert.equal(await page.isChecked('#your-turn'), false);
   });
 

@@ -103,3 +103,15 @@ export function runsText(indices) {
   }
   return parts.join(', ');
 }
+
+// Where the score curve bends: the smallest budget whose score has come `share` (default 90 %) of the whole way down
+// from the smallest budget's score to the best score of any budget. Past it, further vertices buy little. Reads the
+// package's scores only. { J, score, first: { J, score }, best: { J, score }, share }, or null without a finite score.
+export function curveKnee(snaps, share = 0.9) {
+  const scored = snaps.filter((s) => Number.isFinite(s.score));
+  if (!scored.length) return null;
+  const first = scored[0], best = scored.reduce((b, s) => (s.score < b.score ? s : b), first);
+  const target = best.score + (1 - share) * (first.score - best.score);
+  const knee = scored.find((s) => s.score <= target);
+  return { J: knee.J, score: knee.score, first: { J: first.J, score: first.score }, best: { J: best.J, score: best.score }, share };
+}

@@ -4,7 +4,7 @@
 // grazing incidence in a magnifier with its radial and orthogonal errors; the stage shows score, RMSE and f against J.
 import { INK, Scene } from '../figure.js';
 import { numberField, selectField, note, m, num } from './ui.js';
-import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam, newlyExplained, runsText } from './budget-run.js';
+import { J_MIN, J_MAX, beamsOf, runBudgets, residuals, grazingBeam, newlyExplained, runsText, curveKnee } from './budget-run.js';
 import { budgetChart } from './budget-chart.js';
 import { budgetQuestions } from './predict-questions.js';
 import { readParams, positive, explainNoSteps } from './common.js';
@@ -82,7 +82,16 @@ export default {
         const c = host.figure.canvas, wide = !(c.clientHeight > 0) || c.clientWidth / c.clientHeight >= 1.2;
         run.lensAt = wide ? { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 } : { R, x: (box.minX + box.maxX) / 2, y: box.minY - 1.2 * R };
         const L = run.lensAt;
-        host.figure.setExtent(Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R));
+        const ext = [Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R)];
+        // room above the scan for the figure's title (one line of 16 CSS px on a wide canvas, two on a phone's, times the
+        // type scale of lecture mode), so that it covers no beam
+        if (c.clientWidth > 0 && c.clientHeight > 0) {
+          const textScale = Number(getComputedStyle(c).getPropertyValue('--figure-text-scale')) || 1;
+          const titlePx = ((wide ? 1 : 2) * 16 + 8) * textScale;
+          const scale = Math.min(c.clientWidth / (ext[2] - ext[0]), (c.clientHeight - titlePx) / (ext[3] - ext[1]));
+          if (scale > 0) ext[3] += titlePx / scale;
+        }
+        host.figure.setExtent(...ext);
         // the J slider holds the budget shown (show() keeps it current), so a new scan or c keeps J, also after a
         // parameter error emptied the player
         const J = jField.read(), k = Number.isInteger(J) ? Math.min(Math.max(J, J_MIN), J_MAX) - J_MIN : DEFAULT_J - J_MIN;
@@ -108,10 +117,12 @@ export default {
           (Number.isFinite(res[i]) ? explained : unexplained).push(points[2 * i], points[2 * i + 1]);
         }
         const D = run.size;
-        // residuals enlarged so that the larger ones are a few percent of the view
+        // residuals enlarged so that a typical one (the median) shows as a stub while the large ones (the 95th
+        // percentile) stay within a few per cent of the view; most radial errors are centimetres on a scan of metres
         const sorted = Array.from(res).filter(Number.isFinite).map(Math.abs).sort((a, b) => a - b);
-        const p95 = sorted.length ? sorted[Math.floor(0.95 * (sorted.length - 1))] : 0;
-        const gain = p95 > 0 ? niceFloor((0.025 * D) / p95) : 1;
+        const at = (q) => (sorted.length ? sorted[Math.floor(q * (sorted.length - 1))] : 0);
+        const p50 = at(0.5), p95 = at(0.95);
+        const gain = p95 > 0 ? niceFloor(Math.min(p50 > 0 ? (0.008 * D) / p50 : Infinity, (0.08 * D) / p95)) : 1;
         const resXY = [];
         for (let i = 0; i < beams.n; i++) {
           if (!Number.isFinite(res[i])) continue;
@@ -168,6 +179,13 @@ export default {
           `<span data-q="explained">${snap.explainedBeams} of the ${snap.returned} returned beams (f = ${num(snap.explained)})</span> with ` +
           `<span data-q="residuals">RMSE ${m(snap.rmse)}</span> along the beams; <span data-q="unexplained">${unexplained} beam${unexplained === 1 ? ' is' : 's are'} unexplained</span> ` +
           `and count as c = ${m(run.cost, 2)} each. Score f·RMSE² + (1 − f)·c² = <b>${num(snap.score, 4)} m²</b>.</p>`;
+        // why a budget at all, and where this J sits on the curve under the figure (the package's scores)
+        const knee = curveKnee(run.snaps);
+        const side = !knee ? '' : snap.J < knee.J ? ` J = ${snap.J} is before the bend of the curve below (<span class="knee-j">J = ${knee.J}</span>, 90 % of the possible fall in score): vertices still pay here.`
+          : snap.J === knee.J ? ` J = ${snap.J} is the bend of the curve below: 90 % of the possible fall in score is made, later vertices buy little.`
+            : ` J = ${snap.J} is past the bend of the curve below (<span class="knee-j">J = ${knee.J}</span>): the ${snap.J - knee.J} vertices beyond it buy the last few per cent.`;
+        html += `<p class="budget-why"><b>Why a budget?</b> A map is what a robot stores, sends and matches every scan against, and its size is its vertex count. ` +
+          `Fixing J asks a fair question, the same for every method: with this many vertices, how well can the scan be explained?${side}</p>`;
         if (prev) {
           const d = snap.score - prev.score;
           const gained = run.gained.length ? ` <span data-q="gained">${run.gained.length} beam${run.gained.length === 1 ? '' : 's'} newly explained</span> (${runsText(run.gained)}, green rings).` : '';
@@ -192,7 +210,7 @@ export default {
           J: snap?.J, vertexCount: snap?.vertexCount, polylines: snap?.polylines, rmse: snap?.rmse, explained: snap?.explained, score: snap?.score,
           expected: snap && Array.from(snap.expected),
           curve: run.snaps.map(({ J, vertexCount, rmse, explained, score }) => ({ J, vertexCount, rmse, explained, score })),
-          lens: run.lens, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
+          lens: run.lens, gain: run.gain, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
       },
       dispose() {},
     };

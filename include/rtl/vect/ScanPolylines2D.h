@@ -23,7 +23,9 @@
 //     a second family, polylines whose vertices are measured points, the optimal polygonal approximation per k
 //     (scan_polylines/PointPolylines.h), for chains of at most setShortChainPoints() beams (default 32: clutter
 //     clusters, whose points a 2-beam-per-range partition cannot all reach), optionally (setPointCandidates) for all
-//     chains, radially refined; they never break;
+//     chains, radially refined; they never break; optionally (setGreedyCandidates) a third family, the states of
+//     greedy vertex removal by the radial error from the polyline through all the chain's points
+//     (scan_polylines/GreedyPolylines.h), the candidates probabilistic line extraction builds;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
 //     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement; optionally
@@ -57,11 +59,14 @@
 #include <Eigen/Core>
 
 #include "rtl/core/VectorND.h"
+#include "rtl/vect/scan_polylines/BeamRangeRefinement.h"
 #include "rtl/vect/scan_polylines/BudgetAllocation.h"
 #include "rtl/vect/scan_polylines/ChainPartition.h"
+#include "rtl/vect/scan_polylines/GreedyPolylines.h"
 #include "rtl/vect/scan_polylines/PointPolylines.h"
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
+#include "rtl/vect/scan_polylines/ReassigningRefinement.h"
 
 namespace rtl
 {
@@ -86,6 +91,14 @@ namespace rtl
             T r{}, theta{};
             Eigen::Matrix<T, 2, 2> covariance = Eigen::Matrix<T, 2, 2>::Zero();
         };
+
+        //! How a chosen candidate of the greedy family (setGreedyCandidates) is refined: inner vertices moved freely with
+        //! each beam kept on its first segment (RadialRefinement), the same in single iterations with the beams
+        //! re-assigned by the hit test after each (scan_polylines/ReassigningRefinement.h), or every vertex moved along
+        //! its own beam (scan_polylines/BeamRangeRefinement.h: the beams each segment explains never change, so the
+        //! cost minimised is the hit-tested one).
+        //! AlongBeamsThenFree: along the beams, then one free iteration (each kept only where it lowers the cost).
+        enum class GreedyRefinement { FreeVertices = 0, Reassigning = 1, AlongBeams = 2, AlongBeamsThenFree = 3 };
 
         //! Vertices over the whole scan (>= 2; default 50). std::invalid_argument below 2.
         void setMaxVertices(std::size_t j)
@@ -133,6 +146,29 @@ namespace rtl
         //! point is off its line can only be one segment, while the polyline through its 3 points explains it exactly
         //! (default 32; 0: off).
         void setShortChainPoints(std::size_t maxBeams) { short_points_ = maxBeams; }
+        //! A third candidate family per chain (default off): the states of greedy vertex removal by the radial error
+        //! (scan_polylines/GreedyPolylines.h: from the polyline through all the chain's points, the vertex whose removal
+        //! raises the chain's hit-tested cost least goes first, as probabilistic line extraction builds its map), each
+        //! state of at most maxVertices() vertices offered with its chain cost, beside the TLS partitions;
+        //! its vertices are measured points on their own beams, so it never breaks. Built in full before the only
+        //! allocation (so plans of every budget stay comparable) and refined only when a plan chooses it. O(n log n)
+        //! plus the recomputed segments' lengths per chain of n beams, O(n) per offered state.
+        //! `iterations`: at most this many LM iterations (or rounds) when a plan of the every-budget refinement chooses
+        //! one; `refinement`: how (see GreedyRefinement). With the default free-vertex LM, 1 iteration scored better on
+        //! the benchmark than 2, 3 and 20 (the fixed beam assignment drifts from the hit test); AlongBeamsThenFree with
+        //! 20 scored best. (With setRefineEveryBudget(false), J's own plan is refined by the free LM as before.)
+        void setGreedyCandidates(bool on, int iterations = 1, GreedyRefinement refinement = GreedyRefinement::FreeVertices)
+        {
+            greedy_candidates_ = on; greedy_iterations_ = iterations; greedy_refinement_ = refinement;
+        }
+        //! The TLS partition family only up to this many ranges per chain (default 0: up to maxVertices() - 1). With the
+        //! greedy family on, the partitions matter for few-segment chains only: on the benchmark, a cap of 10 left every
+        //! mean unchanged to 4 digits and took a third off the time (the partition DP is O(n^2 K) per chain).
+        void setPartitionSegments(std::size_t k) { partition_segments_ = k; }
+        //! With the every-budget refinement: a second walk over the plans of every budget, allocated on the refined
+        //! chain costs of the candidates the first walk refined (the offered costs elsewhere), its new candidates
+        //! refined in turn (default off).
+        void setRefinedReallocation(bool on) { refined_reallocation_ = on; }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
         //! line (exact within the window, O(n (2 window + 1)^2) per chain); kept when its polylines need no more
@@ -258,6 +294,9 @@ namespace rtl
             std::size_t used = 0;
             bool partition = false;             // a plain TLS partition (no forced breaks) of `ranges`
             bool stale_cost = false;            // its offered cost is an estimate, or from before a re-partition
+            int iterations = 20;                // LM iterations when a plan of the every-budget refinement chooses it
+            int refiner = 0;                    // 0: RadialRefinement; 1: re-assigning rounds; 2: along the vertices' beams;
+                                                // 3: 2, then one iteration of 0
             std::vector<BeamRange> ranges;      // its ranges, chain-local
 
             Polyline &next()
@@ -355,7 +394,7 @@ namespace rtl
             radialWeights(cf, cl);
             part_.load(&px_[cf], &py_[cf], n, radial_weights_ ? weight_.data() : nullptr);
             part_.setEndSkipCost(trim_ends_ ? cost_ * cost_ : 0.0);
-            part_.solve(max_vertices_ - 1);
+            part_.solve(partition_segments_ > 0 ? std::min(max_vertices_ - 1, partition_segments_) : max_vertices_ - 1);
             std::vector<scan_polylines::TlsFit> &fits = fits_;
             std::vector<BeamRange> &ranges = ranges_;
             for (std::size_t k = 1; k <= part_.maxSegments(); ++k)
@@ -388,6 +427,42 @@ namespace rtl
             }
             if (point_candidates_ && point_window_ < 0) buildPointCandidates(c, opts, max_vertices_ - 1, 0, max_vertices_);
             else if (n <= short_points_) buildPointCandidates(c, opts, max_vertices_ - 1, 1, 0);   // unrefined here
+            if (greedy_candidates_) buildGreedyCandidates(c, opts);
+        }
+
+        //! The greedy-removal family of chain c (see setGreedyCandidates): every state of at most max_vertices_
+        //! vertices, offered unrefined at the greedy's cost.
+        void buildGreedyCandidates(std::size_t c, std::vector<scan_polylines::BudgetOption> &opts)
+        {
+            const auto [cf, cl] = chains_[c];
+            greedy_.run(&px_[cf], &py_[cf], cl - cf + 1, cost_ * cost_);
+            bool listed = false;
+            for (std::size_t s = 0; s < greedy_.states(); ++s)
+            {
+                const std::size_t k1 = greedy_.vertexCount(s);   // vertices, falling with s
+                if (k1 > max_vertices_) continue;
+                if (k1 < 2) break;
+                // the first state within the budget listed in full, each later one by its removal (O(J) each)
+                if (!listed) { greedy_.vertices(s, vertex_index_); listed = true; }
+                else
+                    vertex_index_.erase(std::find(vertex_index_.begin(), vertex_index_.end(), greedy_.removals()[s - 1].vertex));
+                Candidate &cand = newCandidate(c);
+                cand.iterations = greedy_iterations_;
+                cand.refiner = static_cast<int>(greedy_refinement_);
+                Polyline &p = cand.next();
+                p.x.reserve(k1); p.y.reserve(k1); p.segs.reserve(k1);   // one allocation at most, not a growth series
+                for (std::size_t v = 0; v < k1; ++v)
+                {
+                    const std::size_t i = cf + vertex_index_[v];
+                    p.x.push_back(px_[i]); p.y.push_back(py_[i]);
+                }
+                // Segment s explains the beams from its first vertex's up to the next vertex's (the last one both).
+                for (std::size_t v = 0; v + 1 < k1; ++v)
+                    p.segs.push_back({cf + vertex_index_[v], cf + vertex_index_[v + 1] - (v + 2 < k1 ? 1 : 0)});
+                // The greedy's own cost is the hit-tested one where beams lie farther apart than the hit test's
+                // widening; offered as an estimate all the same, so a plan that chooses it hit-tests it first.
+                offerCandidate(c, k1, opts, greedy_.cost(s));
+            }
         }
 
         //! Sum of squared radial errors of chain-local beams a..b predicted by their own TLS line (part_ loaded with the
@@ -511,6 +586,8 @@ namespace rtl
             cand.used = 0;
             cand.partition = false;
             cand.stale_cost = false;
+            cand.iterations = 20;
+            cand.refiner = 0;
             return cand;
         }
 
@@ -559,37 +636,50 @@ namespace rtl
                     fallback.insert(fallback.end(), cand.polylines.begin(), cand.polylines.begin() + static_cast<long>(cand.used));
                 }
             // The plans of all budgets, the cheapest after refinement; equal sums keep the smaller budget's plan.
-            const scan_polylines::BudgetTable table(options, max_vertices_);
-            std::vector<std::size_t> prev;
             improving_plans_.clear();   // the plans that lowered the best sum, in budget order, C entries each
             improving_sums_.clear();
             double best = std::numeric_limits<double>::infinity();
-            for (std::size_t b = 0; b <= max_vertices_; ++b)
+            // Pass 1 walks the plans of every budget on the offered costs; pass 2 (setRefinedReallocation) the plans
+            // of a table on the refined costs where pass 1 refined a candidate, the offered ones elsewhere.
+            std::vector<std::vector<scan_polylines::BudgetOption>> reoptions;
+            for (int pass = 0; pass < (refined_reallocation_ ? 2 : 1); ++pass)
             {
-                std::vector<std::size_t> plan = table.plan(b);
-                if (plan.empty() || plan == prev) continue;
-                double sum = 0;
-                for (std::size_t c = 0; c < C; ++c)
+                if (pass == 1)
                 {
-                    const std::size_t o = plan[c];
-                    if (o > 0 && std::isnan(refined_cost_[c][o]))
+                    reoptions = options;
+                    for (std::size_t c = 0; c < C; ++c)
+                        for (std::size_t o = 1; o < reoptions[c].size(); ++o)
+                            if (!std::isnan(refined_cost_[c][o])) reoptions[c][o].cost = refined_cost_[c][o];
+                }
+                const scan_polylines::BudgetTable table(pass == 0 ? options : reoptions, max_vertices_);
+                std::vector<std::size_t> prev;
+                for (std::size_t b = 0; b <= max_vertices_; ++b)
+                {
+                    std::vector<std::size_t> plan = table.plan(b);
+                    if (plan.empty() || plan == prev) continue;
+                    double sum = 0;
+                    for (std::size_t c = 0; c < C; ++c)
                     {
-                        // hit-tested before refinement where the option's cost is not (a break candidate's estimate)
-                        Candidate &cand = prepare(c, o);
-                        const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
-                        refined_cost_[c][o] = refineCandidate(c, o - 1, 20, before);
+                        const std::size_t o = plan[c];
+                        if (o > 0 && std::isnan(refined_cost_[c][o]))
+                        {
+                            // hit-tested before refinement where the option's cost is not (a break candidate's estimate)
+                            Candidate &cand = prepare(c, o);
+                            const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
+                            refined_cost_[c][o] = refineCandidate(c, o - 1, cand.iterations, before);
+                        }
+                        sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
                     }
-                    sum += o > 0 ? refined_cost_[c][o] : options[c][0].cost;
+                    if (sum < best)
+                    {
+                        best = sum;
+                        improving_sums_.push_back(sum);
+                        const std::size_t at = improving_plans_.size();
+                        improving_plans_.resize(at + C);
+                        std::copy(plan.begin(), plan.end(), improving_plans_.begin() + static_cast<long>(at));
+                    }
+                    prev.swap(plan);
                 }
-                if (sum < best)
-                {
-                    best = sum;
-                    improving_sums_.push_back(sum);
-                    const std::size_t at = improving_plans_.size();
-                    improving_plans_.resize(at + C);
-                    std::copy(plan.begin(), plan.end(), improving_plans_.begin() + static_cast<long>(at));
-                }
-                prev.swap(plan);
             }
             std::vector<double> rhat = expected(fallback);
             scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
@@ -628,6 +718,16 @@ namespace rtl
         //! result when its hit-tested cost is below `cost`; returns the candidate's cost.
         double refineCandidate(std::size_t c, std::size_t index, int iterations, double cost)
         {
+            const int refiner = candidates_[c][index].refiner;
+            if (refiner != 3) return refineWith(c, index, iterations, cost, refiner);
+            // along the beams first, then one free iteration from the better of the start and that
+            cost = refineWith(c, index, iterations, cost, 2);
+            return refineWith(c, index, 1, cost, 0);
+        }
+
+        //! refineCandidate with refiner `mode` (see Candidate::refiner; 0-2).
+        double refineWith(std::size_t c, std::size_t index, int iterations, double cost, int mode)
+        {
             const auto [cf, cl] = chains_[c];
             Candidate &cand = candidates_[c][index];
             Candidate &refined = refine_scratch_;   // a member: its buffers are reused from call to call
@@ -636,10 +736,32 @@ namespace rtl
             refined.partition = cand.partition;
             refined.ranges = cand.ranges;
             refined.stale_cost = false;
+            refined.iterations = cand.iterations;
+            refined.refiner = cand.refiner;
             lm_.setMaxIterations(iterations);
             const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
             for (std::size_t p = 0; p < refined.used; ++p)
-                lm_(refined.polylines[p].x, refined.polylines[p].y, refined.polylines[p].segs, arrays, cost_ * cost_);
+            {
+                Polyline &pl = refined.polylines[p];
+                if (mode == 1) reassigning_(pl.x, pl.y, pl.segs, arrays, angle_.data(), cost_ * cost_, iterations, kSpanWiden);
+                else if (mode == 2)
+                {
+                    // vertex v on the first beam of segment v (the last vertex: the last segment's last beam)
+                    beam_rho_.clear(); beam_index_.clear();
+                    for (std::size_t v = 0; v < pl.x.size(); ++v)
+                    {
+                        beam_index_.push_back(v < pl.segs.size() ? pl.segs[v].first : pl.segs.back().second);
+                        beam_rho_.push_back(std::hypot(pl.x[v], pl.y[v]));
+                    }
+                    along_beams_.setMaxIterations(iterations);
+                    along_beams_(beam_rho_, beam_index_, arrays, cost_ * cost_);
+                    for (std::size_t v = 0; v < pl.x.size(); ++v)
+                    {
+                        pl.x[v] = beam_rho_[v] * ux_[beam_index_[v]]; pl.y[v] = beam_rho_[v] * uy_[beam_index_[v]];
+                    }
+                }
+                else lm_(pl.x, pl.y, pl.segs, arrays, cost_ * cost_);
+            }
             const double c2 = chainCost(refined, cf, cl);
             if (c2 < cost) { cost = c2; std::swap(cand, refined); }
             return cost;
@@ -848,6 +970,16 @@ namespace rtl
         //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
         static constexpr double kInteractionTolerance = 1e-3;
         scan_polylines::PointPolylines points_;
+        bool greedy_candidates_ = false;
+        int greedy_iterations_ = 1;
+        GreedyRefinement greedy_refinement_ = GreedyRefinement::FreeVertices;
+        std::size_t partition_segments_ = 0;
+        bool refined_reallocation_ = false;
+        detail::ReassigningRefinement reassigning_;
+        detail::BeamRangeRefinement along_beams_;
+        std::vector<double> beam_rho_;
+        std::vector<std::size_t> beam_index_;
+        detail::GreedyPolylines greedy_;
         std::vector<std::size_t> vertex_index_;
         std::vector<char> forced_;
         std::vector<std::pair<std::size_t, double>> corners_;

@@ -4,6 +4,7 @@
 // (tests/js/extras-identical.test.mjs) computes them again: equal digests mean byte-identical outputs.
 import { createHash } from 'node:crypto';
 import { readFileSync, readdirSync } from 'node:fs';
+import { scanDrawing } from '../helpers.mjs';
 
 const DATA = new URL('../../data/', import.meta.url);
 const sha = (s) => createHash('sha256').update(s).digest('hex');
@@ -24,16 +25,7 @@ function drawings(rtl) {
   for (const [name, every] of [['intel.log', 1000], ['csail.log', 10]]) {
     const scans = rtl.readCarmenLog(readFileSync(new URL(name, DATA)));
     for (let k = 0; k < Math.min(scans.length, 30); k += every) {
-      const pts = scans[k].points;
-      const seg = rtl.segment(pts);
-      const segments = [];
-      for (const c of seg.clusters) {
-        if (c.indices.length < 3) continue;
-        const xy = new Float64Array(2 * c.indices.length);
-        c.indices.forEach((i, j) => { xy[2 * j] = pts[2 * i]; xy[2 * j + 1] = pts[2 * i + 1]; });
-        segments.push(...rtl.vectorize(xy, { method: 'dp' }).segments);
-      }
-      out.push([`${name}#${k}`, { points: pts, labels: seg.labels, segments, title: `${name} scan ${k} _&%` }]);
+      out.push([`${name}#${k}`, scanDrawing(rtl, scans[k].points, `${name} scan ${k} _&%`)]);
     }
   }
   return out;
