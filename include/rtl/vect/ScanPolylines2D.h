@@ -98,7 +98,10 @@ namespace rtl
         //! its own beam (scan_polylines/BeamRangeRefinement.h: the beams each segment explains never change, so the
         //! cost minimised is the hit-tested one).
         //! AlongBeamsThenFree: along the beams, then one free iteration (each kept only where it lowers the cost).
-        enum class GreedyRefinement { FreeVertices = 0, Reassigning = 1, AlongBeams = 2, AlongBeamsThenFree = 3 };
+        //! Consistent: inner vertices free but kept in their boundary beams' wedges, so the LM minimises the hit-tested
+        //! cost, and boundaries shifted where a vertex rests on a wedge edge (RadialRefinement::refineConsistent, with
+        //! `iterations` LM iterations and 3 passes of shifts).
+        enum class GreedyRefinement { FreeVertices = 0, Reassigning = 1, AlongBeams = 2, AlongBeamsThenFree = 3, Consistent = 4 };
 
         //! Vertices over the whole scan (>= 2; default 50). std::invalid_argument below 2.
         void setMaxVertices(std::size_t j)
@@ -725,7 +728,7 @@ namespace rtl
             return refineWith(c, index, 1, cost, 0);
         }
 
-        //! refineCandidate with refiner `mode` (see Candidate::refiner; 0-2).
+        //! refineCandidate with refiner `mode` (see Candidate::refiner; 0-2, 4).
         double refineWith(std::size_t c, std::size_t index, int iterations, double cost, int mode)
         {
             const auto [cf, cl] = chains_[c];
@@ -760,6 +763,7 @@ namespace rtl
                         pl.x[v] = beam_rho_[v] * ux_[beam_index_[v]]; pl.y[v] = beam_rho_[v] * uy_[beam_index_[v]];
                     }
                 }
+                else if (mode == 4) lm_.refineConsistent(pl.x, pl.y, pl.segs, arrays, cost_ * cost_, 3);
                 else lm_(pl.x, pl.y, pl.segs, arrays, cost_ * cost_);
             }
             const double c2 = chainCost(refined, cf, cl);
