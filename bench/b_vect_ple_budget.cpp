@@ -48,7 +48,7 @@ namespace
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
-    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 1, g_reassign = 0, g_beam_lm = 0, g_partition_k = -1, g_realloc = -1, g_consistent = 0;
+    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 20, g_reassign = 0, g_beam_lm = -1, g_partition_k = -1, g_realloc = -1, g_consistent = 0;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
     //! The extractor with the command line's settings.
@@ -69,10 +69,10 @@ namespace
         if (g_partition_k >= 0) ex.setPartitionSegments(static_cast<std::size_t>(g_partition_k));
         if (g_greedy >= 0) ex.setGreedyCandidates(g_greedy > 0, g_greedy_iterations,
                                                   g_consistent > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Consistent
-                                                  : g_beam_lm > 1 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree
-                                                  : g_beam_lm > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeams
                                                   : g_reassign > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Reassigning
-                                                                   : rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices);
+                                                  : g_beam_lm == 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices
+                                                  : g_beam_lm == 1 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeams
+                                                                   : rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree);
     }
 
     Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
@@ -178,7 +178,7 @@ namespace
     {
         rtl::ple::GreedyExtractor ex;
         ex.setReassignRounds(g_reassign);
-        ex.setBeamRangeRefinement(g_beam_lm > 0);
+        ex.setBeamRangeRefinement(g_beam_lm > 0);   // PLE+ ours: our LM unless --beam-lm=1|2
         ex.setConsistentRounds(g_consistent);
         Row row;
         std::vector<double> times;
