@@ -67,7 +67,8 @@ namespace
         if (g_short >= 0) ex.setShortChainPoints(static_cast<std::size_t>(g_short));
         if (g_realloc >= 0) ex.setRefinedReallocation(g_realloc > 0);
         if (g_partition_k >= 0) ex.setPartitionSegments(static_cast<std::size_t>(g_partition_k));
-        if (g_greedy >= 0) ex.setGreedyCandidates(g_greedy > 0, g_greedy_iterations,
+        if (g_greedy >= 0 || g_consistent > 0 || g_beam_lm >= 0 || g_reassign > 0 || g_greedy_iterations != 20)
+            ex.setGreedyCandidates(g_greedy != 0, g_greedy_iterations,
                                                   g_consistent > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Consistent
                                                   : g_reassign > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Reassigning
                                                   : g_beam_lm == 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices
@@ -252,6 +253,31 @@ namespace
         return row;
     }
 
+    //! The extractor (the DP+LM all row's settings) with one unexplained cost c for all scans of a log, chosen for
+    //! PLE+'s published mean f: the least mean RMSE among the c of a bisection over log c in [0.05, 2] m (12 steps)
+    //! whose mean f is at least `f_target`. The c found is returned in `c_out`.
+    Row evaluateAtMeanF(const std::vector<rtl::ple::Scan> &scans, std::size_t J, double f_target, double &c_out)
+    {
+        double lo = std::log(0.05), hi = std::log(2.0);
+        Row best;
+        best.rmse = std::numeric_limits<double>::infinity();
+        c_out = std::nan("");
+        for (int it = 0; it < 12; ++it)
+        {
+            const double mid = 0.5 * (lo + hi);
+            g_cost = std::exp(mid);
+            const Row r = evaluate(scans, J, true, 1, true);
+            if (r.f >= f_target)
+            {
+                hi = mid;
+                if (r.rmse < best.rmse) { best = r; c_out = g_cost; }
+            }
+            else lo = mid;
+        }
+        g_cost = -1;
+        return best;
+    }
+
     double plePlusScore(const Published &p) { return p.f * p.rmse * p.rmse + (1 - p.f) * 0.25; }
 }
 
@@ -380,17 +406,21 @@ int main(int argc, char **argv)
             continue;
         }
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
-            for (int method = 0; method < 7; ++method)
+            for (int method = 0; method < 8; ++method)
             {
                 if ((only_j && J != only_j) || methods.find(static_cast<char>('0' + method)) == std::string::npos) continue;
+                double c_found = std::nan("");
                 const Row r = method == 0 ? evaluateBaseline(scans, J)
+                              : method == 7 ? evaluateAtMeanF(scans, J, c.plus[j].f, c_found)
                               : method == 6 ? evaluateMatched(scans, J)
                               : method >= 4 ? evaluateGreedy(scans, J, method == 5, reps)
                                             : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
-                std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,
-                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : method == 4 ? "PLE ours" : method == 5 ? "PLE+ ours" : method == 6 ? "at PLE's f" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
-                            c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]));
+                char note[32] = "";
+                if (method == 7) std::snprintf(note, sizeof note, "  c = %.3f", c_found);
+                std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f%s\n", c.name, J,
+                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : method == 4 ? "PLE ours" : method == 5 ? "PLE+ ours" : method == 6 ? "at PLE's f" : method == 7 ? "c for PLE+ f" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
+                            c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]), note);
             }
     }
     return 0;
