@@ -44,7 +44,28 @@ namespace
         return static_cast<double>(ts.tv_sec) * 1e6 + static_cast<double>(ts.tv_nsec) * 1e-3;
     }
 
-    struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
+    struct Row
+    {
+        double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0;
+        std::size_t scored = 0, max_vertices = 0;
+
+        //! One scan's metric into the sums (a scan without a hit is left out of the means, as PLE's).
+        void add(const rtl::ple::Metric &m)
+        {
+            if (m.hit == 0) return;
+            ++scored;
+            rmse += m.rmse(); f += m.explained(); score += m.score(0.5);
+        }
+        //! The sums to means, and the median and maximum of the per-scan times.
+        Row &finish(std::vector<double> &times)
+        {
+            if (scored) { rmse /= static_cast<double>(scored); f /= static_cast<double>(scored); score /= static_cast<double>(scored); }
+            std::sort(times.begin(), times.end());
+            median_us = times.empty() ? 0 : times[times.size() / 2];
+            max_us = times.empty() ? 0 : times.back();
+            return *this;
+        }
+    };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
@@ -94,15 +115,9 @@ namespace
             times.push_back(best);
             row.max_vertices = std::max(row.max_vertices, ex.vertexCount());
             const rtl::ple::Metric m = rtl::ple::score(scan, ex.polylines());
-            if (m.hit == 0) continue;
-            ++row.scored;
-            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+            row.add(m);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
     }
 
     //! The library's existing pipeline as the baseline: CAR clusters (consecutive points within PLE's 1 m link
@@ -163,15 +178,9 @@ namespace
             for (const auto &p : polys) v += p.size();
             row.max_vertices = std::max(row.max_vertices, v);
             const rtl::ple::Metric m = rtl::ple::score(scan, polys);
-            if (m.hit == 0) continue;
-            ++row.scored;
-            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+            row.add(m);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
     }
 
     //! PLE replicated (rtl::ple::GreedyExtractor): its greedy removal, and with `refine` our LM on its map (PLE+ ours).
@@ -198,15 +207,9 @@ namespace
             for (const auto &p : map) v += p.size();
             row.max_vertices = std::max(row.max_vertices, v);
             const rtl::ple::Metric m = rtl::ple::score(scan, map);
-            if (m.hit == 0) continue;
-            ++row.scored;
-            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+            row.add(m);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
     }
 
     //! The extractor (the DP+LM all row's settings) at PLE's own f, scan by scan: per scan, the smallest unexplained
@@ -242,15 +245,9 @@ namespace
                     if (m.rmse() < best.rmse()) best = m;   // the least error among the maps that explain enough
                 }
             times.push_back(threadMicroseconds() - t0);
-            if (best.hit == 0) continue;
-            ++row.scored;
-            row.rmse += best.rmse(); row.f += best.explained(); row.score += best.score(0.5);
+            row.add(best);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
     }
 
     //! The extractor (the DP+LM all row's settings) with one unexplained cost c for all scans of a log, chosen for
