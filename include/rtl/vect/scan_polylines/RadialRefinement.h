@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "rtl/vect/scan_polylines/DampedStep.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
 
 namespace rtl::scan_polylines
@@ -154,26 +155,18 @@ namespace rtl::scan_polylines
                 };
                 for (std::size_t i = left.first; i <= left.second; ++i) add(i, ax, ay, x, y, true);
                 for (std::size_t i = right.first; i <= right.second; ++i) add(i, x, y, bx, by, false);
-                bool improved = false;
-                while (lambda < 1e10)
-                {
-                    const double a00 = h00 + lambda * std::max(h00, 1e-12), a11 = h11 + lambda * std::max(h11, 1e-12);
-                    const double det = a00 * a11 - h01 * h01;
-                    if (det > 0)
-                    {
-                        double tx = x + (a11 * g0 - h01 * g1) / det, ty = y + (a00 * g1 - h01 * g0) / det;
+                double tx = x, ty = y;
+                const bool improved = dampedStep(lambda, current,
+                    [&](double l, double &c) {
+                        const double a00 = h00 + l * std::max(h00, 1e-12), a11 = h11 + l * std::max(h11, 1e-12);
+                        const double det = a00 * a11 - h01 * h01;
+                        if (!(det > 0)) return false;
+                        tx = x + (a11 * g0 - h01 * g1) / det; ty = y + (a00 * g1 - h01 * g0) / det;
                         project(tx, ty);
-                        const double c = pairCost(ax, ay, tx, ty, bx, by, left, right, beams, invalid_cost);
-                        if (c < current)
-                        {
-                            improved = current - c > 1e-12 * (c + 1e-30);
-                            x = tx; y = ty; current = c;
-                            lambda = std::max(lambda / 3, 1e-9);
-                            break;
-                        }
-                    }
-                    lambda *= 4;
-                }
+                        c = pairCost(ax, ay, tx, ty, bx, by, left, right, beams, invalid_cost);
+                        return true;
+                    },
+                    [&] { x = tx; y = ty; });
                 if (!improved) break;
             }
             return current;
@@ -300,26 +293,15 @@ namespace rtl::scan_polylines
                         }
                     }
                 }
-                bool improved = false;
-                while (lambda < 1e10)
-                {
-                    if (solveDamped(P, lambda))
-                    {
+                const bool improved = dampedStep(lambda, current,
+                    [&](double l, double &c) {
+                        if (!solveDamped(P, l)) return false;
                         for (std::size_t i = 0; i < P; ++i) trial[i] = p[i] + step_[i];
                         project(trial);
-                        const double c = cost(trial);
-                        if (c < current)
-                        {
-                            const double gain = current - c;
-                            p.swap(trial);
-                            current = c;
-                            lambda = std::max(lambda / 3, 1e-9);
-                            improved = gain > 1e-12 * (current + 1e-30);
-                            break;
-                        }
-                    }
-                    lambda *= 4;
-                }
+                        c = cost(trial);
+                        return true;
+                    },
+                    [&] { p.swap(trial); });
                 if (!improved) break;
             }
             for (std::size_t v = 0; v <= k; ++v) vertex(p, v, vx[v], vy[v]);
