@@ -44,16 +44,37 @@ namespace
         return static_cast<double>(ts.tv_sec) * 1e6 + static_cast<double>(ts.tv_nsec) * 1e-3;
     }
 
-    struct Row { double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0; std::size_t scored = 0, max_vertices = 0; };
+    struct Row
+    {
+        double rmse = 0, f = 0, score = 0, median_us = 0, max_us = 0;
+        std::size_t scored = 0, max_vertices = 0;
+
+        //! One scan's metric into the sums (a scan without a hit is left out of the means, as PLE's).
+        void add(const rtl::ple::Metric &m)
+        {
+            if (m.hit == 0) return;
+            ++scored;
+            rmse += m.rmse(); f += m.explained(); score += m.score(0.5);
+        }
+        //! The sums to means, and the median and maximum of the per-scan times.
+        Row &finish(std::vector<double> &times)
+        {
+            if (scored) { rmse /= static_cast<double>(scored); f /= static_cast<double>(scored); score /= static_cast<double>(scored); }
+            std::sort(times.begin(), times.end());
+            median_us = times.empty() ? 0 : times[times.size() / 2];
+            max_us = times.empty() ? 0 : times.back();
+            return *this;
+        }
+    };
 
     //! Extractor settings chosen on the command line, to measure variants against the defaults (-1: default).
     int g_break_candidates = -1, g_exact_breaks = -1, g_window = -1, g_trim = -1, g_points = -1, g_point_iterations = 20, g_point_window = 2;
-    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 1, g_reassign = 0, g_beam_lm = 0, g_partition_k = -1, g_realloc = -1;
+    int g_radial = -1, g_short = -1, g_greedy = -1, g_greedy_iterations = 20, g_reassign = 0, g_beam_lm = -1, g_partition_k = -1, g_realloc = -1, g_consistent = 0;
     double g_cost = -1;   // setUnexplainedCost for the extractor (the score printed stays PLE's, c = 0.5)
 
-    Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
+    //! The extractor with the command line's settings.
+    void configure(rtl::ScanPolylines2D<double> &ex, std::size_t J, bool refine, bool every_budget)
     {
-        rtl::ScanPolylines2D<double> ex;
         ex.setMaxVertices(J);
         ex.setRefinement(refine);
         ex.setRefineEveryBudget(every_budget);
@@ -67,11 +88,19 @@ namespace
         if (g_short >= 0) ex.setShortChainPoints(static_cast<std::size_t>(g_short));
         if (g_realloc >= 0) ex.setRefinedReallocation(g_realloc > 0);
         if (g_partition_k >= 0) ex.setPartitionSegments(static_cast<std::size_t>(g_partition_k));
-        if (g_greedy >= 0) ex.setGreedyCandidates(g_greedy > 0, g_greedy_iterations,
-                                                  g_beam_lm > 1 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree
-                                                  : g_beam_lm > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeams
+        if (g_greedy >= 0 || g_consistent > 0 || g_beam_lm >= 0 || g_reassign > 0 || g_greedy_iterations != 20)
+            ex.setGreedyCandidates(g_greedy != 0, g_greedy_iterations,
+                                                  g_consistent > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Consistent
                                                   : g_reassign > 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::Reassigning
-                                                                   : rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices);
+                                                  : g_beam_lm == 0 ? rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices
+                                                  : g_beam_lm == 1 ? rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeams
+                                                                   : rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree);
+    }
+
+    Row evaluate(const std::vector<rtl::ple::Scan> &scans, std::size_t J, bool refine, int reps, bool every_budget = false)
+    {
+        rtl::ScanPolylines2D<double> ex;
+        configure(ex, J, refine, every_budget);
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -86,15 +115,9 @@ namespace
             times.push_back(best);
             row.max_vertices = std::max(row.max_vertices, ex.vertexCount());
             const rtl::ple::Metric m = rtl::ple::score(scan, ex.polylines());
-            if (m.hit == 0) continue;
-            ++row.scored;
-            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+            row.add(m);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
     }
 
     //! The library's existing pipeline as the baseline: CAR clusters (consecutive points within PLE's 1 m link
@@ -155,15 +178,9 @@ namespace
             for (const auto &p : polys) v += p.size();
             row.max_vertices = std::max(row.max_vertices, v);
             const rtl::ple::Metric m = rtl::ple::score(scan, polys);
-            if (m.hit == 0) continue;
-            ++row.scored;
-            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+            row.add(m);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
     }
 
     //! PLE replicated (rtl::ple::GreedyExtractor): its greedy removal, and with `refine` our LM on its map (PLE+ ours).
@@ -171,7 +188,8 @@ namespace
     {
         rtl::ple::GreedyExtractor ex;
         ex.setReassignRounds(g_reassign);
-        ex.setBeamRangeRefinement(g_beam_lm > 0);
+        ex.setBeamRangeRefinement(g_beam_lm > 0);   // PLE+ ours: our LM unless --beam-lm=1|2
+        ex.setConsistentRounds(g_consistent);
         Row row;
         std::vector<double> times;
         for (const auto &scan : scans)
@@ -189,15 +207,72 @@ namespace
             for (const auto &p : map) v += p.size();
             row.max_vertices = std::max(row.max_vertices, v);
             const rtl::ple::Metric m = rtl::ple::score(scan, map);
-            if (m.hit == 0) continue;
-            ++row.scored;
-            row.rmse += m.rmse(); row.f += m.explained(); row.score += m.score(0.5);
+            row.add(m);
         }
-        if (row.scored) { row.rmse /= static_cast<double>(row.scored); row.f /= static_cast<double>(row.scored); row.score /= static_cast<double>(row.scored); }
-        std::sort(times.begin(), times.end());
-        row.median_us = times.empty() ? 0 : times[times.size() / 2];
-        row.max_us = times.empty() ? 0 : times.back();
-        return row;
+        return row.finish(times);
+    }
+
+    //! The extractor (the DP+LM all row's settings) at PLE's own f, scan by scan: per scan, the smallest unexplained
+    //! cost c (bisection over log c in [0.02, 4] m, 14 steps) whose map explains at least as many beams as PLE's map
+    //! of that scan (PLE+'s refinement keeps PLE's hits); so every scan's f is >= PLE's and PLE+'s, and the row's
+    //! RMSE is the error at that f (the least RMSE among the searched maps that explain enough). A scan where even
+    //! c = 4 explains fewer keeps c = 4. Time: the whole search.
+    Row evaluateMatched(const std::vector<rtl::ple::Scan> &scans, std::size_t J)
+    {
+        rtl::ple::GreedyExtractor ple;
+        rtl::ScanPolylines2D<double> ex;
+        configure(ex, J, true, true);
+        Row row;
+        std::vector<double> times;
+        for (const auto &scan : scans)
+        {
+            const double t0 = threadMicroseconds();
+            const std::size_t target = rtl::ple::score(scan, ple(scan, J, false)).hit;
+            auto run = [&](double c) {
+                ex.setUnexplainedCost(c);
+                ex(scan.points);
+                return rtl::ple::score(scan, ex.polylines());
+            };
+            double lo = std::log(0.02), hi = std::log(4.0);
+            rtl::ple::Metric best = run(std::exp(hi));
+            if (best.hit >= target)
+                for (int it = 0; it < 14; ++it)
+                {
+                    const double mid = 0.5 * (lo + hi);
+                    const rtl::ple::Metric m = run(std::exp(mid));
+                    if (m.hit < target) { lo = mid; continue; }
+                    hi = mid;
+                    if (m.rmse() < best.rmse()) best = m;   // the least error among the maps that explain enough
+                }
+            times.push_back(threadMicroseconds() - t0);
+            row.add(best);
+        }
+        return row.finish(times);
+    }
+
+    //! The extractor (the DP+LM all row's settings) with one unexplained cost c for all scans of a log, chosen for
+    //! PLE+'s published mean f: the least mean RMSE among the c of a bisection over log c in [0.05, 2] m (12 steps)
+    //! whose mean f is at least `f_target`. The c found is returned in `c_out`.
+    Row evaluateAtMeanF(const std::vector<rtl::ple::Scan> &scans, std::size_t J, double f_target, double &c_out)
+    {
+        double lo = std::log(0.05), hi = std::log(2.0);
+        Row best;
+        best.rmse = std::numeric_limits<double>::infinity();
+        c_out = std::nan("");
+        for (int it = 0; it < 12; ++it)
+        {
+            const double mid = 0.5 * (lo + hi);
+            g_cost = std::exp(mid);
+            const Row r = evaluate(scans, J, true, 1, true);
+            if (r.f >= f_target)
+            {
+                hi = mid;
+                if (r.rmse < best.rmse) { best = r; c_out = g_cost; }
+            }
+            else lo = mid;
+        }
+        g_cost = -1;
+        return best;
     }
 
     double plePlusScore(const Published &p) { return p.f * p.rmse * p.rmse + (1 - p.f) * 0.25; }
@@ -232,6 +307,7 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--greedy-lm=", 12) == 0) g_greedy_iterations = std::atoi(argv[i] + 12);
         else if (std::strncmp(argv[i], "--reassign=", 11) == 0) g_reassign = std::atoi(argv[i] + 11);
         else if (std::strncmp(argv[i], "--beam-lm=", 10) == 0) g_beam_lm = std::atoi(argv[i] + 10);
+        else if (std::strncmp(argv[i], "--consistent=", 13) == 0) g_consistent = std::atoi(argv[i] + 13);
         else if (std::strncmp(argv[i], "--partition-k=", 14) == 0) g_partition_k = std::atoi(argv[i] + 14);
         else if (std::strncmp(argv[i], "--realloc=", 10) == 0) g_realloc = std::atoi(argv[i] + 10);
         else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
@@ -327,16 +403,21 @@ int main(int argc, char **argv)
             continue;
         }
         for (std::size_t J = 10, j = 0; J <= 50; J += smoke ? 40 : 10, j += smoke ? 4 : 1)
-            for (int method = 0; method < 6; ++method)
+            for (int method = 0; method < 8; ++method)
             {
                 if ((only_j && J != only_j) || methods.find(static_cast<char>('0' + method)) == std::string::npos) continue;
+                double c_found = std::nan("");
                 const Row r = method == 0 ? evaluateBaseline(scans, J)
+                              : method == 7 ? evaluateAtMeanF(scans, J, c.plus[j].f, c_found)
+                              : method == 6 ? evaluateMatched(scans, J)
                               : method >= 4 ? evaluateGreedy(scans, J, method == 5, reps)
                                             : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (r.max_vertices > J || (method > 0 && r.scored == 0)) { std::fprintf(stderr, "budget exceeded or nothing scored\n"); return 1; }
-                std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f\n", c.name, J,
-                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : method == 4 ? "PLE ours" : method == 5 ? "PLE+ ours" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
-                            c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]));
+                char note[32] = "";
+                if (method == 7) std::snprintf(note, sizeof note, "  c = %.3f", c_found);
+                std::printf("%-6s %3zu %-10s %3zu %8.4f %7.4f %9.5f %9.1f %9.1f %6zu | %.3f / %.3f  %.3f / %.3f  %9.5f%s\n", c.name, J,
+                            method == 0 ? "CAR+FTLS" : method == 2 ? "DP+LM" : method == 3 ? "DP+LM all" : method == 4 ? "PLE ours" : method == 5 ? "PLE+ ours" : method == 6 ? "at PLE's f" : method == 7 ? "c for PLE+ f" : "DP", r.scored, r.rmse, r.f, r.score, r.median_us, r.max_us, r.max_vertices,
+                            c.ple[j].rmse, c.ple[j].f, c.plus[j].rmse, c.plus[j].f, plePlusScore(c.plus[j]), note);
             }
     }
     return 0;

@@ -31,6 +31,10 @@ namespace rtl::ple
         void setReassignRounds(int rounds) { reassign_rounds_ = rounds; }
         //! PLE+ (ours) refined with every vertex moved along its own beam (detail::BeamRangeRefinement, 20 iterations).
         void setBeamRangeRefinement(bool on) { beam_range_ = on; }
+        //! PLE+ (ours) refined hit-consistently (RadialRefinement::refineConsistent: inner vertices kept in their
+        //! boundary beams' wedges, boundaries shifted where a vertex rests on a wedge edge) with this many passes of
+        //! shifts; 0: off.
+        void setConsistentRounds(int rounds) { consistent_rounds_ = rounds; }
 
         typedef std::vector<std::vector<VectorND<2, double>>> Map;
 
@@ -111,6 +115,7 @@ namespace rtl::ple
                     blm_(rho_, vb_, arrays, c * c);
                     for (std::size_t v = 0; v < p.x.size(); ++v) { p.x[v] = rho_[v] * ux_[vb_[v]]; p.y[v] = rho_[v] * uy_[vb_[v]]; }
                 }
+                else if (consistent_rounds_ > 0) lm_.refineConsistent(p.x, p.y, p.segs, arrays, c * c, consistent_rounds_);
                 else if (reassign_rounds_ > 0) rlm_(p.x, p.y, p.segs, arrays, angle_.data(), c * c, reassign_rounds_);
                 else lm_(p.x, p.y, p.segs, arrays, c * c);
             }
@@ -148,6 +153,7 @@ namespace rtl::ple
         std::vector<double> ux_, uy_, r_, angle_, xs_, ys_;
         std::vector<std::size_t> index_;
         int reassign_rounds_ = 0;
+        int consistent_rounds_ = 0;
         bool beam_range_ = false;
         detail::BeamRangeRefinement blm_;
         std::vector<double> rho_;

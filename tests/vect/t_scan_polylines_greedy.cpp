@@ -209,9 +209,17 @@ TEST(ScanPolylinesGreedy, GreedyCandidatesKeepTheBudgetAndLowerTheScore)
     // before refinement may gain less from it (its vertices already sit on measured points), so the partition's plan
     // is no longer among those refined. Measured here: 13 of 240 runs above the plain extractor (109 below), by at
     // most 4.9 % (intel scan 26, J = 10). Asserted: the budget and the end vertices hold, such rises stay rare and
-    // small, and the mean score falls (here by 4.4 %; on the full benchmark by 0.7-11 %).
+    // small, and the mean score falls (here by 4.4 %; on the full benchmark by 0.7-11 %). Both with the free-vertex
+    // LM of 1 iteration and the earlier defaults otherwise (2 break candidates, no partition cap or re-allocation).
     rtl::ScanPolylines2D<double> with, without;
-    with.setGreedyCandidates(true);
+    for (auto *ex : {&with, &without})
+    {
+        ex->setBreakCandidates(2);
+        ex->setPartitionSegments(0);
+        ex->setRefinedReallocation(false);
+    }
+    with.setGreedyCandidates(true, 1, rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices);
+    without.setGreedyCandidates(false);
     double s_with = 0, s_without = 0, worst = 0;
     std::size_t lower = 0, higher = 0, runs = 0;
     for (const char *file : {"intel.log", "csail.log"})
@@ -242,16 +250,17 @@ TEST(ScanPolylinesGreedy, GreedyCandidatesKeepTheBudgetAndLowerTheScore)
     EXPECT_LT(worst, 1.06);
 }
 
-TEST(ScanPolylinesGreedy, ProposedSettingScoresLowerThanTheDefaultOnTheExcerpts)
+TEST(ScanPolylinesGreedy, DefaultScoresLowerThanTheEarlierDefaultOnTheExcerpts)
 {
-    // The setting proposed as the default (greedy family refined along the beams then freely, no break candidates,
-    // partitions of at most 10 ranges, refined reallocation) against the defaults on the 60 excerpt scans at J = 10,
-    // 30, 50: the budget and the end vertices hold and the mean score falls (on the full benchmark by 2.5-14.3 %).
+    // The default (greedy family refined along the beams then freely, no break candidates, partitions of at most 10
+    // ranges, refined reallocation) against the earlier default (no greedy family, 2 break candidates, no cap, no
+    // re-allocation) on the 60 excerpt scans at J = 10, 30, 50: the budget and the end vertices hold and the mean
+    // score falls (on the full benchmark by 2.5-14.3 %).
     rtl::ScanPolylines2D<double> proposed, standard;
-    proposed.setGreedyCandidates(true, 20, rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree);
-    proposed.setBreakCandidates(0);
-    proposed.setPartitionSegments(10);
-    proposed.setRefinedReallocation(true);
+    standard.setGreedyCandidates(false);
+    standard.setBreakCandidates(2);
+    standard.setPartitionSegments(0);
+    standard.setRefinedReallocation(false);
     double s_proposed = 0, s_standard = 0, worst = 0;
     std::size_t lower = 0, higher = 0;
     for (const char *file : {"intel.log", "csail.log"})
@@ -268,7 +277,7 @@ TEST(ScanPolylinesGreedy, ProposedSettingScoresLowerThanTheDefaultOnTheExcerpts)
                 worst = std::max(worst, proposed.score() / standard.score());
                 s_proposed += proposed.score(); s_standard += standard.score();
             }
-    std::printf("proposed setting on the excerpts: %zu of 180 runs lower, %zu higher (worst x%.4f), mean score x%.4f\n", lower,
+    std::printf("default against the earlier default on the excerpts: %zu of 180 runs lower, %zu higher (worst x%.4f), mean score x%.4f\n", lower,
                 higher, worst, s_proposed / s_standard);
     EXPECT_LT(s_proposed, 0.97 * s_standard);
     EXPECT_GT(lower, 3 * higher);
@@ -311,19 +320,19 @@ TEST(ScanPolylinesGreedy, EveryRefinementSurvivesRepeatedPointsAndHoles)
 TEST(ScanPolylinesGreedy, ALargerBudgetNeverGivesAWorseMapWithGreedyCandidates)
 {
     // As ScanPolylines2D.ALargerBudgetNeverGivesAWorseMap, with the greedy family on: it is built in full before the
-    // only allocation, so every budget's plans stay comparable. Also in the setting proposed as the default: no break
-    // candidates, TLS partitions of at most 10 ranges, greedy candidates refined along their beams, then freely, and a
-    // second walk over the plans allocated on the refined costs.
+    // only allocation, so every budget's plans stay comparable. In the default setting (no break candidates, TLS
+    // partitions of at most 10 ranges, greedy candidates refined along their beams, then freely, and a second walk over
+    // the plans allocated on the refined costs) and with the earlier default otherwise (greedy candidates refined by
+    // 1 free-vertex LM iteration, 2 break candidates, no cap, one walk).
     for (int setting = 0; setting < 2; ++setting)
     {
         rtl::ScanPolylines2D<double> ex;
-        if (setting == 0) ex.setGreedyCandidates(true);
-        else
+        if (setting == 0)
         {
-            ex.setGreedyCandidates(true, 20, rtl::ScanPolylines2D<double>::GreedyRefinement::AlongBeamsThenFree);
-            ex.setBreakCandidates(0);
-            ex.setPartitionSegments(10);
-            ex.setRefinedReallocation(true);
+            ex.setGreedyCandidates(true, 1, rtl::ScanPolylines2D<double>::GreedyRefinement::FreeVertices);
+            ex.setBreakCandidates(2);
+            ex.setPartitionSegments(0);
+            ex.setRefinedReallocation(false);
         }
         for (const char *file : {"intel.log", "csail.log"})
         {

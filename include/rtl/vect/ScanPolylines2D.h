@@ -12,20 +12,22 @@
 // Method (each step exact for its own model, in this order):
 //  1. chains: the returned beams split at every beam without a return and wherever neighbouring points lie more
 //     than maxGap apart (such beams never share a polyline);
-//  2. per chain, the exact best partition into k total-least-squares ranges (>= 2 beams each) for every k, by dynamic
-//     programming over prefix sums (scan_polylines/ChainPartition.h); each partition becomes polylines: end vertices
+//  2. per chain, the exact best partition into k total-least-squares ranges (>= 2 beams each) for every k up to
+//     setPartitionSegments() (default 10), by dynamic programming over prefix sums (scan_polylines/ChainPartition.h);
+//     each partition becomes polylines: end vertices
 //     where the end lines cross their own end beams, inner vertices where consecutive lines cross, unless the lines
 //     are near parallel or cross far from the boundary points (then the polyline breaks there, both new ends again
-//     on their own beams) -- so a corner never spikes away from its points; besides each partition, up to
+//     on their own beams) -- so a corner never spikes away from its points; optionally, besides each partition, up to
 //     setBreakCandidates() variants in which the corners whose break would explain their boundary beams best become
 //     breaks (one vertex each; at a depth step inside a chain a corner predicts one side's boundary beams by the other
 //     side's line), priced by the partition's cost minus those local gains (only the boundary beams change line);
 //     a second family, polylines whose vertices are measured points, the optimal polygonal approximation per k
 //     (scan_polylines/PointPolylines.h), for chains of at most setShortChainPoints() beams (default 32: clutter
 //     clusters, whose points a 2-beam-per-range partition cannot all reach), optionally (setPointCandidates) for all
-//     chains, radially refined; they never break; optionally (setGreedyCandidates) a third family, the states of
+//     chains, radially refined; they never break; a third family (setGreedyCandidates, default on), the states of
 //     greedy vertex removal by the radial error from the polyline through all the chain's points
-//     (scan_polylines/GreedyPolylines.h), the candidates probabilistic line extraction builds;
+//     (scan_polylines/GreedyPolylines.h), the candidates probabilistic line extraction builds: the radial error is
+//     what the score measures, and on long chains these beat the orthogonal TLS partitions where beams graze a wall;
 //  3. the budget: every chain's candidates (vertex count, score contribution), plus leaving the chain out (all its
 //     beams unexplained), allocated exactly under J by a multiple-choice knapsack (scan_polylines/BudgetAllocation.h)
 //     (optionally once more after refining the candidates near each chain's choice, setNeighbourRefinement; optionally
@@ -36,9 +38,10 @@
 //     so refinement never raises the score. The plans of every budget J' <= J are refined and the best returned, so
 //     that the score never rises with J (setRefineEveryBudget, default on; off refines J's own plan only); where
 //     the best plan's whole map scores clearly worse than its chain costs say (a refined segment over another chain's
-//     beams), the earlier improving plans are hit-tested in turn.
+//     beams), the earlier improving plans are hit-tested in turn; then (setRefinedReallocation, default on) the plans
+//     of every budget are walked again on the refined chain costs, their new candidates refined in turn.
 // Complexity per scan of n beams in chains of n_c: O(sum n_c^2 (1 + K_c)) for the partitions (K_c = min(J - 1,
-// n_c / 2)), O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
+// n_c / 2, setPartitionSegments())), O(n_c log n_c) plus the recomputed segments' lengths for the greedy family, O(chains x J x K) for the budget, O(n x segments) for the final hit test; with setRefineEveryBudget,
 // O(chains x J) more for the plans' backtracks and one refinement per distinct (chain, candidate) of the plans.
 //
 // Input: the scan's beams in beam order as points in the sensor frame; a beam with a non-finite coordinate, or at the
@@ -98,7 +101,10 @@ namespace rtl
         //! its own beam (scan_polylines/BeamRangeRefinement.h: the beams each segment explains never change, so the
         //! cost minimised is the hit-tested one).
         //! AlongBeamsThenFree: along the beams, then one free iteration (each kept only where it lowers the cost).
-        enum class GreedyRefinement { FreeVertices = 0, Reassigning = 1, AlongBeams = 2, AlongBeamsThenFree = 3 };
+        //! Consistent: inner vertices free but kept in their boundary beams' wedges, so the LM minimises the hit-tested
+        //! cost, and boundaries shifted where a vertex rests on a wedge edge (RadialRefinement::refineConsistent, with
+        //! `iterations` LM iterations and 3 passes of shifts).
+        enum class GreedyRefinement { FreeVertices = 0, Reassigning = 1, AlongBeams = 2, AlongBeamsThenFree = 3, Consistent = 4 };
 
         //! Vertices over the whole scan (>= 2; default 50). std::invalid_argument below 2.
         void setMaxVertices(std::size_t j)
@@ -117,7 +123,8 @@ namespace rtl
         //! Iterations of radial refinement applied to every candidate before the budget is allocated (default 0).
         void setCandidateRefinement(int iterations) { refine_candidates_ = iterations; }
         //! Extra candidates per partition in which up to this many corners become breaks (one vertex each), the corners
-        //! whose break explains their boundary beams best first (default 2; 0: none).
+        //! whose break explains their boundary beams best first (default 0: none; with the greedy family on they changed
+        //! the benchmark's means by under 3 %, and the greedy family covers what they were for: depth steps in a chain).
         void setBreakCandidates(int n) { break_rounds_ = n; }
         //! Break candidates scored by their own hit test (true) or by the partition's cost minus the local gains
         //! (false, default; cheaper).
@@ -146,7 +153,8 @@ namespace rtl
         //! point is off its line can only be one segment, while the polyline through its 3 points explains it exactly
         //! (default 32; 0: off).
         void setShortChainPoints(std::size_t maxBeams) { short_points_ = maxBeams; }
-        //! A third candidate family per chain (default off): the states of greedy vertex removal by the radial error
+        //! A third candidate family per chain (default on, 20 iterations, AlongBeamsThenFree): the states of greedy vertex
+        //! removal by the radial error
         //! (scan_polylines/GreedyPolylines.h: from the polyline through all the chain's points, the vertex whose removal
         //! raises the chain's hit-tested cost least goes first, as probabilistic line extraction builds its map), each
         //! state of at most maxVertices() vertices offered with its chain cost, beside the TLS partitions;
@@ -154,20 +162,21 @@ namespace rtl
         //! allocation (so plans of every budget stay comparable) and refined only when a plan chooses it. O(n log n)
         //! plus the recomputed segments' lengths per chain of n beams, O(n) per offered state.
         //! `iterations`: at most this many LM iterations (or rounds) when a plan of the every-budget refinement chooses
-        //! one; `refinement`: how (see GreedyRefinement). With the default free-vertex LM, 1 iteration scored better on
-        //! the benchmark than 2, 3 and 20 (the fixed beam assignment drifts from the hit test); AlongBeamsThenFree with
-        //! 20 scored best. (With setRefineEveryBudget(false), J's own plan is refined by the free LM as before.)
-        void setGreedyCandidates(bool on, int iterations = 1, GreedyRefinement refinement = GreedyRefinement::FreeVertices)
+        //! one; `refinement`: how (see GreedyRefinement). With the free-vertex LM, 1 iteration scored better on the
+        //! benchmark than 2, 3 and 20 (the fixed beam assignment drifts from the hit test); AlongBeamsThenFree with 20
+        //! scored best at the least time; Consistent scores 0-2 % better again at 1.5-2x the time. (With
+        //! setRefineEveryBudget(false), J's own plan is refined by the free LM as before.)
+        void setGreedyCandidates(bool on, int iterations = 20, GreedyRefinement refinement = GreedyRefinement::AlongBeamsThenFree)
         {
             greedy_candidates_ = on; greedy_iterations_ = iterations; greedy_refinement_ = refinement;
         }
-        //! The TLS partition family only up to this many ranges per chain (default 0: up to maxVertices() - 1). With the
-        //! greedy family on, the partitions matter for few-segment chains only: on the benchmark, a cap of 10 left every
-        //! mean unchanged to 4 digits and took a third off the time (the partition DP is O(n^2 K) per chain).
+        //! The TLS partition family only up to this many ranges per chain (default 10; 0: up to maxVertices() - 1). With
+        //! the greedy family on, the partitions matter for few-segment chains only: on the benchmark, a cap of 10 left
+        //! every mean unchanged to 4 digits and took a third off the time (the partition DP is O(n^2 K) per chain).
         void setPartitionSegments(std::size_t k) { partition_segments_ = k; }
         //! With the every-budget refinement: a second walk over the plans of every budget, allocated on the refined
         //! chain costs of the candidates the first walk refined (the offered costs elsewhere), its new candidates
-        //! refined in turn (default off).
+        //! refined in turn (default on).
         void setRefinedReallocation(bool on) { refined_reallocation_ = on; }
         //! After the allocation, each chain's chosen TLS partition is re-partitioned with every range boundary moved by
         //! at most `window` beams, minimising the sum over ranges of the squared radial errors of the range's own TLS
@@ -251,10 +260,19 @@ namespace rtl
             scan_polylines::RayScore score = scan_polylines::scoreExpected(range_, returned_, rhat);
             if (refine_ && !map.empty())
             {
-                std::vector<Polyline> refined = map;
-                scan_polylines::RadialRefinement lm;
-                const scan_polylines::BeamArrays arrays{ux_.data(), uy_.data(), range_.data()};
-                for (auto &p : refined) lm(p.x, p.y, p.segs, arrays, cost_ * cost_);
+                // Each chosen candidate refined as the every-budget refinement refines it (its family's refiner), so
+                // that J's own plan refined is one of the maps that refinement compares.
+                std::vector<Polyline> refined;
+                for (std::size_t c = 0; c < chains_.size(); ++c)
+                    if (chosen[c] > 0)
+                    {
+                        const std::size_t o = chosen[c];
+                        const Candidate &cand = candidates_[c][o - 1];
+                        const double before = cand.stale_cost ? chainCost(cand, chains_[c].first, chains_[c].second) : options[c][o].cost;
+                        refineCandidate(c, o - 1, cand.iterations, before);
+                        const Candidate &now = candidates_[c][o - 1];
+                        refined.insert(refined.end(), now.polylines.begin(), now.polylines.begin() + static_cast<long>(now.used));
+                    }
                 std::vector<double> rhat2 = expected(refined);
                 const scan_polylines::RayScore score2 = scan_polylines::scoreExpected(range_, returned_, rhat2);
                 if (score2.score(cost_) < score.score(cost_)) { map.swap(refined); rhat.swap(rhat2); score = score2; }
@@ -739,7 +757,7 @@ namespace rtl
             return refineWith(c, index, 1, cost, 0);
         }
 
-        //! refineCandidate with refiner `mode` (see Candidate::refiner; 0-2).
+        //! refineCandidate with refiner `mode` (see Candidate::refiner; 0-2, 4).
         double refineWith(std::size_t c, std::size_t index, int iterations, double cost, int mode)
         {
             const auto [cf, cl] = chains_[c];
@@ -774,6 +792,7 @@ namespace rtl
                         pl.x[v] = beam_rho_[v] * ux_[beam_index_[v]]; pl.y[v] = beam_rho_[v] * uy_[beam_index_[v]];
                     }
                 }
+                else if (mode == 4) lm_.refineConsistent(pl.x, pl.y, pl.segs, arrays, cost_ * cost_, 3);
                 else lm_(pl.x, pl.y, pl.segs, arrays, cost_ * cost_);
             }
             const double c2 = chainCost(refined, cf, cl);
@@ -969,7 +988,7 @@ namespace rtl
         Candidate refine_scratch_;
         scan_polylines::RadialRefinement lm_;
         int refine_candidates_ = 0;
-        int break_rounds_ = 2;
+        int break_rounds_ = 0;
         bool trim_ends_ = false;
         std::size_t neighbour_window_ = 0;
         bool exact_breaks_ = false;
@@ -985,11 +1004,11 @@ namespace rtl
         //! A plan's whole-map score may exceed its chain-cost sum by this fraction before earlier plans are tried.
         static constexpr double kInteractionTolerance = 1e-3;
         scan_polylines::PointPolylines points_;
-        bool greedy_candidates_ = false;
-        int greedy_iterations_ = 1;
-        GreedyRefinement greedy_refinement_ = GreedyRefinement::FreeVertices;
-        std::size_t partition_segments_ = 0;
-        bool refined_reallocation_ = false;
+        bool greedy_candidates_ = true;
+        int greedy_iterations_ = 20;
+        GreedyRefinement greedy_refinement_ = GreedyRefinement::AlongBeamsThenFree;
+        std::size_t partition_segments_ = 10;
+        bool refined_reallocation_ = true;
         detail::ReassigningRefinement reassigning_;
         detail::BeamRangeRefinement along_beams_;
         std::vector<double> beam_rho_;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rtl/vect/scan_polylines/RadialRefinement.h"
+#include "rtl/vect/scan_polylines/DampedStep.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
 
 namespace rtl::detail
@@ -61,25 +62,14 @@ namespace rtl::detail
                         diag_[j] += ja * ja; diag_[j + 1] += jb * jb; off_[j] += ja * jb;
                     }
                 }
-                bool improved = false;
-                while (lambda < 1e10)
-                {
-                    if (solve(m, lambda))
-                    {
+                const bool improved = scan_polylines::dampedStep(lambda, current,
+                    [&](double l, double &c) {
+                        if (!solve(m, l)) return false;
                         for (std::size_t j = 0; j < m; ++j) trial_[j] = rho[j] + step_[j];
-                        const double c = cost(trial_, vb, beams, invalid_cost);
-                        if (c < current)
-                        {
-                            const double gain = current - c;
-                            rho.swap(trial_);
-                            current = c;
-                            lambda = std::max(lambda / 3, 1e-9);
-                            improved = gain > 1e-12 * (current + 1e-30);
-                            break;
-                        }
-                    }
-                    lambda *= 4;
-                }
+                        c = cost(trial_, vb, beams, invalid_cost);
+                        return true;
+                    },
+                    [&] { rho.swap(trial_); });
                 if (!improved) break;
             }
             return current;
