@@ -651,3 +651,37 @@ TEST(ScanPolylines2D, ShortChainPointsExplainAThreeBeamClusterExactly)
     EXPECT_GT(ex.score(), 1e-4);
     EXPECT_GT(std::abs(ex.expectedRanges()[22] - 1.8), 0.02);
 }
+
+TEST(ScanPolylines2D, SegmentCovarianceIsNeverNaN)
+{
+    // Beams whose points lie 1e-300 m from the sensor: a segment's points spread along its line by ~1e-300 m, whose
+    // square underflows, so the normal matrix is singular in double. The covariance then says "unknown" (infinite
+    // variances, no correlation) instead of NaN; a wall at 2 m keeps finite ones.
+    std::vector<rtl::Vector2d> scan;
+    for (int d = 80; d <= 84; ++d)
+    {
+        const double a = d * M_PI / 180;
+        scan.emplace_back(1e-300 * std::cos(a), 1e-300 * std::sin(a));
+    }
+    for (int d = 86; d <= 100; ++d)
+    {
+        const double a = d * M_PI / 180, r = 2 / std::sin(a);
+        scan.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    scan.insert(scan.begin() + 5, rtl::Vector2d(std::nan(""), std::nan("")));   // the two clusters apart
+    rtl::ScanPolylines2D<double> ex;
+    ex.setMaxVertices(10);
+    ASSERT_TRUE(ex(scan));
+    bool tiny = false, wall = false;
+    for (const auto &s : ex.segments())
+    {
+        EXPECT_FALSE(s.covariance.hasNaN()) << "segment over beams " << s.beams.first << "-" << s.beams.second;
+        EXPECT_EQ(s.covariance(0, 1), s.covariance(1, 0));
+        EXPECT_GT(s.covariance(0, 0), 0.0);
+        EXPECT_GT(s.covariance(1, 1), 0.0);
+        if (s.beams.second < 5) { tiny = true; EXPECT_TRUE(std::isinf(s.covariance(1, 1))); }
+        else { wall = true; EXPECT_TRUE(s.covariance.allFinite()); }
+    }
+    EXPECT_TRUE(tiny);
+    EXPECT_TRUE(wall);
+}

@@ -86,7 +86,11 @@ namespace rtl
         static constexpr double kSpanWiden = 1e-3;
 
         //! One segment of the result: its polyline, the beams it was fitted to, and its line in Hesse normal form
-        //! x cos(theta) + y sin(theta) = r (r >= 0) with the 2x2 covariance of (r, theta) (order r, theta).
+        //! x cos(theta) + y sin(theta) = r (r >= 0) with the 2x2 covariance of (r, theta) (order r, theta): symmetric,
+        //! positive diagonal, never NaN; infinite variances and no correlation where the beams' points do not spread
+        //! along the line (as far as a double resolves); computed in double, so an entry beyond the element type's
+        //! range is infinite (the variance of theta grows as the noise over the segment's length squared: in float, a
+        //! segment whose beams' points lie within ~1e-20 m of each other) and one below it 0.
         struct Segment
         {
             std::size_t polyline = 0;
@@ -970,10 +974,13 @@ namespace rtl
                 m += 1; ss += si; ss2 += si * si; res2 += di * di;
             }
             const double var = std::max(point_sigma_ * point_sigma_, m > 2 ? res2 / (m - 2) : 0.0);
-            const double det = m * ss2 - ss * ss;
+            const double det = m * ss2 - ss * ss, scale = var / det;
             Eigen::Matrix2d cov;
             cov << ss2, ss, ss, m;
-            cov *= var / det;
+            // points that do not spread along the line (or spread below what a double resolves): nothing is known of
+            // the line's angle or offset, so both variances are infinite and the correlation 0, never NaN
+            if (det > 0 && std::isfinite(scale)) cov *= scale;
+            else cov << std::numeric_limits<double>::infinity(), 0.0, 0.0, std::numeric_limits<double>::infinity();
             seg.r = static_cast<T>(r);
             seg.theta = static_cast<T>(std::atan2(ny, nx));
             seg.covariance = cov.cast<T>();
