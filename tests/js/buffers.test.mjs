@@ -5,6 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import init from 'rtl-wasm';
 
+import { wallRing } from './helpers.mjs';
 const used = await init();
 
 function polyline(n, seed, dim = 2) {
@@ -21,15 +22,7 @@ function polyline(n, seed, dim = 2) {
   }
   return xy;
 }
-function ring(n) {
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) {
-    const a = (2 * Math.PI * i) / n, r = 2 + ((Math.floor(i / 300) * 7) % 11);
-    xy[2 * i] = i % 89 === 0 ? NaN : r * Math.cos(a);
-    xy[2 * i + 1] = i % 89 === 0 ? NaN : r * Math.sin(a);
-  }
-  return xy;
-}
+const ring = (n) => wallRing(n);
 
 const small2 = polyline(2000, 11), big2 = polyline(20_000, 12);
 const small3 = polyline(2000, 13, 3), big3 = polyline(20_000, 14, 3);

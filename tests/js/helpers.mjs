@@ -98,3 +98,15 @@ export function scanDrawing(rtl, points, title) {
   }
   return { points, labels: seg.labels, segments, title };
 }
+
+/** A scan of n beams around the sensor: walls at 2-12 m that change every `wallBeams` beams, no return (NaN) every
+ * `gapEvery` beams; interleaved x, y. */
+export function wallRing(n, wallBeams = 300, gapEvery = 89) {
+  const xy = new Float64Array(2 * n);
+  for (let i = 0; i < n; i++) {
+    const a = (2 * Math.PI * i) / n, r = 2 + ((Math.floor(i / wallBeams) * 7) % 11);
+    xy[2 * i] = i % gapEvery === 0 ? NaN : r * Math.cos(a);
+    xy[2 * i + 1] = i % gapEvery === 0 ? NaN : r * Math.sin(a);
+  }
+  return xy;
+}

@@ -4,21 +4,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import init from 'rtl-wasm';
-import { noisySemicircle, throwsWith } from './helpers.mjs';
+import { noisySemicircle, throwsWith, wallRing } from './helpers.mjs';
 
 const rtl = await init();
 
 // A noisy semicircle (r 8) of n points, and a scan with NaN gaps and steps between walls.
 const semicircle = (n) => noisySemicircle(n, 7);
-function scan(n) {
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) {
-    const a = (2 * Math.PI * i) / n, r = 2 + ((Math.floor(i / 50) * 7) % 11);
-    xy[2 * i] = i % 37 === 0 ? NaN : r * Math.cos(a);
-    xy[2 * i + 1] = i % 37 === 0 ? NaN : r * Math.sin(a);
-  }
-  return xy;
-}
+const scan = (n) => wallRing(n, 50, 37);
 function helix(n) {
   const xyz = new Float64Array(3 * n);
   for (let i = 0; i < n; i++) xyz.set([Math.cos(i / 40), Math.sin(i / 40), i / 400], 3 * i);

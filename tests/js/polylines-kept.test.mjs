@@ -5,20 +5,13 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import init from 'rtl-wasm';
+import { wallRing } from './helpers.mjs';
 
 const used = await init();
 const scans = used.readCarmenLog(readFileSync(new URL('../data/intel.log', import.meta.url))).map((s) => s.points);
 
 // A scan of n beams around the sensor: walls at 2-12 m changing every 300 beams, a gap every 89 beams.
-function ring(n) {
-  const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) {
-    const a = (2 * Math.PI * i) / n, r = 2 + ((Math.floor(i / 300) * 7) % 11);
-    xy[2 * i] = i % 89 === 0 ? NaN : r * Math.cos(a);
-    xy[2 * i + 1] = i % 89 === 0 ? NaN : r * Math.sin(a);
-  }
-  return xy;
-}
+const ring = (n) => wallRing(n);
 
 const cases = [
   [scans[3], { maxVertices: 10 }],
