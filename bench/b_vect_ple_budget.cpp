@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -212,12 +213,39 @@ namespace
         return row.finish(times);
     }
 
-    //! The extractor (the DP+LM all row's settings) at PLE's own f, scan by scan: per scan, the smallest unexplained
-    //! cost c (bisection over log c in [0.02, 4] m, 14 steps) whose map explains at least as many beams as PLE's map
-    //! of that scan (PLE+'s refinement keeps PLE's hits); so every scan's f is >= PLE's and PLE+'s, and the row's
-    //! RMSE is the error at that f (the least RMSE among the searched maps that explain enough). A scan where even
-    //! c = 4 explains fewer keeps c = 4. Time: the whole search.
-    Row evaluateMatched(const std::vector<rtl::ple::Scan> &scans, std::size_t J)
+    //! The search over the unexplained cost c of rows 6-8: `reaches(c)` runs the extractor with c, keeps its result if
+    //! it is the best so far among those that reach the row's target, and says whether it reached it. Tries `grid`
+    //! values of c log-spaced over [c_min, c_max] and, between each two neighbours of which one reaches the target
+    //! and the other not, 10 bisection steps towards the border: the target (a hit count, a mean f) is not monotone
+    //! in c, as the knapsack switches whole polylines, and the least error tends to lie just where the target is met.
+    void searchCost(double c_min, double c_max, int grid, const std::function<bool(double)> &reaches)
+    {
+        const double lo = std::log(c_min), hi = std::log(c_max);
+        std::vector<double> log_c(static_cast<std::size_t>(std::max(grid, 1)));
+        std::vector<bool> ok(log_c.size());
+        for (std::size_t k = 0; k < log_c.size(); ++k)
+        {
+            log_c[k] = grid > 1 ? lo + (hi - lo) * static_cast<double>(k) / (grid - 1) : hi;
+            ok[k] = reaches(std::exp(log_c[k]));
+        }
+        for (std::size_t k = 0; k + 1 < log_c.size(); ++k)
+        {
+            if (ok[k] == ok[k + 1]) continue;
+            double yes = ok[k] ? log_c[k] : log_c[k + 1], no = ok[k] ? log_c[k + 1] : log_c[k];
+            for (int it = 0; it < 10; ++it)
+            {
+                const double mid = 0.5 * (yes + no);
+                (reaches(std::exp(mid)) ? yes : no) = mid;
+            }
+        }
+    }
+
+    //! The extractor (the DP+LM all row's settings) at PLE's own f, scan by scan: per scan, the least RMSE among the
+    //! maps of the c searched (`searchCost` over [0.02, 4] m, twice the grid of rows 7 and 8: one scan's
+    //! hit count is coarser in c than a mean) that explain at least as many beams as PLE's map of that
+    //! scan (PLE+'s refinement keeps PLE's hits); so every scan's f is >= PLE's and PLE+'s, and the row's RMSE is the
+    //! error at that f. A scan where even c = 4 explains fewer keeps c = 4's map. Time: the whole search.
+    Row evaluateMatched(const std::vector<rtl::ple::Scan> &scans, std::size_t J, int grid)
     {
         rtl::ple::GreedyExtractor ple;
         rtl::ScanPolylines2D<double> ex;
@@ -228,23 +256,19 @@ namespace
         {
             const double t0 = threadMicroseconds();
             const std::size_t target = rtl::ple::score(scan, ple(scan, J, false)).hit;
-            auto run = [&](double c) {
+            bool found = false;
+            rtl::ple::Metric best{};
+            searchCost(0.02, 4.0, grid, [&](double c) {
                 ex.setUnexplainedCost(c);
                 ex(scan.points);
                 row.max_vertices = std::max(row.max_vertices, ex.vertexCount());
-                return rtl::ple::score(scan, ex.polylines());
-            };
-            double lo = std::log(0.02), hi = std::log(4.0);
-            rtl::ple::Metric best = run(std::exp(hi));
-            if (best.hit >= target)
-                for (int it = 0; it < 14; ++it)
-                {
-                    const double mid = 0.5 * (lo + hi);
-                    const rtl::ple::Metric m = run(std::exp(mid));
-                    if (m.hit < target) { lo = mid; continue; }
-                    hi = mid;
-                    if (m.rmse() < best.rmse()) best = m;   // the least error among the maps that explain enough
-                }
+                const rtl::ple::Metric m = rtl::ple::score(scan, ex.polylines());
+                if (c == 4.0 && !found) best = m;   // the largest c, kept when no c explains enough
+                if (m.hit < target) return false;
+                if (!found || m.rmse() < best.rmse()) best = m;
+                found = true;
+                return true;
+            });
             times.push_back(threadMicroseconds() - t0);
             row.add(best);
         }
@@ -252,42 +276,22 @@ namespace
     }
 
     //! The extractor (the DP+LM all row's settings) with one unexplained cost c for all scans of a log, chosen for a
-    //! mean f: the least mean RMSE whose mean f is at least `f_target`, searched over `grid` values of c log-spaced
-    //! over [0.05, 2] m and, between each two neighbours of which one reaches the target and the other not, 10
-    //! bisection steps towards the border (f is not monotone in c to four digits, and the least error tends to lie
-    //! just where f reaches the target). The c found is returned in `c_out` (NaN, with an infinite RMSE, when no c
-    //! reaches the target).
+    //! mean f: the least mean RMSE among the c searched (`searchCost` over [0.05, 2] m) whose mean f is at least
+    //! `f_target`. The c found is returned in `c_out` (NaN, with an infinite RMSE, when no c reaches the target).
     Row evaluateAtMeanF(const std::vector<rtl::ple::Scan> &scans, std::size_t J, double f_target, int grid, double &c_out)
     {
         Row best;
         best.rmse = std::numeric_limits<double>::infinity();
         c_out = std::nan("");
-        auto reaches = [&](double log_c) {
-            g_cost = std::exp(log_c);
+        const double command_line_cost = g_cost;
+        searchCost(0.05, 2.0, grid, [&](double c) {
+            g_cost = c;
             const Row r = evaluate(scans, J, true, 1, true);
             if (r.f < f_target) return false;
-            if (r.rmse < best.rmse) { best = r; c_out = g_cost; }
+            if (r.rmse < best.rmse) { best = r; c_out = c; }
             return true;
-        };
-        const double lo = std::log(0.05), hi = std::log(2.0);
-        std::vector<double> log_c(static_cast<std::size_t>(grid));
-        std::vector<bool> ok(log_c.size());
-        for (std::size_t k = 0; k < log_c.size(); ++k)
-        {
-            log_c[k] = grid > 1 ? lo + (hi - lo) * static_cast<double>(k) / (grid - 1) : hi;
-            ok[k] = reaches(log_c[k]);
-        }
-        for (std::size_t k = 0; k + 1 < log_c.size(); ++k)
-        {
-            if (ok[k] == ok[k + 1]) continue;
-            double yes = ok[k] ? log_c[k] : log_c[k + 1], no = ok[k] ? log_c[k + 1] : log_c[k];
-            for (int it = 0; it < 10; ++it)
-            {
-                const double mid = 0.5 * (yes + no);
-                (reaches(mid) ? yes : no) = mid;
-            }
-        }
-        g_cost = -1;
+        });
+        g_cost = command_line_cost;
         return best;
     }
 
@@ -338,6 +342,7 @@ int main(int argc, char **argv)
         else if (std::strncmp(argv[i], "--realloc=", 10) == 0) g_realloc = std::atoi(argv[i] + 10);
         else if (std::strncmp(argv[i], "--J=", 4) == 0) only_j = static_cast<std::size_t>(std::atoi(argv[i] + 4));
         else if (std::strncmp(argv[i], "--methods=", 10) == 0) methods = argv[i] + 10;
+        else if (std::strncmp(argv[i], "--cost=", 7) == 0) g_cost = std::atof(argv[i] + 7);
         else if (std::strncmp(argv[i], "--c-grid=", 9) == 0) c_grid = std::max(1, std::atoi(argv[i] + 9));
         else { std::fprintf(stderr, "unknown argument %s\n", argv[i]); return 2; }
     }
@@ -437,7 +442,7 @@ int main(int argc, char **argv)
                 double c_found = std::nan(""), f_target = method == 8 ? pleMeanF(scans, J) : c.plus[j].f;
                 const Row r = method == 0 ? evaluateBaseline(scans, J)
                               : method >= 7 ? evaluateAtMeanF(scans, J, f_target, c_grid, c_found)
-                              : method == 6 ? evaluateMatched(scans, J)
+                              : method == 6 ? evaluateMatched(scans, J, 2 * c_grid)
                               : method >= 4 ? evaluateGreedy(scans, J, method == 5, reps)
                                             : evaluate(scans, J, method >= 2, reps, method == 3);
                 if (method >= 7 && std::isnan(c_found))
