@@ -69,6 +69,32 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
         return min;
       }, s.points.map((v) => (Number.isFinite(v) ? v : null)));
       assert.ok(top >= (w === 390 ? 2 : 1) * 16 + 5, `${w}x${h}: a beam ${top.toFixed(1)} px below the figure's top, under its title`);
+      // the two charts fill the stage: their boxes share its width, and each draws over at least 0.8 of its box (the
+      // axes frame: at 1920x1080 a fixed 300-unit drawing used 0.43 of the box, its frame 0.32), text as large as on
+      // a laptop (at least 11 px), none covering another
+      const charts = await page.evaluate(() => {
+        const stage = document.querySelector('.budget-chart .panels').getBoundingClientRect();
+        return { stage: stage.width, panels: [...document.querySelectorAll('.budget-chart svg')].map((svg) => {
+          const box = svg.getBoundingClientRect(), frame = svg.querySelector('path').getBoundingClientRect();
+          const texts = [...svg.querySelectorAll('text')].map((t) => {
+            const b = t.getBoundingClientRect();
+            return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
+          });
+          return { box: box.width, drawn: svg.viewBox.baseVal.width * svg.getScreenCTM().a, frame: frame.width, texts };
+        }) };
+      });
+      assert.equal(charts.panels.length, 2);
+      const perRow = w === 390 ? 1 : 2;   // a phone stacks them
+      assert.ok(charts.panels.every((p) => p.box * perRow >= 0.9 * charts.stage), `${w}x${h}: panels ${charts.panels.map((p) => p.box.toFixed(0))} of ${charts.stage.toFixed(0)} px`);
+      for (const p of charts.panels) {
+        assert.ok(p.drawn >= 0.97 * p.box && p.drawn <= p.box + 1, `${w}x${h}: chart drawn ${p.drawn.toFixed(0)} px wide in a ${p.box.toFixed(0)} px box`);
+        assert.ok(p.frame >= (w === 390 ? 0.7 : 0.8) * p.box, `${w}x${h}: axes ${p.frame.toFixed(0)} px wide in a ${p.box.toFixed(0)} px box`);
+        for (const t of p.texts) assert.ok(t.px >= 11, `${w}x${h}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
+        for (let i = 0; i < p.texts.length; i++) for (let j = 0; j < i; j++) {
+          const a = p.texts[i], b = p.texts[j];
+          assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${w}x${h}: "${a.text}" covers "${b.text}"`);
+        }
+      }
       await page.screenshot({ path: join(SCREENSHOTS, `page-budget-${w}x${h}.png`), fullPage: w === 390 });
     }
     await page.setViewportSize({ width: 1280, height: 800 });
