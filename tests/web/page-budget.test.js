@@ -95,6 +95,20 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
           assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${w}x${h}: "${a.text}" covers "${b.text}"`);
         }
       }
+      // a wide canvas gives the magnifier the width beside the scan (drawn a fifth of the scan's size, it was 0.33 of the
+      // canvas's height at 1920x1080 and 1280x800, the rest of the width empty), the scan drawn as large as before (its
+      // height fills the canvas less the title) and every label of the figure whole inside it
+      if (w !== 390) {
+        const fig = await page.evaluate(() => {
+          const { lens } = window.__rtl.finalState(), c = document.querySelector('#canvas');
+          const a = window.__rtl.clientPoint(lens.x, lens.y), b = window.__rtl.clientPoint(lens.x + lens.R, lens.y);
+          return { diameter: 2 * Math.abs(b.x - a.x), height: c.clientHeight, width: c.clientWidth, labels: window.__rtl.figureLabels() };
+        });
+        assert.ok(fig.diameter >= 0.5 * fig.height, `${w}x${h}: magnifier ${fig.diameter.toFixed(0)} px across on a ${fig.height} px high canvas`);
+        const ys = await page.evaluate((xy) => xy.flatMap((v, i) => (i % 2 || v === null ? [] : [window.__rtl.clientPoint(v, xy[i + 1]).y])), s.points.map((v) => (Number.isFinite(v) ? v : null)));
+        assert.ok(Math.max(...ys) - Math.min(...ys) >= 0.8 * fig.height, `${w}x${h}: the beams span ${(Math.max(...ys) - Math.min(...ys)).toFixed(0)} of ${fig.height} px`);
+        for (const l of fig.labels) assert.ok(l.x0 >= 0 && l.x1 <= fig.width, `${w}x${h}: label "${l.text}" at ${l.x0.toFixed(0)}..${l.x1.toFixed(0)} of ${fig.width} px`);
+      }
       // the reading under the curves in lines a teacher can follow: on a 1920 px screen it ran 230 characters a line
       // across the whole stage; in columns, at most 100
       if (w === 1920) {
