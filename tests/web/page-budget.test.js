@@ -14,6 +14,23 @@ const predictState = (page) => page.evaluate(() => window.__rtl.predict());
 const waitStep = (page, k) => page.waitForFunction((s) => window.__rtl.lessons.find((l) => l.id === 'budget').step === s, k, { timeout: PAGE_TIMEOUT });
 const close3 = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(b));
 
+// Every text of the chart's panels as drawn: font size times the panel's scale on screen, and its box.
+const chartTexts = (page) => page.evaluate(() => [...document.querySelectorAll('.budget-chart svg')].map((svg) => [...svg.querySelectorAll('text')].map((t) => {
+  const b = t.getBoundingClientRect();
+  return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
+})));
+// Each panel's texts: at least 10, none drawn under minPx, none covering another.
+function checkChartTexts(panels, minPx, what) {
+  for (const list of panels) {
+    assert.ok(list.length >= 10, `${what}: ${list.length} texts`);
+    for (const t of list) assert.ok(t.px >= minPx, `${what}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
+    for (let i = 0; i < list.length; i++) for (let j = 0; j < i; j++) {
+      const a = list[i], b = list[j];
+      assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${what}: "${a.text}" covers "${b.text}"`);
+    }
+  }
+}
+
 async function setJ(page, J) {
   await page.fill('#lesson-controls input[name="J"]', String(J));
   await page.dispatchEvent('#lesson-controls input[name="J"]', 'input');
@@ -76,11 +93,7 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
         const stage = document.querySelector('.budget-chart .panels').getBoundingClientRect();
         return { stage: stage.width, panels: [...document.querySelectorAll('.budget-chart svg')].map((svg) => {
           const box = svg.getBoundingClientRect(), frame = svg.querySelector('path').getBoundingClientRect();
-          const texts = [...svg.querySelectorAll('text')].map((t) => {
-            const b = t.getBoundingClientRect();
-            return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
-          });
-          return { box: box.width, drawn: svg.viewBox.baseVal.width * svg.getScreenCTM().a, frame: frame.width, texts };
+          return { box: box.width, drawn: svg.viewBox.baseVal.width * svg.getScreenCTM().a, frame: frame.width };
         }) };
       });
       assert.equal(charts.panels.length, 2);
@@ -89,12 +102,8 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
       for (const p of charts.panels) {
         assert.ok(p.drawn >= 0.97 * p.box && p.drawn <= p.box + 1, `${w}x${h}: chart drawn ${p.drawn.toFixed(0)} px wide in a ${p.box.toFixed(0)} px box`);
         assert.ok(p.frame >= (w === 390 ? 0.7 : 0.8) * p.box, `${w}x${h}: axes ${p.frame.toFixed(0)} px wide in a ${p.box.toFixed(0)} px box`);
-        for (const t of p.texts) assert.ok(t.px >= 11, `${w}x${h}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
-        for (let i = 0; i < p.texts.length; i++) for (let j = 0; j < i; j++) {
-          const a = p.texts[i], b = p.texts[j];
-          assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${w}x${h}: "${a.text}" covers "${b.text}"`);
-        }
       }
+      checkChartTexts(await chartTexts(page), 11, `${w}x${h}`);
       // a wide canvas gives the magnifier the width beside the scan (drawn a fifth of the scan's size, it was 0.33 of the
       // canvas's height at 1920x1080 and 1280x800, the rest of the width empty), the scan drawn as large as before (its
       // height fills the canvas less the title) and every label of the figure whole inside it
@@ -397,25 +406,10 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
   });
 
   test('the chart reads from the back of a room: lecture mode at 1920x1080 draws its text as large as the explanation\'s, none covering another, all on screen', async () => {
-    // every text of the chart as drawn: font size times the panel's scale on screen, and its box
-    const texts = () => page.evaluate(() => [...document.querySelectorAll('.budget-chart svg')].map((svg) => [...svg.querySelectorAll('text')].map((t) => {
-      const b = t.getBoundingClientRect();
-      return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
-    })));
-    const check = (panels, minPx, what) => {
-      for (const list of panels) {
-        assert.ok(list.length >= 10, `${what}: ${list.length} texts`);
-        for (const t of list) assert.ok(t.px >= minPx, `${what}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
-        for (let i = 0; i < list.length; i++) for (let j = 0; j < i; j++) {
-          const a = list[i], b = list[j];
-          assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${what}: "${a.text}" covers "${b.text}"`);
-        }
-      }
-    };
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.goto(`${server.origin}/web/#budget`);
     await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
-    check(await texts(), 11, '1280x800');
+    checkChartTexts(await chartTexts(page), 11, '1280x800');
     await page.setViewportSize({ width: 1920, height: 1080 });
     await page.evaluate(() => window.__rtl.lecture.set(true));
     await page.waitForFunction(() => document.documentElement.classList.contains('lecture'), null, { timeout: PAGE_TIMEOUT });
@@ -423,8 +417,8 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     const explainPx = await page.evaluate(() => parseFloat(getComputedStyle(document.querySelector('#lesson-text')).fontSize));
     // the figure draws its labels at 12 px × 1.8 in lecture mode; the chart's smallest text (its ticks) at least
     // 18 px, its titles larger
-    check(await texts(), 18, '1920x1080 lecture');
-    const titles = (await texts()).flat().filter((t) => /score|RMSE/.test(t.text));
+    checkChartTexts(await chartTexts(page), 18, '1920x1080 lecture');
+    const titles = (await chartTexts(page)).flat().filter((t) => /score|RMSE/.test(t.text));
     assert.ok(titles.length === 2 && titles.every((t) => t.px >= 0.95 * explainPx), `titles ${titles.map((t) => t.px.toFixed(1))} against the explanation's ${explainPx} px`);
     // the chart and its reading whole on the projector, no scrolling inside its box
     const stage = await page.evaluate(() => { const s = document.querySelector('.lesson-stage'), b = s.getBoundingClientRect(); return { bottom: b.bottom, scroll: s.scrollHeight, client: s.clientHeight }; });
