@@ -75,7 +75,7 @@ function widthFor(svg) {
   return w > 0 && h > 0 ? Math.max(MIN_W, Math.round((H * w) / h)) : MIN_W;
 }
 
-// Mounts the chart in `parent`; returns { update(snaps, k) }. onPick(k) when a J column is clicked.
+// Mounts the chart in `parent`; returns { update(snaps, k), dispose() }. onPick(k) when a J column is clicked.
 export function budgetChart(parent, onPick) {
   const box = document.createElement('div');
   box.className = 'budget-chart';
@@ -125,12 +125,14 @@ export function budgetChart(parent, onPick) {
     const want = widthFor(svg.firstChild);
     if (shown && want !== W) { W = want; render(); }
   };
-  new ResizeObserver(() => requestAnimationFrame(fit)).observe(svg);
+  const resize = new ResizeObserver(() => requestAnimationFrame(fit));
+  resize.observe(svg);
   return {
     update(snaps, k) {
       shown = [snaps, k];
       render();
       fit();
     },
+    dispose() { resize.disconnect(); },
   };
 }

@@ -217,7 +217,7 @@ export default {
           curve: run.snaps.map(({ J, vertexCount, rmse, explained, score }) => ({ J, vertexCount, rmse, explained, score })),
           lens: run.lens, gain: run.gain, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
       },
-      dispose() {},
+      dispose() { chart.dispose(); },
     };
   },
 };
