@@ -41,6 +41,20 @@ export function noisySemicircle(n, seed) {
   return xy;
 }
 
+// The module's memory now: malloc heap in use, linear memory size and stack pointer. unchanged() asserts all three are
+// where they were (a call that leaks, grows memory or leaves the stack moved fails). Take it after a warm-up call of
+// each kind, since a first call may allocate lazily initialised state.
+export function memoryProbe(rtl) {
+  const heap = rtl.heapInUse(), mem = rtl.memoryBytes(), sp = rtl.stackPointer();
+  return {
+    unchanged() {
+      assert.equal(rtl.heapInUse(), heap, 'malloc heap in use');
+      assert.equal(rtl.memoryBytes(), mem, 'linear memory size');
+      assert.equal(rtl.stackPointer(), sp, 'stack pointer');
+    },
+  };
+}
+
 // Assert that f() throws an error of class `type` whose message matches `re`.
 export function throwsWith(f, type, re) {
   assert.throws(f, (e) => {

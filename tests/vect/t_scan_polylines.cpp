@@ -13,9 +13,13 @@
 #include "rtl/Core.h"
 #include "rtl/io/CarmenLog.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
+#include "scan_polylines_checks.h"
 
 namespace
 {
+    using scan_polylines_checks::excerptScans;
+    using scan_polylines_checks::expectScoreNeverRisesWithBudget;
+
     constexpr double kPi = 3.14159265358979323846;
 
     //! Range from the origin along angle a to the walls x = 2, y = 1.5, x = -1.2, y = -1 of a room around the sensor.
@@ -43,13 +47,6 @@ namespace
             if (ranges) ranges->push_back(r);
         }
         return pts;
-    }
-
-    std::vector<std::vector<rtl::VectorND<2, double>>> excerptScans(const char *file)
-    {
-        std::vector<std::vector<rtl::VectorND<2, double>>> out;
-        for (auto &s : rtl::readCarmenLogFile<double>(std::string(RTL_TEST_DATA_DIR) + "/" + file)) out.push_back(std::move(s.points));
-        return out;
     }
 
     template<typename T>
@@ -173,23 +170,16 @@ TEST(ScanPolylines2D, ALargerBudgetNeverGivesAWorseMap)
         const auto scans = excerptScans(file);
         for (std::size_t s = 0; s < scans.size(); ++s)
         {
-            double best = std::numeric_limits<double>::infinity();
-            for (std::size_t J = 2; J <= 60; ++J)
-            {
-                ex.setMaxVertices(J);
-                ASSERT_TRUE(ex(scans[s]));
-                EXPECT_LE(ex.score(), best * (1 + 1e-9)) << file << " scan " << s << " J " << J;
-                EXPECT_LE(ex.vertexCount(), J);
-                best = std::min(best, ex.score());
-                if (J % 10 == 0)   // never worse than J's own plan refined (it is among the plans; the fallback too)
-                {
-                    own.setMaxVertices(J);
-                    ASSERT_TRUE(own(scans[s]));
-                    EXPECT_LE(ex.score(), own.score() * (1 + 1e-9)) << file << " scan " << s << " J " << J;
-                    lower += ex.score() < own.score() * (1 - 1e-9) ? 1 : 0;
-                    ++runs;
-                }
-            }
+            const std::string where = std::string(file) + " scan " + std::to_string(s);
+            ASSERT_NO_FATAL_FAILURE(expectScoreNeverRisesWithBudget(ex, scans[s], 60, where, [&](std::size_t J) {
+                if (J % 10 != 0) return;
+                // never worse than J's own plan refined (it is among the plans; the fallback too)
+                own.setMaxVertices(J);
+                ASSERT_TRUE(own(scans[s])) << where << " J " << J;
+                EXPECT_LE(ex.score(), own.score() * (1 + 1e-9)) << where << " J " << J;
+                lower += ex.score() < own.score() * (1 - 1e-9) ? 1 : 0;
+                ++runs;
+            }));
         }
     }
     EXPECT_GT(lower, 0u) << runs << " runs";   // and it matters somewhere
@@ -205,17 +195,7 @@ TEST(ScanPolylines2D, EveryBudgetRefinementWithRepartitionAndPointCandidates)
     radial.setRadialRepartition(2);
     radial.setRefineEveryBudget(true);
     for (std::size_t s = 0; s < scans.size(); s += 3)
-    {
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t J = 2; J <= 30; ++J)
-        {
-            radial.setMaxVertices(J);
-            ASSERT_TRUE(radial(scans[s]));
-            EXPECT_LE(radial.vertexCount(), J);
-            EXPECT_LE(radial.score(), best * (1 + 1e-9)) << "scan " << s << " J " << J;
-            best = std::min(best, radial.score());
-        }
-    }
+        ASSERT_NO_FATAL_FAILURE(expectScoreNeverRisesWithBudget(radial, scans[s], 30, "intel.log scan " + std::to_string(s)));
     rtl::ScanPolylines2D<double> every, own;
     every.setPointCandidates(true);
     own.setPointCandidates(true);

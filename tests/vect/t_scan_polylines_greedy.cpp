@@ -17,9 +17,13 @@
 #include "rtl/io/CarmenLog.h"
 #include "rtl/vect/ScanPolylines2D.h"
 #include "rtl/vect/scan_polylines/RayGeometry.h"
+#include "scan_polylines_checks.h"
 
 namespace
 {
+    using scan_polylines_checks::excerptScans;
+    using scan_polylines_checks::expectScoreNeverRisesWithBudget;
+
     struct Chain
     {
         std::vector<double> x, y;
@@ -91,13 +95,6 @@ namespace
             s += k;
         }
         EXPECT_EQ(s, ex.segments().size());
-    }
-
-    std::vector<std::vector<rtl::VectorND<2, double>>> excerptScans(const char *file)
-    {
-        std::vector<std::vector<rtl::VectorND<2, double>>> out;
-        for (auto &s : rtl::readCarmenLogFile<double>(std::string(RTL_TEST_DATA_DIR) + "/" + file)) out.push_back(std::move(s.points));
-        return out;
     }
 }
 
@@ -338,17 +335,7 @@ TEST(ScanPolylinesGreedy, ALargerBudgetNeverGivesAWorseMapWithGreedyCandidates)
         {
             const auto scans = excerptScans(file);
             for (std::size_t s = 0; s < scans.size(); ++s)
-            {
-                double best = std::numeric_limits<double>::infinity();
-                for (std::size_t J = 2; J <= 60; ++J)
-                {
-                    ex.setMaxVertices(J);
-                    ASSERT_TRUE(ex(scans[s]));
-                    EXPECT_LE(ex.score(), best * (1 + 1e-9)) << "setting " << setting << " " << file << " scan " << s << " J " << J;
-                    EXPECT_LE(ex.vertexCount(), J);
-                    best = std::min(best, ex.score());
-                }
-            }
+                ASSERT_NO_FATAL_FAILURE(expectScoreNeverRisesWithBudget(ex, scans[s], 60, "setting " + std::to_string(setting) + " " + file + " scan " + std::to_string(s)));
         }
     }
 }

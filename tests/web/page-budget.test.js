@@ -14,6 +14,23 @@ const predictState = (page) => page.evaluate(() => window.__rtl.predict());
 const waitStep = (page, k) => page.waitForFunction((s) => window.__rtl.lessons.find((l) => l.id === 'budget').step === s, k, { timeout: PAGE_TIMEOUT });
 const close3 = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(b));
 
+// Every text of the chart's panels as drawn: font size times the panel's scale on screen, and its box.
+const chartTexts = (page) => page.evaluate(() => [...document.querySelectorAll('.budget-chart svg')].map((svg) => [...svg.querySelectorAll('text')].map((t) => {
+  const b = t.getBoundingClientRect();
+  return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
+})));
+// Each panel's texts: at least 10, none drawn under minPx, none covering another.
+function checkChartTexts(panels, minPx, what) {
+  for (const list of panels) {
+    assert.ok(list.length >= 10, `${what}: ${list.length} texts`);
+    for (const t of list) assert.ok(t.px >= minPx, `${what}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
+    for (let i = 0; i < list.length; i++) for (let j = 0; j < i; j++) {
+      const a = list[i], b = list[j];
+      assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${what}: "${a.text}" covers "${b.text}"`);
+    }
+  }
+}
+
 async function setJ(page, J) {
   await page.fill('#lesson-controls input[name="J"]', String(J));
   await page.dispatchEvent('#lesson-controls input[name="J"]', 'input');
@@ -69,6 +86,58 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
         return min;
       }, s.points.map((v) => (Number.isFinite(v) ? v : null)));
       assert.ok(top >= (w === 390 ? 2 : 1) * 16 + 5, `${w}x${h}: a beam ${top.toFixed(1)} px below the figure's top, under its title`);
+      // the two charts fill the stage: their boxes share its width, and each draws over at least 0.8 of its box (the
+      // axes frame: at 1920x1080 a fixed 300-unit drawing used 0.43 of the box, its frame 0.32), text as large as on
+      // a laptop (at least 11 px), none covering another
+      const charts = await page.evaluate(() => {
+        const stage = document.querySelector('.budget-chart .panels').getBoundingClientRect();
+        return { stage: stage.width, panels: [...document.querySelectorAll('.budget-chart svg')].map((svg) => {
+          const box = svg.getBoundingClientRect(), frame = svg.querySelector('path').getBoundingClientRect();
+          return { box: box.width, drawn: svg.viewBox.baseVal.width * svg.getScreenCTM().a, frame: frame.width };
+        }) };
+      });
+      assert.equal(charts.panels.length, 2);
+      const perRow = w === 390 ? 1 : 2;   // a phone stacks them
+      assert.ok(charts.panels.every((p) => p.box * perRow >= 0.9 * charts.stage), `${w}x${h}: panels ${charts.panels.map((p) => p.box.toFixed(0))} of ${charts.stage.toFixed(0)} px`);
+      for (const p of charts.panels) {
+        assert.ok(p.drawn >= 0.97 * p.box && p.drawn <= p.box + 1, `${w}x${h}: chart drawn ${p.drawn.toFixed(0)} px wide in a ${p.box.toFixed(0)} px box`);
+        assert.ok(p.frame >= (w === 390 ? 0.7 : 0.8) * p.box, `${w}x${h}: axes ${p.frame.toFixed(0)} px wide in a ${p.box.toFixed(0)} px box`);
+      }
+      checkChartTexts(await chartTexts(page), 11, `${w}x${h}`);
+      // a wide canvas gives the magnifier the width beside the scan (drawn a fifth of the scan's size, it was 0.33 of the
+      // canvas's height at 1920x1080 and 1280x800, the rest of the width empty), the scan drawn as large as before (its
+      // height fills the canvas less the title) and every label of the figure whole inside it
+      if (w !== 390) {
+        const fig = await page.evaluate(() => {
+          const { lens } = window.__rtl.finalState(), c = document.querySelector('#canvas');
+          const a = window.__rtl.clientPoint(lens.x, lens.y), b = window.__rtl.clientPoint(lens.x + lens.R, lens.y);
+          return { diameter: 2 * Math.abs(b.x - a.x), height: c.clientHeight, width: c.clientWidth, labels: window.__rtl.figureLabels() };
+        });
+        assert.ok(fig.diameter >= 0.5 * fig.height, `${w}x${h}: magnifier ${fig.diameter.toFixed(0)} px across on a ${fig.height} px high canvas`);
+        const ys = await page.evaluate((xy) => xy.flatMap((v, i) => (i % 2 || v === null ? [] : [window.__rtl.clientPoint(v, xy[i + 1]).y])), s.points.map((v) => (Number.isFinite(v) ? v : null)));
+        assert.ok(Math.max(...ys) - Math.min(...ys) >= 0.8 * fig.height, `${w}x${h}: the beams span ${(Math.max(...ys) - Math.min(...ys)).toFixed(0)} of ${fig.height} px`);
+        for (const l of fig.labels) assert.ok(l.x0 >= 0 && l.x1 <= fig.width, `${w}x${h}: label "${l.text}" at ${l.x0.toFixed(0)}..${l.x1.toFixed(0)} of ${fig.width} px`);
+      }
+      // the reading under the curves in lines a teacher can follow: on a 1920 px screen it ran 230 characters a line
+      // across the whole stage; in columns, at most 100
+      if (w === 1920) {
+        const lines = await page.evaluate(() => {
+          const p = document.querySelector('.budget-chart .legend'), walk = document.createTreeWalker(p, NodeFilter.SHOW_TEXT), r = document.createRange();
+          const counts = [];
+          let prev = null, n = 0;
+          for (let t = walk.nextNode(); t; t = walk.nextNode()) {
+            for (let i = 0; i < t.length; i++) {
+              r.setStart(t, i); r.setEnd(t, i + 1);
+              const b = r.getBoundingClientRect();
+              if (b.width === 0) continue;
+              if (prev && (Math.abs(b.top - prev.top) > 2 || b.left < prev.left)) { counts.push(n); n = 0; }
+              n++; prev = b;
+            }
+          }
+          return [...counts, n];
+        });
+        assert.ok(lines.length >= 3 && Math.max(...lines) <= 100, `${w}x${h}: the reading's lines hold ${lines.join(', ')} characters`);
+      }
       await page.screenshot({ path: join(SCREENSHOTS, `page-budget-${w}x${h}.png`), fullPage: w === 390 });
     }
     await page.setViewportSize({ width: 1280, height: 800 });
@@ -337,25 +406,10 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
   });
 
   test('the chart reads from the back of a room: lecture mode at 1920x1080 draws its text as large as the explanation\'s, none covering another, all on screen', async () => {
-    // every text of the chart as drawn: font size times the panel's scale on screen, and its box
-    const texts = () => page.evaluate(() => [...document.querySelectorAll('.budget-chart svg')].map((svg) => [...svg.querySelectorAll('text')].map((t) => {
-      const b = t.getBoundingClientRect();
-      return { text: t.textContent, px: parseFloat(getComputedStyle(t).fontSize) * svg.getScreenCTM().a, x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
-    })));
-    const check = (panels, minPx, what) => {
-      for (const list of panels) {
-        assert.ok(list.length >= 10, `${what}: ${list.length} texts`);
-        for (const t of list) assert.ok(t.px >= minPx, `${what}: "${t.text}" drawn ${t.px.toFixed(1)} px`);
-        for (let i = 0; i < list.length; i++) for (let j = 0; j < i; j++) {
-          const a = list[i], b = list[j];
-          assert.ok(a.x1 <= b.x0 || a.x0 >= b.x1 || a.y1 <= b.y0 || a.y0 >= b.y1, `${what}: "${a.text}" covers "${b.text}"`);
-        }
-      }
-    };
     await page.setViewportSize({ width: 1280, height: 800 });
     await page.goto(`${server.origin}/web/#budget`);
     await page.waitForFunction(() => window.__rtl?.ready && window.__rtl.lessons.find((l) => l.id === 'budget').step === 18, null, { timeout: PAGE_TIMEOUT });
-    check(await texts(), 11, '1280x800');
+    checkChartTexts(await chartTexts(page), 11, '1280x800');
     await page.setViewportSize({ width: 1920, height: 1080 });
     await page.evaluate(() => window.__rtl.lecture.set(true));
     await page.waitForFunction(() => document.documentElement.classList.contains('lecture'), null, { timeout: PAGE_TIMEOUT });
@@ -363,8 +417,8 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     const explainPx = await page.evaluate(() => parseFloat(getComputedStyle(document.querySelector('#lesson-text')).fontSize));
     // the figure draws its labels at 12 px × 1.8 in lecture mode; the chart's smallest text (its ticks) at least
     // 18 px, its titles larger
-    check(await texts(), 18, '1920x1080 lecture');
-    const titles = (await texts()).flat().filter((t) => /score|RMSE/.test(t.text));
+    checkChartTexts(await chartTexts(page), 18, '1920x1080 lecture');
+    const titles = (await chartTexts(page)).flat().filter((t) => /score|RMSE/.test(t.text));
     assert.ok(titles.length === 2 && titles.every((t) => t.px >= 0.95 * explainPx), `titles ${titles.map((t) => t.px.toFixed(1))} against the explanation's ${explainPx} px`);
     // the chart and its reading whole on the projector, no scrolling inside its box
     const stage = await page.evaluate(() => { const s = document.querySelector('.lesson-stage'), b = s.getBoundingClientRect(); return { bottom: b.bottom, scroll: s.scrollHeight, client: s.clientHeight }; });

@@ -77,17 +77,22 @@ export default {
         for (let i = 0; i < run.beams.n; i++) if (Number.isFinite(run.beams.range[i])) { xs.push(run.points[2 * i]); ys.push(run.points[2 * i + 1]); }
         const box = { minX: Math.min(...xs), maxX: Math.max(...xs), minY: Math.min(...ys), maxY: Math.max(...ys) };
         run.size = Math.max(box.maxX - box.minX, box.maxY - box.minY, 1);
-        const R = 0.2 * run.size;
         // a wide canvas puts it on the right, a tall one (a phone) below, with room for its labels
-        const c = host.figure.canvas, wide = !(c.clientHeight > 0) || c.clientWidth / c.clientHeight >= 1.2;
-        run.lensAt = wide ? { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 } : { R, x: (box.minX + box.maxX) / 2, y: box.minY - 1.2 * R };
-        const L = run.lensAt;
-        const ext = [Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R)];
+        const c = host.figure.canvas, sized = c.clientWidth > 0 && c.clientHeight > 0, wide = !(c.clientHeight > 0) || c.clientWidth / c.clientHeight >= 1.2;
         // room above the scan for the figure's title (one line of 16 CSS px on a wide canvas, two on a phone's, times the
         // type scale of lecture mode), so that it covers no beam
-        if (c.clientWidth > 0 && c.clientHeight > 0) {
-          const textScale = Number(getComputedStyle(c).getPropertyValue('--figure-text-scale')) || 1;
-          const titlePx = ((wide ? 1 : 2) * 16 + 8) * textScale;
+        const titlePx = sized ? ((wide ? 1 : 2) * 16 + 8) * (Number(getComputedStyle(c).getPropertyValue('--figure-text-scale')) || 1) : 0;
+        // the magnifier: a fifth of the scan's size, larger when a wide canvas has room beside the scan (a 1920 px screen:
+        // the scan's height sets the scale and the width left over was empty): as large as the width allows at that
+        // scale (5 % spare), at most as high as the scan (with its label under it: 2.6 R), so that the map is drawn no
+        // smaller; the circle and its label centred on the scan's height
+        const bw = box.maxX - box.minX, bh = box.maxY - box.minY;
+        const room = wide && sized ? (0.95 * (c.clientWidth / (c.clientHeight - titlePx)) * bh - bw) / 2.7 : 0;
+        const R = Math.max(0.2 * run.size, Math.min(room, bh / 2.6));
+        run.lensAt = wide ? { R, x: box.maxX + 1.2 * R, y: (box.minY + box.maxY) / 2 + 0.3 * R } : { R, x: (box.minX + box.maxX) / 2, y: box.minY - 1.2 * R };
+        const L = run.lensAt;
+        const ext = [Math.min(box.minX, L.x - 1.5 * R), Math.min(box.minY, L.y - 1.6 * R), Math.max(box.maxX, L.x + 1.5 * R), Math.max(box.maxY, L.y + R)];
+        if (sized) {
           const scale = Math.min(c.clientWidth / (ext[2] - ext[0]), (c.clientHeight - titlePx) / (ext[3] - ext[1]));
           if (scale > 0) ext[3] += titlePx / scale;
         }
@@ -212,7 +217,7 @@ export default {
           curve: run.snaps.map(({ J, vertexCount, rmse, explained, score }) => ({ J, vertexCount, rmse, explained, score })),
           lens: run.lens, gain: run.gain, gained: run.gained, grazing: run.grazing && { beam: run.grazing.beam, radial: run.grazing.radial, orthogonal: run.grazing.orthogonal, incidence: run.grazing.incidence } };
       },
-      dispose() {},
+      dispose() { chart.dispose(); },
     };
   },
 };
