@@ -5,7 +5,11 @@
 // Inputs: b_vect_ple_budget --dump writes PLE's 20 intel and 20 csail scans (its protocol, bench/ple/README.md) as
 // interleaved x, y doubles into a temporary folder; --smoke uses the tests/data excerpts (first 30 scans each).
 // Native: tests/tools/polylines_native (in $RTL_NATIVE_BUILD_DIR/tools, default build/native) with a repetition count:
-// the median thread CPU and wall-clock times of N + 1 calls on one object. Wasm: the library's time of the call
+// the median thread CPU and wall-clock times of N + 1 calls on one object. It is started by a helper process, never by
+// this one: every process start from Node forks it, and after a fork each page of its memory (wasm memory, the JS
+// heap, array buffers) faults once more on its next write. Started from here before each scan's wasm calls, that
+// made them take 1.5-2x their time and the JS layer's share 5-10x (10 -> 100 us measured at intel J = 10 with
+// /bin/true run in between: a cost of this benchmark, not of the package). Wasm: the library's time of the call
 // (lastComputeMs: wall clock inside the module) and the whole JS call, each the median of N calls in a row on the same
 // module after one call that grows its buffers, after a first pass over every scan (V8 runs a wasm function with its
 // baseline compiler first and swaps in optimised code, compiled in the background, once the function is hot: the
@@ -16,7 +20,7 @@
 // and the partition (offsets, vertex and explained-beam counts) checked identical, the score to 1e-7 relative (the
 // package's test explains why not bit-identical). Both sides run on a shared machine: the load average is printed.
 // RTL_PACKAGE=dir: a package folder built by wasm/build.mjs, instead of dist/.
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { loadavg, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
@@ -43,6 +47,19 @@ const dir = mkdtempSync(join(tmpdir(), 'rtl-b-polylines-'));
 process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
 execFileSync(DUMP, [...(smoke ? ['--smoke'] : dataArgs), `--dump=${dir}`], { stdio: ['ignore', 'ignore', 'inherit'] });
 
+// The native runs' helper: runs the tool on request (IPC) and returns its output, so that this process forks only
+// here and for the dump above, before the warm-up passes below rewrite its pages.
+const runner = spawn(process.execPath, ['-e', `
+  const { execFileSync } = require('node:child_process');
+  process.on('message', ({ cmd, args }) => {
+    try { process.send({ out: execFileSync(cmd, args, { encoding: 'utf8', maxBuffer: 1 << 26 }) }); }
+    catch (e) { process.send({ error: String(e.message) }); }
+  });`], { stdio: ['ignore', 'inherit', 'inherit', 'ipc'] });
+const native = (args) => new Promise((res, rej) => {
+  runner.once('message', (r) => (r.error === undefined ? res(r.out) : rej(new Error(`polylines_native: ${r.error}`))));
+  runner.send({ cmd: TOOL, args });
+});
+
 const median = (v) => { const s = [...v].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
 const files = readdirSync(dir).filter((f) => f.endsWith('.f64')).sort();
 const read = (f) => { const b = readFileSync(join(dir, f)); return new Float64Array(b.buffer, b.byteOffset, b.byteLength / 8); };
@@ -61,7 +78,7 @@ for (const log of ['intel', 'csail']) {
     for (const f of mine) {
       const file = join(dir, f);
       const points = read(f);
-      const n = JSON.parse(execFileSync(TOOL, [file, J, 1, 0.5, rounds + 1].map(String), { encoding: 'utf8', maxBuffer: 1 << 26 }));
+      const n = JSON.parse(await native([file, J, 1, 0.5, rounds + 1].map(String)));
       let w;
       const libMs = [], callMs = [];
       rtl.extractPolylines(points, { maxVertices: J });   // first call: the module's buffers grow
@@ -82,3 +99,4 @@ for (const log of ['intel', 'csail']) {
     console.log(`${log.padEnd(6)} ${String(J).padStart(2)}  ${String(mine.length).padStart(5)}  ${`${median(natCpu).toFixed(1)} / ${mn.toFixed(1)}`.padStart(24)}  ${ml.toFixed(1).padStart(15)}  ${mc.toFixed(1).padStart(16)}  ${median(share).toFixed(1).padStart(15)}  ${(ml / mn).toFixed(2).padStart(10)}  ${(mc / mn).toFixed(2).padStart(11)}  ${`${equal} of ${mine.length}`.padStart(16)}  ${maxDiff.toExponential(1).padStart(14)}`);
   }
 }
+runner.disconnect();
