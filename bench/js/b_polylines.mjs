@@ -16,7 +16,9 @@
 // first calls take 2-7x the steady time, see the "first pass" line; the table is the steady state, as natively).
 // Per log and J: the medians over the scans, and the ratios of the wasm times to native wall clock (like for like;
 // goal: wasm library / native <= 1.5), the median of the JS layer's share of a call (call - library: input copy,
-// options, result arrays and objects),
+// options, result arrays and objects), and the whole call on the same number of beams with no return at all (every
+// coordinate NaN: the documented empty result, nearly no library work): the floor of the layers around the library
+// (checks, input copy, the binding, the result's arrays) for that scan size,
 // and the partition (offsets, vertex and explained-beam counts) checked identical, the score to 1e-7 relative (the
 // package's test explains why not bit-identical). Both sides run on a shared machine: the load average is printed.
 // RTL_PACKAGE=dir: a package folder built by wasm/build.mjs, instead of dist/.
@@ -69,11 +71,11 @@ const all = files.map(read), Jmax = Math.max(...budgets);
 const pass = () => { const t0 = performance.now(); for (const p of all) rtl.extractPolylines(p, { maxVertices: Jmax }); return performance.now() - t0; };
 const cold = pass(), warm = pass();
 console.log(`first pass over the ${all.length} scans at J = ${Jmax}: ${cold.toFixed(1)} ms cold, ${warm.toFixed(1)} ms the same pass warm (${(cold / warm).toFixed(2)}x)`);
-console.log('log    J   scans  native cpu / wall med us  wasm lib med us  wasm call med us  JS share med us  lib/native  call/native  partitions equal  max score diff');
+console.log('log    J   scans  native cpu / wall med us  wasm lib med us  wasm call med us  JS share med us  empty call med us  lib/native  call/native  partitions equal  max score diff');
 for (const log of ['intel', 'csail']) {
   const mine = files.filter((f) => f.startsWith(`${log}_`));
   for (const J of budgets) {
-    const nat = [], natCpu = [], lib = [], call = [], share = [];
+    const nat = [], natCpu = [], lib = [], call = [], share = [], empty = [];
     let equal = 0, maxDiff = 0;
     for (const f of mine) {
       const file = join(dir, f);
@@ -88,6 +90,14 @@ for (const log of ['intel', 'csail']) {
         callMs.push(performance.now() - t0);
         libMs.push(rtl.lastComputeMs);
       }
+      const none = new Float64Array(points.length).fill(NaN), emptyMs = [];
+      rtl.extractPolylines(none, { maxVertices: J });
+      for (let k = 0; k < rounds; k++) {
+        const t0 = performance.now();
+        rtl.extractPolylines(none, { maxVertices: J });
+        emptyMs.push(performance.now() - t0);
+      }
+      empty.push(1000 * median(emptyMs));
       nat.push(n.wallUs); natCpu.push(n.timeUs); lib.push(1000 * median(libMs)); call.push(1000 * median(callMs));
       share.push(1000 * median(callMs.map((t, k) => t - libMs[k])));
       const same = JSON.stringify([...w.offsets]) === JSON.stringify(n.offsets) && w.vertexCount === n.vertexCount
@@ -96,7 +106,7 @@ for (const log of ['intel', 'csail']) {
       maxDiff = Math.max(maxDiff, Math.abs(w.score - n.score) / Math.max(1e-300, Math.abs(n.score)));
     }
     const mn = median(nat), ml = median(lib), mc = median(call);
-    console.log(`${log.padEnd(6)} ${String(J).padStart(2)}  ${String(mine.length).padStart(5)}  ${`${median(natCpu).toFixed(1)} / ${mn.toFixed(1)}`.padStart(24)}  ${ml.toFixed(1).padStart(15)}  ${mc.toFixed(1).padStart(16)}  ${median(share).toFixed(1).padStart(15)}  ${(ml / mn).toFixed(2).padStart(10)}  ${(mc / mn).toFixed(2).padStart(11)}  ${`${equal} of ${mine.length}`.padStart(16)}  ${maxDiff.toExponential(1).padStart(14)}`);
+    console.log(`${log.padEnd(6)} ${String(J).padStart(2)}  ${String(mine.length).padStart(5)}  ${`${median(natCpu).toFixed(1)} / ${mn.toFixed(1)}`.padStart(24)}  ${ml.toFixed(1).padStart(15)}  ${mc.toFixed(1).padStart(16)}  ${median(share).toFixed(1).padStart(15)}  ${median(empty).toFixed(1).padStart(17)}  ${(ml / mn).toFixed(2).padStart(10)}  ${(mc / mn).toFixed(2).padStart(11)}  ${`${equal} of ${mine.length}`.padStart(16)}  ${maxDiff.toExponential(1).padStart(14)}`);
   }
 }
 runner.disconnect();
