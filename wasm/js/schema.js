@@ -68,6 +68,7 @@ export function boundaryOf(m) {
       return schema.optionsBlock;
     }
 
+    /** @param {any} r @param {boolean | 'shared'} [view] */
     function readResults(r, view = false) {
       const traced = typeof r === 'object';
       const H = m.HEAPF64;
