@@ -8,8 +8,9 @@
 // the median thread CPU and wall-clock times of N + 1 calls on one object. It is started by a helper process, never by
 // this one: every process start from Node forks it, and after a fork each page of its memory (wasm memory, the JS
 // heap, array buffers) faults once more on its next write. Started from here before each scan's wasm calls, that
-// made them take 1.5-2x their time and the JS layer's share 5-10x (10 -> 100 us measured at intel J = 10 with
-// /bin/true run in between: a cost of this benchmark, not of the package). Wasm: the library's time of the call
+// made the JS layer's share 3-10x (intel J = 10 with /bin/true run in between: 10 -> 36-48 us at load 0.9, -> 100 us
+// at load 5, where the library's time grew 1.5x too: a cost of this benchmark, not of the package). Wasm: the
+// library's time of the call
 // (lastComputeMs: wall clock inside the module) and the whole JS call, each the median of N calls in a row on the same
 // module after one call that grows its buffers, after a first pass over every scan (V8 runs a wasm function with its
 // baseline compiler first and swaps in optimised code, compiled in the background, once the function is hot: the
@@ -18,8 +19,7 @@
 // goal: wasm library / native <= 1.5), the median of the JS layer's share of a call (call - library: input copy,
 // options, result arrays and objects), and the whole call on the same number of beams with no return at all (every
 // coordinate NaN: the documented empty result, nearly no library work): the floor of the layers around the library
-// (checks, input copy, the binding, the result's arrays) for that scan size,
-// and the partition (offsets, vertex and explained-beam counts) checked identical, the score to 1e-7 relative (the
+// (checks, input copy, the binding, the result's arrays) for that scan size, and the partition (offsets, vertex and explained-beam counts) checked identical, the score to 1e-7 relative (the
 // package's test explains why not bit-identical). Both sides run on a shared machine: the load average is printed.
 // RTL_PACKAGE=dir: a package folder built by wasm/build.mjs, instead of dist/.
 import { execFileSync, spawn } from 'node:child_process';
