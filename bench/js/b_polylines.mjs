@@ -5,9 +5,9 @@
 // Inputs: b_vect_ple_budget --dump writes PLE's 20 intel and 20 csail scans (its protocol, bench/ple/README.md) as
 // interleaved x, y doubles into a temporary folder; --smoke uses the tests/data excerpts (first 30 scans each).
 // Native: tests/tools/polylines_native (in $RTL_NATIVE_BUILD_DIR/tools, default build/native) with a repetition count:
-// the median thread CPU and wall-clock times of N + 1 calls (at least 3) on one object. It is started by a helper process, never by
-// this one: every process start from Node forks it, and after a fork each page of its memory (wasm memory, the JS
-// heap, array buffers) faults once more on its next write. Started from here before each scan's wasm calls, that
+// the median thread CPU and wall-clock times of N + 1 calls (at least 3) on one object. It is started by a helper
+// process, never by this one: every process start from Node forks it, and after a fork each page of its memory (wasm
+// memory, the JS heap, array buffers) faults once more on its next write. Started from here before each scan's wasm calls, that
 // made the JS layer's share 3-10x (intel J = 10 with /bin/true run in between: 10 -> 36-48 us at load 0.9, -> 100 us
 // at load 5, where the library's time grew 1.5x too: a cost of this benchmark, not of the package). Wasm: the
 // library's time of the call
