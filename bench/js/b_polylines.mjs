@@ -71,6 +71,10 @@ const all = files.map(read), Jmax = Math.max(...budgets);
 const pass = () => { const t0 = performance.now(); for (const p of all) rtl.extractPolylines(p, { maxVertices: Jmax }); return performance.now() - t0; };
 const cold = pass(), warm = pass();
 console.log(`first pass over the ${all.length} scans at J = ${Jmax}: ${cold.toFixed(1)} ms cold, ${warm.toFixed(1)} ms the same pass warm (${(cold / warm).toFixed(2)}x)`);
+// Untimed: three more passes at every budget, with the empty calls, so that the JS layer's functions are optimised too
+// before the first row (after the two passes above alone, the first row's calls took 10-20 us more than the others').
+const none = all.map((p) => new Float64Array(p.length).fill(NaN));
+for (let r = 0; r < 3; r++) for (const J of budgets) all.forEach((p, i) => { rtl.extractPolylines(p, { maxVertices: J }); rtl.extractPolylines(none[i], { maxVertices: J }); });
 console.log('log    J   scans  native cpu / wall med us  wasm lib med us  wasm call med us  JS share med us  empty call med us  lib/native  call/native  partitions equal  max score diff');
 for (const log of ['intel', 'csail']) {
   const mine = files.filter((f) => f.startsWith(`${log}_`));
