@@ -80,38 +80,6 @@ test('readResults: scalars and arrays by name with the declared types; copies, o
   assert.equal(copied.trace, undefined);
 });
 
-test("readResults 'shared': every array a view on one copy of the block's span; per-array copies where it is not one span", () => {
-  const m = standIn({ demo });
-  const c = boundaryOf(m).call('demo');
-  const r = block(m, [1.5, 7], [new Int32Array([-1, 0, 4]), new Float64Array([0.5, 2])]);
-  const shared = c.readResults(r, 'shared');
-  assert.deepEqual(shared.scalars, { computeMs: 1.5, count: 7 });
-  const { labels, values } = shared.arrays;
-  assert.ok(labels instanceof Int32Array && values instanceof Float64Array);
-  assert.deepEqual([...labels], [-1, 0, 4]);
-  assert.deepEqual([...values], [0.5, 2]);
-  assert.equal(labels.buffer, values.buffer);
-  assert.notEqual(labels.buffer, m.HEAPF64.buffer);
-  assert.equal(labels.buffer.byteLength, 32, 'the span: 12 bytes of labels, 4 of alignment, 16 of values');
-  m.HEAPF64.fill(0);  // a copy: the next call's block leaves it alone
-  assert.deepEqual([...values], [0.5, 2]);
-  // an empty array reads as an empty view on the same copy
-  const empty = c.readResults(block(m, [0, 0], [new Int32Array(0), new Float64Array([3])]), 'shared');
-  assert.equal(empty.arrays.labels.length, 0);
-  assert.equal(empty.arrays.labels.buffer, empty.arrays.values.buffer);
-  assert.deepEqual([...empty.arrays.values], [3]);
-  // the second array far from the first (as an array taken, not copied into the block, lies): one copy of the span
-  // would hold mostly other memory, so each array is copied on its own
-  const far = block(m, [1, 2], [new Int32Array([5, 6, 7]), new Float64Array([0.25, 4])]);
-  m.HEAPF64.set([0.25, 4], 60);
-  m.HEAPF64[10 + 1 + 2 + 1 + 2] = 8 * 60;
-  const apart = c.readResults(far, 'shared');
-  assert.deepEqual([...apart.arrays.labels], [5, 6, 7]);
-  assert.deepEqual([...apart.arrays.values], [0.25, 4]);
-  assert.notEqual(apart.arrays.labels.buffer, apart.arrays.values.buffer);
-  assert.equal(apart.arrays.values.buffer.byteLength, 16);
-});
-
 test('a declared name that is not an identifier is refused before any code is made from it', () => {
   const bad = { ...demo, scalars: ['computeMs', 'a-b'] };
   assert.throws(() => boundaryOf(standIn({ bad })).call('bad'), { message: /declares the name "a-b", not an identifier/ });

@@ -571,11 +571,6 @@ export interface ScanSegments {
   /** 2x2 covariance of (r, theta) per segment, row-major (4 numbers each) */
   covariance: Float64Array;
 }
-/**
- * extractPolylines()'s result. Its typed arrays (vertices, offsets, expectedRanges, the segments' arrays and the
- * polylines) are views on one ArrayBuffer of the result's own, copied out of wasm memory: later calls leave it alone;
- * to transfer a result to a worker, list that buffer once.
- */
 export interface ExtractPolylinesResult {
   /** each polyline's vertices (x, y interleaved): views on `vertices` */
   polylines: Float64Array[];

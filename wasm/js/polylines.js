@@ -25,7 +25,7 @@ export function polylinesApi({ m, withInput, boundary, setComputeMs }) {
     if (xy.length % 2 !== 0)
       throw new RangeError(`${fn}: points has ${xy.length} numbers, not a multiple of 2 (interleaved x, y expected)`);
     const { scalars: s, arrays: a } = call.readResults(withInput(fn, xy, (p, n) => m.extractPolylines(p, n,
-      call.writeOptions({ maxVertices, maxGap, unexplainedCost }))), 'shared');  // ten small arrays: one copy
+      call.writeOptions({ maxVertices, maxGap, unexplainedCost }))));
     setComputeMs(s.computeMs);
     const { vertices, offsets } = a;
     const polylines = [];

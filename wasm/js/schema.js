@@ -10,9 +10,7 @@
  * and the declaration lacks is an error too (checked on the call's first use: a call site's literal keeps its keys).
  * readResults(r, view): a ResultBlock (one number, its address; when traced, {out: address, trace}) as
  * {scalars: {name: number}, arrays: {name: typed array}, trace}: each array copied out of wasm memory, or with
- * view the typed array on the block itself (no copy; valid until the next call that fills or frees the block), or
- * with view 'shared' every array a view on one ArrayBuffer copied from the block (one allocation instead of one per
- * array: for the small results of per-scan calls, where the ten allocations were most of the reading time).
+ * view the typed array on the block itself (no copy; valid until the next call that fills or frees the block).
  * Read right after the call: the next call reuses the block.
  */
 export function boundaryOf(m) {
@@ -60,15 +58,13 @@ export function boundaryOf(m) {
     // The declaration as straight-line code (object literals and property names known to the engine): the loops
     // over names above, with a keyed load or store per field, cost ~0.3-0.5 us more per call. Emscripten's embind
     // glue builds its invokers the same way (new Function), so this asks nothing more of the page's CSP.
-    const { writeFast, readFast, readShared } = generate(optionNames, counts, choices, scalarNames, arrayNames);
-    const arrayBytes = arrayTypes.map((T) => T.BYTES_PER_ELEMENT);
+    const { writeFast, readFast } = generate(optionNames, counts, choices, scalarNames, arrayNames);
 
     function writeOptions(values) {
       if (!keysChecked || !writeFast(m.HEAPF64, optionsAt, values, choices)) writeChecked(values);
       return schema.optionsBlock;
     }
 
-    /** @param {any} r @param {boolean | 'shared'} [view] */
     function readResults(r, view = false) {
       const traced = typeof r === 'object';
       const H = m.HEAPF64;
@@ -76,10 +72,8 @@ export function boundaryOf(m) {
       if (H[k] !== scalarNames.length) throw new Error(`rtl-wasm: ${name} returned ${H[k]} scalars, its schema declares ${scalarNames.length}`);
       const A = H[k + 1 + scalarNames.length];
       if (A !== arrayNames.length) throw new Error(`rtl-wasm: ${name} returned ${A} arrays, its schema declares ${arrayNames.length}`);
-      // one ArrayBuffer per copied array unless asked ('shared'): one shared large buffer faulted its pages in on
-      // every call; readShared declines (null) where the arrays do not lie in one span of the block
-      const out = (view === 'shared' && readShared(H, k, H.buffer, arrayTypes, arrayBytes)) ||
-        readFast(H, k, H.buffer, view === true, arrayTypes);
+      // one ArrayBuffer per copied array: one shared large buffer faulted its pages in on every call
+      const out = readFast(H, k, H.buffer, view, arrayTypes);
       out.trace = traced ? r.trace : undefined;
       return out;
     }
@@ -120,21 +114,7 @@ function generate(optionNames, counts, choices, scalarNames, arrayNames) {
   arrayNames.forEach((n, i) => { r += `const a${i} = new T[${i}](buf, H[k + ${a0 + 2 * i}], H[k + ${a0 + 2 * i + 1}]);\n`; });
   r += `return { scalars: { ${scalarNames.map((n, i) => `${n}: H[k + ${1 + i}]`).join(', ')} }, ` +
     `arrays: { ${arrayNames.map((n, i) => `${n}: view ? a${i} : a${i}.slice()`).join(', ')} }, trace: undefined };`;
-  // readShared(H, k, buf, T, B): the same with every array a view on one copy of the span [lo, hi) of wasm memory
-  // that holds them all (B: bytes per element); null when that span is more than the arrays plus their 8-byte
-  // alignment (an array taken, not copied into the block) or an array would not be aligned in the copy.
-  let q = 'let lo = Infinity, hi = 0, bytes = 0;\n';
-  arrayNames.forEach((n, i) => {
-    q += `const p${i} = H[k + ${a0 + 2 * i}], n${i} = H[k + ${a0 + 2 * i + 1}];\n` +
-      `if (n${i} > 0) { if (p${i} < lo) lo = p${i}; if (p${i} + n${i} * B[${i}] > hi) hi = p${i} + n${i} * B[${i}]; bytes += n${i} * B[${i}] + 7; }\n`;
-  });
-  q += 'if (!(lo < hi)) lo = hi = 0;\nif (hi - lo > bytes) return null;\n';
-  arrayNames.forEach((n, i) => { q += `if (n${i} > 0 && (p${i} - lo) % B[${i}] !== 0) return null;\n`; });
-  q += 'const c = buf.slice(lo, hi);\n';
-  q += `return { scalars: { ${scalarNames.map((n, i) => `${n}: H[k + ${1 + i}]`).join(', ')} }, ` +
-    `arrays: { ${arrayNames.map((n, i) => `${n}: new T[${i}](c, n${i} > 0 ? p${i} - lo : 0, n${i})`).join(', ')} }, trace: undefined };`;
   return {
-    readShared: /** @type {(H: Float64Array, k: number, buf: ArrayBufferLike, T: any[], B: number[]) => {scalars: Record<string, number>, arrays: Record<string, any>, trace: any} | null} */ (new Function('H', 'k', 'buf', 'T', 'B', q)),
     writeFast: /** @type {(H: Float64Array, k: number, v: any, C: any[]) => boolean} */ (new Function('H', 'k', 'v', 'C', w)),
     readFast: /** @type {(H: Float64Array, k: number, buf: ArrayBufferLike, view: boolean, T: any[]) => {scalars: Record<string, number>, arrays: Record<string, any>, trace: any}} */ (new Function('H', 'k', 'buf', 'view', 'T', r)),
   };
