@@ -72,6 +72,11 @@ describe('lesson: a vertex budget', { timeout: 300000 }, () => {
     assert.match(await page.textContent('#lesson-text [data-q="residuals"]'), new RegExp(`RMSE ${s.rmse.toFixed(3)} m`));
     assert.equal(await page.$$eval('.budget-chart .pick', (els) => els.length), 2 * 59, 'one clickable column per J in each panel');
     assert.equal(await page.$$eval('.budget-chart .series-score', (els) => els.length), 1);
+    // a screen reader hears what each panel shows and the chosen J's figures, each quantity named once
+    const labels = await page.$$eval('.budget-chart svg', (els) => els.map((e) => e.getAttribute('aria-label')));
+    assert.deepEqual(labels, [
+      `Score for J = 2 to 60; J = 20: ${s.score.toFixed(4)} m².`,
+      `RMSE and explained fraction for J = 2 to 60; J = 20 is marked: score ${s.score.toFixed(4)} m², RMSE ${s.rmse.toFixed(3)} m, f ${s.explained.toFixed(3)}.`]);
     // each size opened afresh, as a phone or a projector would (the lesson places its magnifier for the canvas)
     for (const [w, h] of [[1280, 800], [390, 844], [1920, 1080]]) {
       await page.setViewportSize({ width: w, height: h });

@@ -106,7 +106,7 @@ export function budgetChart(parent, onPick) {
         { name: 'rmse', ys: rmse, colour: COLOUR.rmse, axis: 'left', top: top(rmse) },
         { name: 'f', ys: f, colour: COLOUR.f, axis: 'right', top: 1 }], chosen));
     svg.firstChild.setAttribute('aria-label', `Score for J = ${xs[0]} to ${xs[xs.length - 1]}; J = ${chosen}: ${score[k]?.toFixed(4)} m².`);
-    svg.lastChild.setAttribute('aria-label', `RMSE, RMSE and explained fraction for J = ${xs[0]} to ${xs[xs.length - 1]}; J = ${chosen} is marked: score ${score[k]?.toFixed(4)} m², RMSE ${rmse[k]?.toFixed(3)} m, f ${f[k]?.toFixed(3)}.`);
+    svg.lastChild.setAttribute('aria-label', `RMSE and explained fraction for J = ${xs[0]} to ${xs[xs.length - 1]}; J = ${chosen} is marked: score ${score[k]?.toFixed(4)} m², RMSE ${rmse[k]?.toFixed(3)} m, f ${f[k]?.toFixed(3)}.`);
     const nRises = rises.filter(Boolean).length;
     const m2 = (v) => `${v.toFixed(4)} m²`;
     const reading = knee ? `<b>Reading the curve:</b> the score falls from <span class="knee-first">${m2(knee.first.score)}</span> at J = ${knee.first.J} to ` +
