@@ -244,7 +244,7 @@ namespace
     //! maps of the c searched (`searchCost` over [0.02, 4] m, twice the grid of rows 7 and 8: one scan's
     //! hit count is coarser in c than a mean) that explain at least as many beams as PLE's map of that
     //! scan (PLE+'s refinement keeps PLE's hits); so every scan's f is >= PLE's and PLE+'s, and the row's RMSE is the
-    //! error at that f. A scan where even c = 4 explains fewer keeps c = 4's map. Time: the whole search.
+    //! error at that f. A scan where no c explains enough keeps the map that explains most. Time: the whole search.
     Row evaluateMatched(const std::vector<rtl::ple::Scan> &scans, std::size_t J, int grid)
     {
         rtl::ple::GreedyExtractor ple;
@@ -263,8 +263,11 @@ namespace
                 ex(scan.points);
                 row.max_vertices = std::max(row.max_vertices, ex.vertexCount());
                 const rtl::ple::Metric m = rtl::ple::score(scan, ex.polylines());
-                if (c == 4.0 && !found) best = m;   // the largest c, kept when no c explains enough
-                if (m.hit < target) return false;
+                if (m.hit < target)
+                {
+                    if (!found && m.hit > best.hit) best = m;   // until one does: the map that explains most
+                    return false;
+                }
                 if (!found || m.rmse() < best.rmse()) best = m;
                 found = true;
                 return true;

@@ -4,8 +4,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import init from 'rtl-wasm';
+import { wallRing as ring } from './helpers.mjs';
 
-import { wallRing } from './helpers.mjs';
 const used = await init();
 
 function polyline(n, seed, dim = 2) {
@@ -22,7 +22,6 @@ function polyline(n, seed, dim = 2) {
   }
   return xy;
 }
-const ring = (n) => wallRing(n);
 
 const small2 = polyline(2000, 11), big2 = polyline(20_000, 12);
 const small3 = polyline(2000, 13, 3), big3 = polyline(20_000, 14, 3);

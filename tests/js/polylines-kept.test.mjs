@@ -5,13 +5,12 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import init from 'rtl-wasm';
-import { wallRing } from './helpers.mjs';
+import { wallRing as ring } from './helpers.mjs';
 
 const used = await init();
 const scans = used.readCarmenLog(readFileSync(new URL('../data/intel.log', import.meta.url))).map((s) => s.points);
 
 // A scan of n beams around the sensor: walls at 2-12 m changing every 300 beams, a gap every 89 beams.
-const ring = (n) => wallRing(n);
 
 const cases = [
   [scans[3], { maxVertices: 10 }],
